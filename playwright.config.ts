@@ -1,0 +1,44 @@
+import { defineConfig, devices } from '@playwright/test';
+import { chromiumPath } from './scripts/chromium-path.mjs';
+
+/** The built app is served twice: as it should be (with COOP/COEP) and as a host that sends no such headers would. */
+export const ISOLATED_PORT = 4173;
+export const PLAIN_PORT = 4174;
+
+export default defineConfig({
+  testDir: 'e2e',
+  timeout: 60_000,
+  expect: { timeout: 20_000 },
+  fullyParallel: false,
+  workers: 1,
+  retries: 0,
+  forbidOnly: !!process.env.CI,
+  reporter: [['list']],
+  outputDir: 'test-results',
+  use: {
+    ...devices['Desktop Chrome'],
+    baseURL: `http://127.0.0.1:${ISOLATED_PORT}`,
+    viewport: { width: 1024, height: 768 },
+    launchOptions: {
+      executablePath: chromiumPath(),
+      // WebGL through SwiftShader, and no background traffic toward hosts this machine cannot reach.
+      args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--disable-component-update', '--no-first-run'],
+    },
+  },
+  webServer: [
+    {
+      // `npm run test:e2e` builds dist/ first; both servers serve that build.
+      command: `npx vite preview --host 127.0.0.1 --port ${ISOLATED_PORT} --strictPort`,
+      url: `http://127.0.0.1:${ISOLATED_PORT}`,
+      reuseExistingServer: !process.env.CI,
+      timeout: 180_000,
+    },
+    {
+      command: `npx vite preview --host 127.0.0.1 --port ${PLAIN_PORT} --strictPort`,
+      env: { SOFTFACE_NO_ISOLATION: '1' },
+      url: `http://127.0.0.1:${PLAIN_PORT}`,
+      reuseExistingServer: !process.env.CI,
+      timeout: 180_000,
+    },
+  ],
+});

@@ -1,0 +1,69 @@
+/**
+ * Builds the default head models from the MakeHuman hm08 base mesh (CC0):
+ *   npm run build:models -- [path/to/makehuman-hm08] [--out public/models]
+ * Writes head-low.glb, head-medium.glb, head-high.glb and CREDITS.md. Running it twice gives identical files.
+ */
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { writeGlb } from './model/glb';
+import { buildHeadLevels, type LevelStats } from './model/head';
+import { parseObj } from './model/obj';
+
+const args = process.argv.slice(2);
+const outIndex = args.indexOf('--out');
+const outDir = resolve(outIndex >= 0 ? args[outIndex + 1] : 'public/models');
+const sourceDir = resolve(args.find((a, i) => !a.startsWith('--') && args[i - 1] !== '--out') ?? '../shared/assets/makehuman-hm08');
+
+const objPath = join(sourceDir, 'base.obj');
+let text: string;
+try {
+  text = readFileSync(objPath, 'utf8');
+} catch {
+  console.error(`Cannot read ${objPath}: pass the folder that holds the MakeHuman hm08 base.obj as the first argument.`);
+  process.exit(1);
+}
+const levels = buildHeadLevels(parseObj(text, 'base.obj'));
+mkdirSync(outDir, { recursive: true });
+for (const level of levels) {
+  const bytes = await writeGlb(level.root, level.sceneExtras);
+  const file = join(outDir, `head-${level.stats.name}.glb`);
+  writeFileSync(file, bytes);
+  const s = level.stats;
+  console.log(`${file}: ${s.skinVertices} skin vertices, ${s.renderVertices} render vertices, ${s.triangles} triangles, ${(bytes.length / 1e6).toFixed(2)} MB`);
+}
+writeFileSync(join(outDir, 'CREDITS.md'), credits(levels.map((l) => l.stats)));
+
+function credits(stats: LevelStats[]): string {
+  const rows = stats.map((s) => `| \`head-${s.name}.glb\` | ${s.subdivisions} | ${s.skinVertices.toLocaleString('en-US')} | ${s.renderVertices.toLocaleString('en-US')} | ${s.quads.toLocaleString('en-US')} | ${s.triangles.toLocaleString('en-US')} |`);
+  return `# Head models: credits and how they were made
+
+The head is derived from the **MakeHuman hm08 base mesh**, released under
+[CC0 1.0](https://creativecommons.org/publicdomain/zero/1.0/) by the MakeHuman copyright holders
+(Data Collection AB, Joel Palmius, Jonas Hauquier; http://www.makehumancommunity.org). CC0 asks for nothing;
+we credit MakeHuman because their work made this head possible. The files here are CC0 as well.
+
+## How the files are made
+
+\`npm run build:models -- <folder with base.obj>\` (\`scripts/build-head-model.ts\`) does, deterministically:
+
+1. Reads the body surface (OBJ group \`body\`, all quads, closed) with its UVs.
+2. Cuts the head and upper neck off along the quad edge loop that runs around the neck through the front-midline
+   vertex nearest (0, 5.78, 0.69) dm: every kept face is a whole quad, the cut is one clean loop.
+3. Subdivides the skin with Catmull-Clark (crease rules on the neck boundary, UVs interpolated per face) 0, 1 and 2 times.
+4. Builds an eyeball (sclera, iris with pupil, clear cornea) of the helper eye's radius at each eye joint, and takes
+   the upper and lower teeth and the tongue from the helper meshes, subdivided once. Lower teeth and tongue hang
+   under a \`jaw\` node placed at the jaw hinge.
+5. Records pivots (eye centres, lid joints, jaw hinge, chin, head, neck) as \`pivot-*\` nodes and in the scene's
+   \`extras.softface.pivots\`.
+6. Converts decimetres to metres (+y up, the face looks along +z, the subject's left is +x) and writes GLB.
+
+## Resolutions
+
+Skin vertices are distinct positions (what the simulation moves); render vertices also count the copies made
+along UV seams.
+
+| file | subdivisions | skin vertices | render vertices | quads | triangles |
+| --- | --- | --- | --- | --- | --- |
+${rows.join('\n')}
+`;
+}

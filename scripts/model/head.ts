@@ -1,0 +1,246 @@
+import { boundaryLoops, cutAlongLoop, findEdgeLoop, subsetFaces } from './cut';
+import { buildEyeball, type TriGeometry } from './eye';
+import type { MaterialSpec, NodeSpec } from './glb';
+import type { ObjMesh } from './obj';
+import { catmullClark } from './subdivide';
+import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from './polymesh';
+
+/** MakeHuman works in decimetres; glTF and the app work in metres. */
+export const DECIMETRE = 0.1;
+
+/** The resolutions written: name, Catmull-Clark levels. */
+export const LEVELS = [
+  { name: 'low', subdivisions: 0 },
+  { name: 'medium', subdivisions: 1 },
+  { name: 'high', subdivisions: 2 },
+] as const;
+
+/** Where the neck cut runs: the edge loop through the front-midline vertex nearest this point (hm08, decimetres). */
+export const NECK_CUT_FRONT: [number, number, number] = [0, 5.78, 0.69];
+
+/** Joint cubes of hm08 whose centres become the model's pivots, by the pivot name used in the model. */
+export const PIVOT_JOINTS: Record<string, string> = {
+  'eye-l': 'joint-l-eye',
+  'eye-r': 'joint-r-eye',
+  'upperlid-l': 'joint-l-upperlid',
+  'upperlid-r': 'joint-r-upperlid',
+  'lowerlid-l': 'joint-l-lowerlid',
+  'lowerlid-r': 'joint-r-lowerlid',
+  'jaw-hinge': 'joint-mouth',
+  chin: 'joint-jaw',
+  head: 'joint-head',
+  neck: 'joint-neck',
+};
+
+export const MATERIALS = {
+  skin: { name: 'skin', baseColor: [0.72, 0.42, 0.31, 1], roughness: 0.55 },
+  sclera: { name: 'sclera', baseColor: [0.86, 0.83, 0.79, 1], roughness: 0.3 },
+  iris: { name: 'iris', baseColor: [1, 1, 1, 1], roughness: 0.5 },
+  cornea: { name: 'cornea', baseColor: [1, 1, 1, 0.06], roughness: 0.02, blend: true },
+  teeth: { name: 'teeth', baseColor: [0.84, 0.79, 0.67, 1], roughness: 0.3, doubleSided: true },
+  tongue: { name: 'tongue', baseColor: [0.52, 0.17, 0.16, 1], roughness: 0.45 },
+} satisfies Record<string, MaterialSpec>;
+
+/** Everything the OBJ gives, as one polygon mesh plus the faces of each group. */
+export interface SourceMesh {
+  mesh: PolyMesh;
+  groupFaces: Map<string, number[]>;
+}
+
+/** Turns a parsed OBJ into a PolyMesh (faces without texture coordinates get uv 0, 0). */
+export function sourceMesh(obj: ObjMesh): SourceMesh {
+  const groupFaces = new Map<string, number[]>();
+  const faces = obj.faces.map((f, i) => {
+    const list = groupFaces.get(f.group) ?? [];
+    list.push(i);
+    groupFaces.set(f.group, list);
+    return { v: f.v, uv: f.vt.flatMap((t) => (t < 0 ? [0, 0] : [obj.uvs[2 * t], obj.uvs[2 * t + 1]])) };
+  });
+  return { mesh: polyMeshFromFaces(obj.positions, faces), groupFaces };
+}
+
+/** The faces of one OBJ group as their own mesh; throws naming the group if the OBJ lacks it. */
+export function groupMesh(source: SourceMesh, group: string): ReturnType<typeof subsetFaces> {
+  const faces = source.groupFaces.get(group);
+  if (!faces || faces.length === 0) throw new Error(`the base mesh has no group "${group}"`);
+  return subsetFaces(source.mesh, faces);
+}
+
+/** Centre of a group's vertices (the joint cubes mark pivots this way). */
+export function groupCentre(source: SourceMesh, group: string): [number, number, number] {
+  const { mesh } = groupMesh(source, group);
+  const c: [number, number, number] = [0, 0, 0];
+  const n = vertexCount(mesh);
+  for (let v = 0; v < n; v++) for (let k = 0; k < 3; k++) c[k] += mesh.positions[3 * v + k] / n;
+  return c;
+}
+
+/** The head and upper neck cut from the body along the neck edge loop. */
+export interface HeadCut {
+  mesh: PolyMesh;
+  /** The neck loop, as indices into `mesh`. */
+  neckLoop: number[];
+}
+
+/** Cuts the head off the closed body surface along the quad edge loop that passes NECK_CUT_FRONT. */
+export function cutHead(source: SourceMesh, front = NECK_CUT_FRONT): HeadCut {
+  const body = groupMesh(source, 'body');
+  const P = body.mesh.positions;
+  const V = vertexCount(body.mesh);
+  let start = -1;
+  let best = Infinity;
+  for (let v = 0; v < V; v++) {
+    if (Math.abs(P[3 * v]) > 1e-6) continue;
+    const d = Math.hypot(P[3 * v + 1] - front[1], P[3 * v + 2] - front[2]);
+    if (d < best) {
+      best = d;
+      start = v;
+    }
+  }
+  if (start < 0) throw new Error('the body has no vertex on the midline x = 0');
+  // Leave the midline along the edge that points most sideways toward the subject's left (+x).
+  let next = -1;
+  let bestSideways = 0;
+  for (let f = 0; f < faceCount(body.mesh); f++) {
+    const s = body.mesh.faceStart[f];
+    const n = body.mesh.faceStart[f + 1] - s;
+    for (let i = 0; i < n; i++) {
+      if (body.mesh.corners[s + i] !== start) continue;
+      for (const j of [(i + 1) % n, (i + n - 1) % n]) {
+        const w = body.mesh.corners[s + j];
+        const d = [0, 1, 2].map((k) => P[3 * w + k] - P[3 * start + k]);
+        const sideways = d[0] / Math.hypot(d[0], d[1], d[2]);
+        if (sideways > bestSideways) {
+          bestSideways = sideways;
+          next = w;
+        }
+      }
+    }
+  }
+  const loop = findEdgeLoop(body.mesh, start, next);
+  let top = 0;
+  for (let v = 1; v < V; v++) if (P[3 * v + 1] > P[3 * top + 1]) top = v;
+  let seed = -1;
+  for (let f = 0; f < faceCount(body.mesh) && seed < 0; f++) {
+    for (let c = body.mesh.faceStart[f]; c < body.mesh.faceStart[f + 1]; c++) if (body.mesh.corners[c] === top) seed = f;
+  }
+  const head = cutAlongLoop(body.mesh, loop, seed);
+  const boundary = boundaryLoops(head.mesh);
+  if (boundary.length !== 1 || boundary[0].length !== loop.length) {
+    throw new Error(`the neck cut should leave one boundary loop of ${loop.length} vertices, found ${boundary.map((b) => b.length).join(', ')}`);
+  }
+  return { mesh: head.mesh, neckLoop: boundary[0] };
+}
+
+/** Applies `levels` rounds of Catmull-Clark. */
+export function subdivide(mesh: PolyMesh, levels: number): PolyMesh {
+  let m = mesh;
+  for (let i = 0; i < levels; i++) m = catmullClark(m);
+  return m;
+}
+
+/** Counts stated in CREDITS.md and the model's extras. */
+export interface LevelStats {
+  name: string;
+  subdivisions: number;
+  /** Distinct skin positions: the vertices the solver simulates. */
+  skinVertices: number;
+  /** Render vertices: positions split along UV seams. */
+  renderVertices: number;
+  quads: number;
+  triangles: number;
+}
+
+/** One head resolution ready to write. */
+export interface HeadLevel {
+  stats: LevelStats;
+  root: NodeSpec;
+  sceneExtras: Record<string, unknown>;
+}
+
+/** Builds the parts shared by every resolution (eyes, teeth, tongue, pivots) and the skin of each resolution. */
+export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
+  const source = sourceMesh(obj);
+  const cut = cutHead(source);
+
+  const pivots: Record<string, [number, number, number]> = {};
+  for (const [name, joint] of Object.entries(PIVOT_JOINTS)) pivots[name] = scaled(groupCentre(source, joint));
+
+  // The helper eye is a sphere around the eye joint: measure its radius, then build a better eyeball of that size.
+  const helperEye = groupMesh(source, 'helper-l-eye').mesh;
+  const eyeCentre = groupCentre(source, 'joint-l-eye');
+  let radius = 0;
+  for (let v = 0; v < vertexCount(helperEye); v++) {
+    radius += Math.hypot(...([0, 1, 2].map((k) => helperEye.positions[3 * v + k] - eyeCentre[k]) as [number, number, number])) / vertexCount(helperEye);
+  }
+  const eyeball = buildEyeball({ radius: radius * DECIMETRE });
+  const eyeParts = [
+    { geometry: eyeball.sclera, material: MATERIALS.sclera },
+    { geometry: eyeball.iris, material: MATERIALS.iris },
+    { geometry: eyeball.cornea, material: MATERIALS.cornea },
+  ];
+
+  const hinge = pivots['jaw-hinge'];
+  const helper = (group: string, offset: [number, number, number] = [0, 0, 0]): TriGeometry => {
+    const r = toRenderMesh(catmullClark(groupMesh(source, group).mesh), DECIMETRE);
+    for (let i = 0; i < r.positions.length; i++) r.positions[i] -= offset[i % 3];
+    return r;
+  };
+  const teethUpper = helper('helper-upper-teeth');
+  const teethLower = helper('helper-lower-teeth', hinge);
+  const tongue = helper('helper-tongue', hinge);
+
+  return LEVELS.map(({ name, subdivisions }) => {
+    const mesh = subdivide(cut.mesh, subdivisions);
+    const skin = toRenderMesh(mesh, DECIMETRE);
+    const stats: LevelStats = {
+      name,
+      subdivisions,
+      skinVertices: vertexCount(mesh),
+      renderVertices: skin.positions.length / 3,
+      quads: faceCount(mesh),
+      triangles: skin.indices.length / 3,
+    };
+    const negHinge: [number, number, number] = [-hinge[0], -hinge[1], -hinge[2]];
+    const root: NodeSpec = {
+      name: 'head',
+      children: [
+        { name: 'skin', parts: [{ geometry: skin, material: MATERIALS.skin }] },
+        { name: 'eye-l', translation: pivots['eye-l'], meshName: 'eyeball', parts: eyeParts, extras: { pivot: 'eye-l' } },
+        { name: 'eye-r', translation: pivots['eye-r'], meshName: 'eyeball', parts: eyeParts, extras: { pivot: 'eye-r' } },
+        { name: 'teeth-upper', parts: [{ geometry: teethUpper, material: MATERIALS.teeth }] },
+        {
+          name: 'jaw',
+          translation: hinge,
+          extras: { pivot: 'jaw-hinge' },
+          children: [
+            { name: 'teeth-lower', translation: negHinge, parts: [{ geometry: teethLower, material: MATERIALS.teeth }] },
+            { name: 'tongue', translation: negHinge, parts: [{ geometry: tongue, material: MATERIALS.tongue }] },
+          ],
+        },
+        {
+          name: 'pivots',
+          children: Object.entries(pivots).map(([pivot, at]) => ({ name: `pivot-${pivot}`, translation: at, extras: { pivot } })),
+        },
+      ],
+    };
+    const sceneExtras = {
+      softface: {
+        format: 'softface-head',
+        version: 1,
+        units: 'metres',
+        up: '+y',
+        forward: '+z',
+        left: '+x (the subject\'s left)',
+        source: 'MakeHuman hm08 base mesh (CC0 1.0)',
+        level: stats,
+        eyeRadius: radius * DECIMETRE,
+        neckLoopVertices: cut.neckLoop.length,
+        pivots,
+      },
+    };
+    return { stats, root, sceneExtras };
+  });
+}
+
+const scaled = (p: [number, number, number]): [number, number, number] => [p[0] * DECIMETRE, p[1] * DECIMETRE, p[2] * DECIMETRE];

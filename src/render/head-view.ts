@@ -1,0 +1,127 @@
+import {
+  ACESFilmicToneMapping,
+  Color,
+  DirectionalLight,
+  HemisphereLight,
+  PMREMGenerator,
+  PerspectiveCamera,
+  Scene,
+  SRGBColorSpace,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
+import { boxCentre, type HeadModel } from './head-model';
+
+/** Options of the view. */
+export interface HeadViewOptions {
+  /** Background colour (sRGB hex). */
+  background: number;
+  /** Vertical field of view in degrees. */
+  fov: number;
+  /** Cap on the device pixel ratio, to bound the cost of fill on dense screens. */
+  maxPixelRatio: number;
+}
+
+/** Where the key light comes from: above, in front, from the subject's left. */
+const KEY_DIRECTION = new Vector3(0.55, 0.65, 1.0);
+
+export const HEAD_VIEW_DEFAULTS: Required<HeadViewOptions> = { background: 0x1d2024, fov: 28, maxPixelRatio: 2 };
+
+/** A three.js scene that shows a head: renderer, camera, orbit controls and the default lights. */
+export class HeadView {
+  readonly renderer: WebGLRenderer;
+  readonly scene = new Scene();
+  readonly camera: PerspectiveCamera;
+  readonly controls: OrbitControls;
+  readonly ambient: HemisphereLight;
+  readonly key: DirectionalLight;
+  private head: HeadModel | undefined;
+  private frame = 0;
+  private readonly resizeObserver: ResizeObserver;
+
+  constructor(
+    private readonly container: HTMLElement,
+    options: Partial<HeadViewOptions> = {},
+  ) {
+    const o = { ...HEAD_VIEW_DEFAULTS, ...options };
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, o.maxPixelRatio));
+    this.renderer.outputColorSpace = SRGBColorSpace;
+    this.renderer.toneMapping = ACESFilmicToneMapping;
+    this.renderer.toneMappingExposure = 1.0;
+    container.appendChild(this.renderer.domElement);
+
+    this.scene.background = new Color(o.background);
+    const pmrem = new PMREMGenerator(this.renderer);
+    this.scene.environment = pmrem.fromScene(new RoomEnvironment(), 0.04).texture;
+    this.scene.environmentIntensity = 0.2;
+    pmrem.dispose();
+
+    this.ambient = new HemisphereLight(0xf4f1ec, 0x3a302c, 0.3);
+    this.key = new DirectionalLight(0xfff3e6, 2.4);
+    this.key.position.copy(KEY_DIRECTION);
+    this.scene.add(this.ambient, this.key, this.key.target);
+
+    this.camera = new PerspectiveCamera(o.fov, 1, 0.01, 20);
+    this.camera.position.set(0, 0.7, 1);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.enableDamping = true;
+    this.controls.minDistance = 0.15;
+    this.controls.maxDistance = 2.5;
+
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+    this.resize();
+  }
+
+  /** Shows a head (replacing the one shown) and frames it from the front. */
+  setHead(head: HeadModel): void {
+    if (this.head) this.scene.remove(this.head.root);
+    this.head = head;
+    this.scene.add(head.root);
+    this.frame_(head);
+  }
+
+  /** Starts the render loop. */
+  start(): void {
+    const loop = (): void => {
+      this.frame = requestAnimationFrame(loop);
+      this.controls.update();
+      this.renderer.render(this.scene, this.camera);
+    };
+    if (!this.frame) loop();
+  }
+
+  /** Stops rendering and frees the GPU resources and listeners. */
+  dispose(): void {
+    cancelAnimationFrame(this.frame);
+    this.frame = 0;
+    this.resizeObserver.disconnect();
+    this.controls.dispose();
+    this.scene.environment?.dispose();
+    this.renderer.dispose();
+    this.renderer.domElement.remove();
+  }
+
+  private frame_(head: HeadModel): void {
+    const centre = boxCentre(head.bounds);
+    const size = head.bounds.getSize(new Vector3());
+    const fit = (0.5 * Math.max(size.y, size.x / this.camera.aspect)) / Math.tan((this.camera.fov * Math.PI) / 360);
+    const distance = 1.15 * fit + size.z / 2;
+    this.controls.target.copy(centre);
+    this.camera.position.set(centre.x, centre.y + 0.03 * size.y, centre.z + distance);
+    this.key.target.position.copy(centre);
+    this.key.position.copy(centre).add(KEY_DIRECTION);
+    this.controls.update();
+  }
+
+  private resize(): void {
+    const w = Math.max(1, this.container.clientWidth);
+    const h = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+  }
+}
