@@ -79,6 +79,34 @@ describe.each(FILES)('public/models/head-$name.glb', ({ name, min, max }) => {
     for (const p of ['eye-l', 'eye-r', 'upperlid-l', 'lowerlid-r', 'jaw-hinge', 'chin']) expect(node(`pivot-${p}`)).toBeDefined();
   });
 
+  it('places the lower teeth under the upper teeth and the tongue inside the arch, in world space', () => {
+    const worldBox = (n: string) => {
+      const node = doc.getRoot().listNodes().find((x) => x.getName() === n)!;
+      const m = node.getWorldMatrix(); // translations only: column-major, translation in 12..14
+      const p = node.getMesh()!.listPrimitives()[0].getAttribute('POSITION')!.getArray()!;
+      const min = [Infinity, Infinity, Infinity];
+      const max = [-Infinity, -Infinity, -Infinity];
+      for (let i = 0; i < p.length; i += 3) {
+        for (let k = 0; k < 3; k++) {
+          min[k] = Math.min(min[k], p[i + k] + m[12 + k]);
+          max[k] = Math.max(max[k], p[i + k] + m[12 + k]);
+        }
+      }
+      return { min, max, centre: min.map((v, k) => (v + max[k]) / 2) };
+    };
+    const upper = worldBox('teeth-upper');
+    const lower = worldBox('teeth-lower');
+    const tongue = worldBox('tongue');
+    expect(Math.abs(lower.centre[0])).toBeLessThan(0.001);
+    expect(upper.centre[1] - lower.centre[1]).toBeGreaterThan(0.005);
+    expect(upper.centre[1] - lower.centre[1]).toBeLessThan(0.03);
+    expect(Math.abs(upper.centre[2] - lower.centre[2])).toBeLessThan(0.01);
+    expect(tongue.centre[1]).toBeGreaterThan(lower.min[1]);
+    expect(tongue.centre[1]).toBeLessThan(upper.max[1]);
+    expect(tongue.centre[2]).toBeGreaterThan(lower.min[2] - 0.01);
+    expect(tongue.centre[2]).toBeLessThan(lower.max[2]);
+  });
+
   it('is listed in CREDITS.md with its counts', () => {
     const credits = readFileSync('public/models/CREDITS.md', 'utf8');
     const extras = doc.getRoot().getDefaultScene()!.getExtras() as { softface: { level: { skinVertices: number; triangles: number } } };

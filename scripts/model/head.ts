@@ -181,14 +181,12 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
   ];
 
   const hinge = pivots['jaw-hinge'];
-  const helper = (group: string, offset: [number, number, number] = [0, 0, 0]): TriGeometry => {
-    const r = toRenderMesh(catmullClark(groupMesh(source, group).mesh), DECIMETRE);
-    for (let i = 0; i < r.positions.length; i++) r.positions[i] -= offset[i % 3];
-    return r;
-  };
+  // Vertices stay in head space; the nodes under the jaw undo the jaw's translation, so turning the jaw node turns
+  // them about the hinge.
+  const helper = (group: string): TriGeometry => toRenderMesh(catmullClark(groupMesh(source, group).mesh), DECIMETRE);
   const teethUpper = helper('helper-upper-teeth');
-  const teethLower = helper('helper-lower-teeth', hinge);
-  const tongue = helper('helper-tongue', hinge);
+  const teethLower = helper('helper-lower-teeth');
+  const tongue = helper('helper-tongue');
 
   return LEVELS.map(({ name, subdivisions }) => {
     const mesh = subdivide(cut.mesh, subdivisions);
@@ -206,13 +204,13 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
       name: 'head',
       children: [
         { name: 'skin', parts: [{ geometry: skin, material: MATERIALS.skin }] },
-        { name: 'eye-l', translation: pivots['eye-l'], meshName: 'eyeball', parts: eyeParts, extras: { pivot: 'eye-l' } },
-        { name: 'eye-r', translation: pivots['eye-r'], meshName: 'eyeball', parts: eyeParts, extras: { pivot: 'eye-r' } },
+        { name: 'eye-l', translation: pivots['eye-l'], meshName: 'eyeball', parts: eyeParts, extras: { softface: { pivot: 'eye-l' } } },
+        { name: 'eye-r', translation: pivots['eye-r'], meshName: 'eyeball', parts: eyeParts, extras: { softface: { pivot: 'eye-r' } } },
         { name: 'teeth-upper', parts: [{ geometry: teethUpper, material: MATERIALS.teeth }] },
         {
           name: 'jaw',
           translation: hinge,
-          extras: { pivot: 'jaw-hinge' },
+          extras: { softface: { pivot: 'jaw-hinge' } },
           children: [
             { name: 'teeth-lower', translation: negHinge, parts: [{ geometry: teethLower, material: MATERIALS.teeth }] },
             { name: 'tongue', translation: negHinge, parts: [{ geometry: tongue, material: MATERIALS.tongue }] },
@@ -220,7 +218,7 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
         },
         {
           name: 'pivots',
-          children: Object.entries(pivots).map(([pivot, at]) => ({ name: `pivot-${pivot}`, translation: at, extras: { pivot } })),
+          children: Object.entries(pivots).map(([pivot, at]) => ({ name: `pivot-${pivot}`, translation: at, extras: { softface: { pivot } } })),
         },
       ],
     };

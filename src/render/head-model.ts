@@ -30,6 +30,10 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
   const info = gltf.scene.userData.softface as HeadModelInfo | undefined;
   if (!info || info.format !== 'softface-head') throw new Error(`${url} is not a softface head model (its scene has no softface extras)`);
   const root = gltf.scene;
+  root.traverse((o) => {
+    const t = [...o.position.toArray(), ...o.quaternion.toArray(), ...o.scale.toArray()];
+    if (!t.every(Number.isFinite)) throw new Error(`${url}: node "${o.name}" has a non-finite transform`);
+  });
   const skin = root.getObjectByName('skin');
   if (!(skin instanceof Mesh)) throw new Error(`${url} has no mesh named "skin"`);
   skin.material = createSkinMaterial();
