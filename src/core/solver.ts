@@ -1,0 +1,473 @@
+/**
+ * The skin solver (thesis 3.1.2 and 4.3): every frame, position, muscle and length constraints are projected in
+ * that order, a number of times, over flat Float32Arrays. Added to the thesis: a bending constraint that sets the
+ * wrinkle spacing in millimetres, and collisions with rigid shapes (eyes, teeth).
+ */
+import { colliderDistance, type Collider } from './colliders';
+import { computeNormals, type SkinTopology } from './topology';
+
+/** The skin's parameters; every one can change while the solver runs. */
+export interface SkinParameters {
+  /** Outer iterations per frame; each projects position, muscle, length (x lengthIterations), bending, collisions. */
+  positionIterations: number;
+  /** Passes over all length constraints per outer iteration (the thesis found 3 the least that looks soft). */
+  lengthIterations: number;
+  /** Fraction of the way back to rest per projection: the skin's elasticity (the tissue under it). */
+  positionStiffness: number;
+  /** Fraction of an edge's length error removed per projection: how little the skin compresses. */
+  lengthStiffness: number;
+  /** Fraction of the way to a muscle target per projection, times the vertex's muscle weight. */
+  muscleStiffness: number;
+  /**
+   * Wrinkle spacing in metres: the wavelength at which compressed skin folds. It sets the bending stiffness against
+   * the position stiffness (a plate on an elastic foundation buckles at 2 pi (B / k)^(1/4)). 0 turns bending off.
+   */
+  wrinkleSpacing: number;
+  /** How much harder the tissue resists skin sinking in along the rest normal than lifting out (1 = symmetric). */
+  inwardResistance: number;
+  /**
+   * Outward push per unit of edge compression, along the rest normal, scaled by the muscle weight at the edge: it
+   * starts compressed skin buckling (a flat patch has no other reason to leave its plane) and, being fixed per
+   * vertex, pins the fold pattern so the solver settles instead of letting folds drift. Where no muscle holds the skin
+   * it is zero, so released skin returns exactly to rest.
+   */
+  bulge: number;
+  /** The solver sleeps once no vertex moves more than this in a frame, relative to the mesh size. */
+  sleepTolerance: number;
+}
+
+export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
+  positionIterations: 4,
+  lengthIterations: 3,
+  positionStiffness: 0.05,
+  lengthStiffness: 0.9,
+  muscleStiffness: 0.5,
+  wrinkleSpacing: 0.008,
+  inwardResistance: 3,
+  bulge: 0.2,
+  sleepTolerance: 2e-7,
+};
+
+/**
+ * Relates the bending stiffness to the wavelength. For the scalar Laplacian constraint on the normal displacement,
+ * projected once per outer iteration as the position constraint is, small-slope theory gives
+ * lambda = 2 pi h (s_b / (C s_p))^(1/4) for edge spacing h; C was measured on triangle grids (see tests).
+ */
+export const BENDING_CALIBRATION = 6;
+
+/** Typed arrays the solver reads and writes; pass them to place them in shared memory. */
+export interface SolverBuffers {
+  /** Current positions, xyz per simulation vertex. */
+  positions: Float32Array;
+  /** Current unit normals. */
+  normals: Float32Array;
+  /** Muscle target of each vertex, xyz. */
+  targets: Float32Array;
+  /** Muscle weight of each vertex along the skin's surface, 0..1 (0 on both: no muscle constraint). */
+  weights: Float32Array;
+  /**
+   * Muscle weight of each vertex along its rest normal, 0..1. Muscles that slide skin over the face (linear,
+   * sphincter) leave this low so compressed skin is free to fold; rotation muscles (jaw, lids) carry the skin
+   * bodily and set it as high as the surface weight.
+   */
+  normalWeights: Float32Array;
+}
+
+/** Allocates the solver's buffers for a topology, positions at rest. */
+export function createSolverBuffers(topology: SkinTopology): SolverBuffers {
+  const n = topology.vertexCount;
+  return {
+    positions: Float32Array.from(topology.rest),
+    normals: Float32Array.from(topology.restNormals),
+    targets: Float32Array.from(topology.rest),
+    weights: new Float32Array(n),
+    normalWeights: new Float32Array(n),
+  };
+}
+
+/** Counts of each constraint type, as the app's outputs show them. */
+export interface ConstraintCounts {
+  position: number;
+  length: number;
+  muscle: number;
+  bending: number;
+  collision: number;
+}
+
+export class SkinSolver {
+  readonly topology: SkinTopology;
+  readonly buffers: SolverBuffers;
+  private readonly params: SkinParameters = { ...SKIN_DEFAULTS };
+  private readonly previous: Float32Array;
+  private readonly held: Uint32Array;
+  private heldCount = 0;
+  private readonly bendStiffness: Float32Array;
+  private readonly seed: Float32Array;
+  private readonly colliders: Collider[];
+  private readonly colliderStart: Uint32Array;
+  private readonly colliderVertices: Uint32Array;
+  private readonly colliderClearance: Float32Array;
+  private readonly direction = new Float32Array(3);
+  private inputsChanged = false;
+  private asleep = true;
+  /** Largest vertex move of the last frame, in model units. */
+  lastMove = 0;
+  /** Frames solved since creation. */
+  frames = 0;
+
+  constructor(topology: SkinTopology, options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[] } = {}) {
+    this.topology = topology;
+    const n = topology.vertexCount;
+    this.buffers = options.buffers ?? createSolverBuffers(topology);
+    this.previous = new Float32Array(3 * n);
+    this.held = new Uint32Array(n);
+    this.bendStiffness = new Float32Array(n);
+    // A fixed, deterministic per-vertex value in [-0.25, 0.75): breaks the symmetry of a flat compressed patch so it
+    // buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than sink. A larger
+    // mean lifts the whole patch in one bulge instead of folding it.
+    this.seed = new Float32Array(n);
+    for (let v = 0; v < n; v++) this.seed[v] = hash01(v) - 0.25;
+    this.colliders = options.colliders ?? [];
+    const c = this.collisionCandidates(this.colliders);
+    this.colliderStart = c.start;
+    this.colliderVertices = c.vertices;
+    this.colliderClearance = c.clearance;
+    this.setParameters(options.parameters ?? {});
+    this.updateMuscles();
+  }
+
+  /** The current parameters (a copy). */
+  parameters(): SkinParameters {
+    return { ...this.params };
+  }
+
+  /** Changes parameters; throws, changing nothing, if one is not a finite number in its range. */
+  setParameters(p: Partial<SkinParameters>): void {
+    const next = { ...this.params, ...p };
+    validateParameters(next);
+    Object.assign(this.params, next);
+    const n = this.topology.vertexCount;
+    const twoPi = 2 * Math.PI;
+    for (let v = 0; v < n; v++) {
+      const h = this.topology.spacing[v];
+      const ratio = next.wrinkleSpacing > 0 && h > 0 ? next.wrinkleSpacing / (twoPi * h) : 0;
+      this.bendStiffness[v] = Math.min(1, BENDING_CALIBRATION * next.positionStiffness * ratio ** 4);
+    }
+    this.wake();
+  }
+
+  /**
+   * Sets muscle targets for some vertices (others keep theirs). `weight` pulls along the surface, `normalWeight`
+   * along the rest normal; both 0 releases a vertex.
+   */
+  setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
+    const n = this.topology.vertexCount;
+    for (let i = 0; i < vertices.length; i++) {
+      const v = vertices[i];
+      if (!Number.isInteger(v) || v < 0 || v >= n) throw new Error(`muscle target ${i}: vertex ${v} is not one of the ${n} skin vertices`);
+      for (let k = 0; k < 3; k++) {
+        if (!Number.isFinite(targets[3 * i + k])) throw new Error(`muscle target ${i} (vertex ${v}) has a non-finite coordinate: ${targets[3 * i + k]}`);
+      }
+    }
+    if (!Number.isFinite(weight) || weight < 0 || weight > 1) throw new Error(`muscle weight must be a number from 0 to 1, got ${weight}`);
+    if (!Number.isFinite(normalWeight) || normalWeight < 0 || normalWeight > 1) throw new Error(`muscle normal weight must be a number from 0 to 1, got ${normalWeight}`);
+    if (targets.length < 3 * vertices.length) throw new Error(`muscle targets: ${vertices.length} vertices need ${3 * vertices.length} coordinates, got ${targets.length}`);
+    const { targets: T, weights: W, normalWeights: WN } = this.buffers;
+    for (let i = 0; i < vertices.length; i++) {
+      const v = vertices[i];
+      T[3 * v] = targets[3 * i];
+      T[3 * v + 1] = targets[3 * i + 1];
+      T[3 * v + 2] = targets[3 * i + 2];
+      W[v] = weight;
+      WN[v] = normalWeight;
+    }
+    this.updateMuscles();
+  }
+
+  /** Releases every muscle constraint. */
+  clearMuscleTargets(): void {
+    this.buffers.weights.fill(0);
+    this.buffers.normalWeights.fill(0);
+    this.buffers.targets.set(this.topology.rest);
+    this.updateMuscles();
+  }
+
+  /** Re-reads the target and weight buffers (after writing them directly, as the worker's control block does). */
+  updateMuscles(): void {
+    const W = this.buffers.weights;
+    const WN = this.buffers.normalWeights;
+    let count = 0;
+    for (let v = 0; v < W.length; v++) if (W[v] > 0 || WN[v] > 0) this.held[count++] = v;
+    this.heldCount = count;
+    this.inputsChanged = true;
+    this.wake();
+  }
+
+  /** Wakes the solver so the next step() solves a frame. */
+  wake(): void {
+    this.asleep = false;
+  }
+
+  /** True once the shape has converged for the current inputs; step() then does nothing until an input changes. */
+  get sleeping(): boolean {
+    return this.asleep;
+  }
+
+  counts(): ConstraintCounts {
+    const t = this.topology;
+    return {
+      position: t.vertexCount,
+      length: t.restLength.length,
+      muscle: this.heldCount,
+      bending: this.params.wrinkleSpacing > 0 ? t.vertexCount : 0,
+      collision: this.colliderVertices.length,
+    };
+  }
+
+  /** Solves one frame unless asleep; returns whether it solved. Allocates nothing. */
+  step(): boolean {
+    if (this.asleep) return false;
+    const x = this.buffers.positions;
+    this.previous.set(x);
+    const p = this.params;
+    for (let it = 0; it < p.positionIterations; it++) {
+      this.projectPositions();
+      this.projectMuscles();
+      for (let l = 0; l < p.lengthIterations; l++) this.projectLengths();
+      this.projectBending();
+      this.projectCollisions();
+    }
+    let move = 0;
+    for (let i = 0; i < x.length; i++) {
+      const d = Math.abs(x[i] - this.previous[i]);
+      if (d > move) move = d;
+    }
+    this.lastMove = move;
+    this.frames++;
+    computeNormals(x, this.topology.triangles, this.buffers.normals);
+    const changed = this.inputsChanged;
+    this.inputsChanged = false;
+    if (!changed && move <= p.sleepTolerance * this.topology.size) this.asleep = true;
+    return true;
+  }
+
+  /**
+   * Position constraints (thesis 4.3.2): pull each vertex back toward rest. The thesis adds the unit vector from rest
+   * to the vertex times the distance, which pushes it away; the stable form moves a fraction of the way back.
+   * Sinking below rest along the normal is resisted harder, so folds bulge out rather than in.
+   */
+  private projectPositions(): void {
+    const x = this.buffers.positions;
+    const X = this.topology.rest;
+    const N = this.topology.restNormals;
+    const s = this.params.positionStiffness;
+    const extra = s * (this.params.inwardResistance - 1);
+    for (let i = 0; i < x.length; i += 3) {
+      const ux = X[i] - x[i];
+      const uy = X[i + 1] - x[i + 1];
+      const uz = X[i + 2] - x[i + 2];
+      // Depth below rest along the normal (positive when sunk in).
+      const depth = ux * N[i] + uy * N[i + 1] + uz * N[i + 2];
+      const k = depth > 0 ? extra * depth : 0;
+      x[i] += s * ux + k * N[i];
+      x[i + 1] += s * uy + k * N[i + 1];
+      x[i + 2] += s * uz + k * N[i + 2];
+    }
+  }
+
+  /**
+   * Muscle constraints (thesis 4.3.4): move held vertices toward their targets. The thesis scales the step by the
+   * squared distance, a force cubic in distance that overshoots and explodes for far targets; a fixed fraction of the
+   * remaining distance converges for any target.
+   */
+  private projectMuscles(): void {
+    const x = this.buffers.positions;
+    const T = this.buffers.targets;
+    const W = this.buffers.weights;
+    const WN = this.buffers.normalWeights;
+    const N = this.topology.restNormals;
+    const s = this.params.muscleStiffness;
+    for (let h = 0; h < this.heldCount; h++) {
+      const v = this.held[h];
+      const i = 3 * v;
+      const k = s * W[v];
+      const dx = T[i] - x[i];
+      const dy = T[i + 1] - x[i + 1];
+      const dz = T[i + 2] - x[i + 2];
+      // Split the pull into its part along the rest normal and the part along the surface.
+      const along = (s * WN[v] - k) * (dx * N[i] + dy * N[i + 1] + dz * N[i + 2]);
+      x[i] += k * dx + along * N[i];
+      x[i + 1] += k * dy + along * N[i + 1];
+      x[i + 2] += k * dz + along * N[i + 2];
+    }
+  }
+
+  /**
+   * Length constraints (thesis 4.3.3): restore each edge to its rest length, half the correction to each end. (As
+   * printed, the correction's sign moves the ends the wrong way.) Edges go colour by colour, so within a colour no
+   * two projections touch the same vertex. A compressed edge also nudges its ends out along their rest normals.
+   */
+  private projectLengths(): void {
+    const x = this.buffers.positions;
+    const E = this.topology.edges;
+    const L = this.topology.restLength;
+    const N = this.topology.restNormals;
+    const seed = this.seed;
+    const s = 0.5 * this.params.lengthStiffness;
+    const bulge = this.params.bulge;
+    const W = this.buffers.weights;
+    const count = L.length;
+    for (let e = 0; e < count; e++) {
+      const a = E[2 * e];
+      const b = E[2 * e + 1];
+      const ia = 3 * a;
+      const ib = 3 * b;
+      const dx = x[ib] - x[ia];
+      const dy = x[ib + 1] - x[ia + 1];
+      const dz = x[ib + 2] - x[ia + 2];
+      const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      if (len === 0) continue;
+      const error = len - L[e];
+      if (error === 0) continue;
+      const k = (s * error) / len;
+      x[ia] += k * dx;
+      x[ia + 1] += k * dy;
+      x[ia + 2] += k * dz;
+      x[ib] -= k * dx;
+      x[ib + 1] -= k * dy;
+      x[ib + 2] -= k * dz;
+      const held = W[a] > W[b] ? W[a] : W[b];
+      if (error < 0 && held > 0) {
+        const push = -bulge * held * error;
+        const pa = push * seed[a];
+        const pb = push * seed[b];
+        x[ia] += pa * N[ia];
+        x[ia + 1] += pa * N[ia + 1];
+        x[ia + 2] += pa * N[ia + 2];
+        x[ib] += pb * N[ib];
+        x[ib + 1] += pb * N[ib + 1];
+        x[ib + 2] += pb * N[ib + 2];
+      }
+    }
+  }
+
+  /**
+   * Bending: keeps the Laplacian of the normal displacement near zero (the rest curvature), scaled per vertex by the
+   * local edge spacing so that its balance against the position constraints gives folds of `wrinkleSpacing` at
+   * every mesh resolution (thesis 3.1.2 wishes for such a skin parameter).
+   */
+  private projectBending(): void {
+    if (this.params.wrinkleSpacing <= 0) return;
+    const x = this.buffers.positions;
+    const X = this.topology.rest;
+    const N = this.topology.restNormals;
+    const start = this.topology.neighbourStart;
+    const nb = this.topology.neighbours;
+    const stiffness = this.bendStiffness;
+    const n = this.topology.vertexCount;
+    for (let v = 0; v < n; v++) {
+      const s = stiffness[v];
+      const j0 = start[v];
+      const j1 = start[v + 1];
+      const degree = j1 - j0;
+      if (s === 0 || degree === 0) continue;
+      const i = 3 * v;
+      const nx = N[i];
+      const ny = N[i + 1];
+      const nz = N[i + 2];
+      // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal.
+      let mean = 0;
+      for (let j = j0; j < j1; j++) {
+        const k = 3 * nb[j];
+        mean += (x[k] - X[k]) * nx + (x[k + 1] - X[k + 1]) * ny + (x[k + 2] - X[k + 2]) * nz;
+      }
+      mean /= degree;
+      const own = (x[i] - X[i]) * nx + (x[i + 1] - X[i + 1]) * ny + (x[i + 2] - X[i + 2]) * nz;
+      const C = mean - own;
+      // Gradient: -n at the vertex, n / degree at each neighbour; squared norm 1 + 1 / degree.
+      const lambda = (s * C) / (1 + 1 / degree);
+      x[i] += lambda * nx;
+      x[i + 1] += lambda * ny;
+      x[i + 2] += lambda * nz;
+      const q = lambda / degree;
+      for (let j = j0; j < j1; j++) {
+        const k = 3 * nb[j];
+        x[k] -= q * nx;
+        x[k + 1] -= q * ny;
+        x[k + 2] -= q * nz;
+      }
+    }
+  }
+
+  /** Collisions: a vertex that was outside a collider at rest keeps at least its rest clearance (capped at 1 mm). */
+  private projectCollisions(): void {
+    const x = this.buffers.positions;
+    const dir = this.direction;
+    for (let c = 0; c < this.colliders.length; c++) {
+      const collider = this.colliders[c];
+      for (let j = this.colliderStart[c]; j < this.colliderStart[c + 1]; j++) {
+        const i = 3 * this.colliderVertices[j];
+        const d = colliderDistance(collider, x[i], x[i + 1], x[i + 2], dir);
+        const push = this.colliderClearance[j] - d;
+        if (push > 0) {
+          x[i] += push * dir[0];
+          x[i + 1] += push * dir[1];
+          x[i + 2] += push * dir[2];
+        }
+      }
+    }
+  }
+
+  private collisionCandidates(colliders: Collider[]): { start: Uint32Array; vertices: Uint32Array; clearance: Float32Array } {
+    const X = this.topology.rest;
+    const n = this.topology.vertexCount;
+    const start = new Uint32Array(colliders.length + 1);
+    const vertices: number[] = [];
+    const clearance: number[] = [];
+    const dir = [0, 0, 0];
+    colliders.forEach((c, ci) => {
+      // Skin within a band around the shape at rest is what can reach it during an expression.
+      const band = Math.max(c.radius, 0.01);
+      for (let v = 0; v < n; v++) {
+        const d = colliderDistance(c, X[3 * v], X[3 * v + 1], X[3 * v + 2], dir);
+        if (d >= 0 && d < band) {
+          vertices.push(v);
+          clearance.push(Math.min(d, 0.001));
+        }
+      }
+      start[ci + 1] = vertices.length;
+    });
+    return { start, vertices: Uint32Array.from(vertices), clearance: Float32Array.from(clearance) };
+  }
+}
+
+const RANGES: Record<keyof SkinParameters, [number, number, boolean]> = {
+  positionIterations: [1, 64, true],
+  lengthIterations: [0, 64, true],
+  positionStiffness: [0, 1, false],
+  lengthStiffness: [0, 1, false],
+  muscleStiffness: [0, 1, false],
+  wrinkleSpacing: [0, 1, false],
+  inwardResistance: [1, 100, false],
+  bulge: [0, 10, false],
+  sleepTolerance: [0, 1, false],
+};
+
+/** Throws an error naming the first parameter that is not a finite number within its range. */
+export function validateParameters(p: SkinParameters): void {
+  for (const [name, [lo, hi, integer]] of Object.entries(RANGES) as [keyof SkinParameters, [number, number, boolean]][]) {
+    const v = p[name];
+    if (typeof v !== 'number' || !Number.isFinite(v)) throw new Error(`skin parameter ${name} must be a finite number, got ${v}`);
+    if (v < lo || v > hi) throw new Error(`skin parameter ${name} must be between ${lo} and ${hi}, got ${v}`);
+    if (integer && !Number.isInteger(v)) throw new Error(`skin parameter ${name} must be a whole number, got ${v}`);
+  }
+}
+
+/** A fixed hash of an integer to [0, 1). */
+function hash01(i: number): number {
+  let h = Math.imul(i ^ 0x9e3779b9, 0x85ebca6b);
+  h ^= h >>> 13;
+  h = Math.imul(h, 0xc2b2ae35);
+  h ^= h >>> 16;
+  return (h >>> 0) / 4294967296;
+}

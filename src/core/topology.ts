@@ -1,0 +1,304 @@
+/**
+ * Skin topology: the welded simulation mesh behind a render mesh (thesis 4.3.1, "simulation vertices").
+ * Pure data, no three.js: runs in Node, on the main thread and in the worker.
+ */
+
+/** What was left out of an input mesh, and why. */
+export interface TopologyReport {
+  /** Render vertices merged into another with the same position (UV seams). */
+  weldedDuplicates: number;
+  /** Triangles with a repeated vertex or zero area. */
+  degenerateTriangles: number;
+  /** Triangles that repeat another's three vertices. */
+  duplicateTriangles: number;
+  /** Triangles dropped because an edge already had two triangles. */
+  nonManifoldTriangles: number;
+  /** Simulation vertices used by no triangle (kept still). */
+  isolatedVertices: number;
+}
+
+/** The welded skin: vertices in a cache-friendly order, edges grouped by colour, and adjacency in CSR form. */
+export interface SkinTopology {
+  vertexCount: number;
+  /** Rest positions, xyz per simulation vertex. */
+  rest: Float32Array;
+  /** Triangles over simulation vertices, counter-clockwise from outside. */
+  triangles: Uint32Array;
+  /** Simulation vertex of each render vertex (several render vertices share one along UV seams). */
+  renderToSim: Uint32Array;
+  /** Edge end points, two per edge, ordered colour by colour. */
+  edges: Uint32Array;
+  /** Rest length of each edge. */
+  restLength: Float32Array;
+  /** Edges of colour c are `colourStart[c]..colourStart[c+1]`; no two edges of a colour share a vertex. */
+  colourStart: Uint32Array;
+  /** Triangles of vertex v are `vertexTriangles[vertexTriangleStart[v]..vertexTriangleStart[v+1]]`. */
+  vertexTriangleStart: Uint32Array;
+  vertexTriangles: Uint32Array;
+  /** Edge-neighbours of vertex v, CSR like the triangles. */
+  neighbourStart: Uint32Array;
+  neighbours: Uint32Array;
+  /** Area-weighted unit normals at rest. */
+  restNormals: Float32Array;
+  /** Mean rest length of the edges at each vertex (the local mesh spacing). */
+  spacing: Float32Array;
+  /** Diagonal of the rest bounding box: the mesh size that tolerances are relative to. */
+  size: number;
+  report: TopologyReport;
+}
+
+/** Builds the simulation topology of an indexed triangle mesh. Bad triangles are skipped and counted in `report`. */
+export function buildTopology(renderPositions: ArrayLike<number>, indices: ArrayLike<number>): SkinTopology {
+  const renderCount = Math.floor(renderPositions.length / 3);
+  for (let i = 0; i < renderCount * 3; i++) {
+    if (!Number.isFinite(renderPositions[i])) throw new Error(`vertex ${Math.floor(i / 3)} has a non-finite coordinate (${renderPositions[i]})`);
+  }
+  for (let i = 0; i < indices.length; i++) {
+    const v = indices[i];
+    if (!Number.isInteger(v) || v < 0 || v >= renderCount) throw new Error(`index ${i} is ${v}, outside the ${renderCount} vertices`);
+  }
+
+  // 1. Weld render vertices that share a position exactly (UV seams), in first-seen order.
+  const weldKey = new Map<string, number>();
+  const weldOf = new Uint32Array(renderCount);
+  const weldedPositions: number[] = [];
+  for (let r = 0; r < renderCount; r++) {
+    const x = renderPositions[3 * r];
+    const y = renderPositions[3 * r + 1];
+    const z = renderPositions[3 * r + 2];
+    const key = `${x},${y},${z}`;
+    let w = weldKey.get(key);
+    if (w === undefined) {
+      w = weldedPositions.length / 3;
+      weldKey.set(key, w);
+      weldedPositions.push(x, y, z);
+    }
+    weldOf[r] = w;
+  }
+  const weldedCount = weldedPositions.length / 3;
+
+  // 2. Keep the triangles that are sound: no repeated vertex, non-zero area, not a repeat, at most two per edge.
+  const report: TopologyReport = {
+    weldedDuplicates: renderCount - weldedCount,
+    degenerateTriangles: 0,
+    duplicateTriangles: 0,
+    nonManifoldTriangles: 0,
+    isolatedVertices: 0,
+  };
+  const seenTriangles = new Set<string>();
+  const edgeUse = new Map<number, number>();
+  const kept: number[] = [];
+  const P = weldedPositions;
+  for (let t = 0; t + 2 < indices.length; t += 3) {
+    const a = weldOf[indices[t]];
+    const b = weldOf[indices[t + 1]];
+    const c = weldOf[indices[t + 2]];
+    if (a === b || b === c || a === c || triangleArea2(P, a, b, c) === 0) {
+      report.degenerateTriangles++;
+      continue;
+    }
+    const sorted = [a, b, c].sort((p, q) => p - q).join(',');
+    if (seenTriangles.has(sorted)) {
+      report.duplicateTriangles++;
+      continue;
+    }
+    const keys = [pairKey(a, b), pairKey(b, c), pairKey(c, a)];
+    if (keys.some((k) => (edgeUse.get(k) ?? 0) >= 2)) {
+      report.nonManifoldTriangles++;
+      continue;
+    }
+    seenTriangles.add(sorted);
+    for (const k of keys) edgeUse.set(k, (edgeUse.get(k) ?? 0) + 1);
+    kept.push(a, b, c);
+  }
+
+  // 3. Order vertices for memory locality: reverse Cuthill-McKee over the edge graph, component by component.
+  const adjacency = adjacencyLists(weldedCount, kept);
+  const order = reverseCuthillMcKee(adjacency);
+  const simOf = new Uint32Array(weldedCount);
+  order.forEach((w, s) => (simOf[w] = s));
+  const n = weldedCount;
+  const rest = new Float32Array(3 * n);
+  for (let w = 0; w < n; w++) rest.set(weldedPositions.slice(3 * w, 3 * w + 3), 3 * simOf[w]);
+  const triangles = Uint32Array.from(kept, (w) => simOf[w]);
+  const renderToSim = Uint32Array.from(weldOf, (w) => simOf[w]);
+
+  // 4. CSR adjacency in simulation order.
+  const vertexTriangleStart = new Uint32Array(n + 1);
+  for (const v of triangles) vertexTriangleStart[v + 1]++;
+  for (let v = 0; v < n; v++) vertexTriangleStart[v + 1] += vertexTriangleStart[v];
+  const vertexTriangles = new Uint32Array(triangles.length);
+  const fill = vertexTriangleStart.slice(0, n);
+  for (let i = 0; i < triangles.length; i++) vertexTriangles[fill[triangles[i]]++] = Math.floor(i / 3);
+  const simAdjacency: number[][] = Array.from({ length: n }, () => []);
+  for (let w = 0; w < n; w++) simAdjacency[simOf[w]] = adjacency[w].map((u) => simOf[u]).sort((p, q) => p - q);
+  const neighbourStart = new Uint32Array(n + 1);
+  for (let v = 0; v < n; v++) neighbourStart[v + 1] = neighbourStart[v] + simAdjacency[v].length;
+  const neighbours = new Uint32Array(neighbourStart[n]);
+  for (let v = 0; v < n; v++) neighbours.set(simAdjacency[v], neighbourStart[v]);
+  for (let v = 0; v < n; v++) if (neighbourStart[v + 1] === neighbourStart[v]) report.isolatedVertices++;
+
+  // 5. Unique edges, greedily coloured so that no two edges of a colour share a vertex.
+  const { edges, colourStart } = colourEdges(n, simAdjacency);
+  const restLength = new Float32Array(edges.length / 2);
+  for (let e = 0; e < restLength.length; e++) restLength[e] = distance(rest, edges[2 * e], edges[2 * e + 1]);
+
+  const spacing = new Float32Array(n);
+  for (let e = 0; e < restLength.length; e++) {
+    spacing[edges[2 * e]] += restLength[e];
+    spacing[edges[2 * e + 1]] += restLength[e];
+  }
+  for (let v = 0; v < n; v++) {
+    const degree = neighbourStart[v + 1] - neighbourStart[v];
+    spacing[v] = degree > 0 ? spacing[v] / degree : 0;
+  }
+
+  const restNormals = new Float32Array(3 * n);
+  computeNormals(rest, triangles, restNormals);
+  return {
+    vertexCount: n,
+    rest,
+    triangles,
+    renderToSim,
+    edges,
+    restLength,
+    colourStart,
+    vertexTriangleStart,
+    vertexTriangles,
+    neighbourStart,
+    neighbours,
+    restNormals,
+    spacing,
+    size: boundsDiagonal(rest),
+    report,
+  };
+}
+
+/**
+ * Area-weighted vertex normals (thesis 4.3.5, with each face weighted by its area instead of a plain average, so
+ * slivers do not tilt the normal). Writes into `out`; allocates nothing, so it can run every frame.
+ */
+export function computeNormals(positions: Float32Array, triangles: Uint32Array, out: Float32Array): void {
+  out.fill(0);
+  for (let t = 0; t < triangles.length; t += 3) {
+    const a = 3 * triangles[t];
+    const b = 3 * triangles[t + 1];
+    const c = 3 * triangles[t + 2];
+    const ux = positions[b] - positions[a];
+    const uy = positions[b + 1] - positions[a + 1];
+    const uz = positions[b + 2] - positions[a + 2];
+    const vx = positions[c] - positions[a];
+    const vy = positions[c + 1] - positions[a + 1];
+    const vz = positions[c + 2] - positions[a + 2];
+    // The cross product's length is twice the area: summing it weights each face by its area.
+    const nx = uy * vz - uz * vy;
+    const ny = uz * vx - ux * vz;
+    const nz = ux * vy - uy * vx;
+    out[a] += nx;
+    out[a + 1] += ny;
+    out[a + 2] += nz;
+    out[b] += nx;
+    out[b + 1] += ny;
+    out[b + 2] += nz;
+    out[c] += nx;
+    out[c + 1] += ny;
+    out[c + 2] += nz;
+  }
+  for (let i = 0; i < out.length; i += 3) {
+    const len = Math.sqrt(out[i] * out[i] + out[i + 1] * out[i + 1] + out[i + 2] * out[i + 2]);
+    if (len > 0) {
+      out[i] /= len;
+      out[i + 1] /= len;
+      out[i + 2] /= len;
+    } else {
+      out[i + 2] = 1; // an isolated vertex: any unit vector keeps the shading finite
+    }
+  }
+}
+
+const pairKey = (a: number, b: number): number => (a < b ? a * 0x4000000 + b : b * 0x4000000 + a);
+
+function triangleArea2(P: number[], a: number, b: number, c: number): number {
+  const ux = P[3 * b] - P[3 * a];
+  const uy = P[3 * b + 1] - P[3 * a + 1];
+  const uz = P[3 * b + 2] - P[3 * a + 2];
+  const vx = P[3 * c] - P[3 * a];
+  const vy = P[3 * c + 1] - P[3 * a + 1];
+  const vz = P[3 * c + 2] - P[3 * a + 2];
+  return Math.hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
+}
+
+function distance(P: Float32Array, a: number, b: number): number {
+  return Math.hypot(P[3 * a] - P[3 * b], P[3 * a + 1] - P[3 * b + 1], P[3 * a + 2] - P[3 * b + 2]);
+}
+
+function boundsDiagonal(P: Float32Array): number {
+  if (P.length === 0) return 0;
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < P.length; i++) {
+    min[i % 3] = Math.min(min[i % 3], P[i]);
+    max[i % 3] = Math.max(max[i % 3], P[i]);
+  }
+  return Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
+}
+
+function adjacencyLists(n: number, triangles: number[]): number[][] {
+  const sets: Set<number>[] = Array.from({ length: n }, () => new Set());
+  for (let t = 0; t < triangles.length; t += 3) {
+    for (let k = 0; k < 3; k++) {
+      const a = triangles[t + k];
+      const b = triangles[t + ((k + 1) % 3)];
+      sets[a].add(b);
+      sets[b].add(a);
+    }
+  }
+  return sets.map((s) => [...s].sort((p, q) => p - q));
+}
+
+/** Reverse Cuthill-McKee: breadth-first from a low-degree vertex, neighbours by rising degree, then reversed. */
+export function reverseCuthillMcKee(adjacency: number[][]): number[] {
+  const n = adjacency.length;
+  const visited = new Uint8Array(n);
+  const order: number[] = [];
+  const byDegree = Array.from({ length: n }, (_, i) => i).sort((a, b) => adjacency[a].length - adjacency[b].length || a - b);
+  for (const start of byDegree) {
+    if (visited[start]) continue;
+    visited[start] = 1;
+    const queue = [start];
+    for (let head = 0; head < queue.length; head++) {
+      const v = queue[head];
+      order.push(v);
+      const next = adjacency[v].filter((u) => !visited[u]).sort((a, b) => adjacency[a].length - adjacency[b].length || a - b);
+      for (const u of next) {
+        visited[u] = 1;
+        queue.push(u);
+      }
+    }
+  }
+  return order.reverse();
+}
+
+/**
+ * Greedy edge colouring: each edge takes the lowest colour free at both of its ends, so edges of one colour share
+ * no vertex and can be projected in any order (or in parallel) with the same result. At most 2 * degree - 1 colours.
+ */
+function colourEdges(n: number, adjacency: number[][]): { edges: Uint32Array; colourStart: Uint32Array } {
+  const used: Set<number>[] = Array.from({ length: n }, () => new Set());
+  const byColour: number[][] = [];
+  for (let a = 0; a < n; a++) {
+    for (const b of adjacency[a]) {
+      if (b <= a) continue;
+      let c = 0;
+      while (used[a].has(c) || used[b].has(c)) c++;
+      used[a].add(c);
+      used[b].add(c);
+      (byColour[c] ??= []).push(a, b);
+    }
+  }
+  const colourStart = new Uint32Array(byColour.length + 1);
+  byColour.forEach((list, c) => (colourStart[c + 1] = colourStart[c] + list.length / 2));
+  const edges = new Uint32Array(2 * colourStart[byColour.length]);
+  byColour.forEach((list, c) => edges.set(list, 2 * colourStart[c]));
+  return { edges, colourStart };
+}
