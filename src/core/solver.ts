@@ -42,10 +42,10 @@ export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
   positionStiffness: 0.05,
   lengthStiffness: 0.9,
   muscleStiffness: 0.5,
-  wrinkleSpacing: 0.008,
+  wrinkleSpacing: 0.012,
   inwardResistance: 3,
   bulge: 0.2,
-  sleepTolerance: 2e-7,
+  sleepTolerance: 1e-6,
 };
 
 /**
@@ -85,6 +85,17 @@ export function createSolverBuffers(topology: SkinTopology): SolverBuffers {
   };
 }
 
+/** Milliseconds spent in each phase of the last solved frame. */
+export interface FrameTimings {
+  positions: number;
+  muscles: number;
+  lengths: number;
+  bending: number;
+  collisions: number;
+  normals: number;
+  total: number;
+}
+
 /** Counts of each constraint type, as the app's outputs show them. */
 export interface ConstraintCounts {
   position: number;
@@ -114,6 +125,8 @@ export class SkinSolver {
   lastMove = 0;
   /** Frames solved since creation. */
   frames = 0;
+  /** Where the last frame's time went (reused, never reallocated). */
+  readonly timings: FrameTimings = { positions: 0, muscles: 0, lengths: 0, bending: 0, collisions: 0, normals: 0, total: 0 };
 
   constructor(topology: SkinTopology, options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[] } = {}) {
     this.topology = topology;
@@ -228,14 +241,27 @@ export class SkinSolver {
   step(): boolean {
     if (this.asleep) return false;
     const x = this.buffers.positions;
+    const time = this.timings;
+    const start = now();
+    time.positions = time.muscles = time.lengths = time.bending = time.collisions = 0;
     this.previous.set(x);
     const p = this.params;
     for (let it = 0; it < p.positionIterations; it++) {
+      let t0 = now();
       this.projectPositions();
+      let t1 = now();
+      time.positions += t1 - t0;
       this.projectMuscles();
+      t0 = now();
+      time.muscles += t0 - t1;
       for (let l = 0; l < p.lengthIterations; l++) this.projectLengths();
+      t1 = now();
+      time.lengths += t1 - t0;
       this.projectBending();
+      t0 = now();
+      time.bending += t0 - t1;
       this.projectCollisions();
+      time.collisions += now() - t0;
     }
     let move = 0;
     for (let i = 0; i < x.length; i++) {
@@ -244,7 +270,11 @@ export class SkinSolver {
     }
     this.lastMove = move;
     this.frames++;
+    const beforeNormals = now();
     computeNormals(x, this.topology.triangles, this.buffers.normals);
+    const end = now();
+    time.normals = end - beforeNormals;
+    time.total = end - start;
     const changed = this.inputsChanged;
     this.inputsChanged = false;
     if (!changed && move <= p.sleepTolerance * this.topology.size) this.asleep = true;
@@ -462,6 +492,9 @@ export function validateParameters(p: SkinParameters): void {
     if (integer && !Number.isInteger(v)) throw new Error(`skin parameter ${name} must be a whole number, got ${v}`);
   }
 }
+
+/** Milliseconds from a monotonic clock (performance.now exists in browsers, workers and Node). */
+const now = (): number => performance.now();
 
 /** A fixed hash of an integer to [0, 1). */
 function hash01(i: number): number {
