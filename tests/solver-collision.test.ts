@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { archCapsules, colliderDistance, type Collider } from '../src/core/colliders';
+import { archSlabs, colliderDistance, type Collider } from '../src/core/colliders';
 import { SkinSolver } from '../src/core/solver';
 import { buildTopology } from '../src/core/topology';
 import { loadHeadSkin } from './fixtures/head';
@@ -36,23 +36,23 @@ describe('collisions', () => {
     expect(run([eye])).toBeGreaterThan(-1e-5);
   });
 
-  it('builds a capsule chain that follows the dental arch', () => {
-    // A U-shaped arch of points: x = 2 cm sin(a), z = 2 cm cos(a) for a in -90..90 degrees, 6 mm tall.
+  it('builds a thin wall of slabs that follows the dental arch', () => {
+    // A U-shaped row of teeth: x = 2 cm sin(a), z = 2 cm cos(a) for a in -90..90 degrees, 1 cm tall, 2 mm thick.
     const pts: number[] = [];
     for (let i = 0; i <= 40; i++) {
       const a = -Math.PI / 2 + (Math.PI * i) / 40;
-      for (const y of [-0.003, 0.003]) pts.push(0.02 * Math.sin(a), y, 0.02 * Math.cos(a));
+      for (const r of [0.019, 0.021]) for (const y of [-0.005, 0.005]) pts.push(r * Math.sin(a), y, r * Math.cos(a));
     }
-    const capsules = archCapsules('teeth', pts, 6);
-    expect(capsules.length).toBe(6);
+    const slabs = archSlabs('teeth', pts, 8);
+    expect(slabs.length).toBe(8);
     const dir = [0, 0, 0];
-    // Every arch point lies inside or near the chain, and the arch's centre (behind the teeth) well outside it.
-    for (let i = 0; i < pts.length; i += 3) {
-      const d = Math.min(...capsules.map((c) => colliderDistance(c, pts[i], pts[i + 1], pts[i + 2], dir)));
-      expect(d).toBeLessThan(0.003);
-    }
-    const centre = Math.min(...capsules.map((c) => colliderDistance(c, 0, 0, 0.0, dir)));
-    expect(centre).toBeGreaterThan(0.008);
+    const distance = (x: number, y: number, z: number) => Math.min(...slabs.map((c) => colliderDistance(c, x, y, z, dir)));
+    // Every tooth point is enclosed; the wall stays thin (a point 3 mm in front of the incisors is outside it) and
+    // the mouth's middle, behind the teeth, is far outside.
+    for (let i = 0; i < pts.length; i += 3) expect(distance(pts[i], pts[i + 1], pts[i + 2])).toBeLessThanOrEqual(1e-9);
+    expect(distance(0, 0, 0.024)).toBeGreaterThan(0.0005);
+    expect(distance(0, 0, 0)).toBeGreaterThan(0.01);
+    expect(Math.max(...slabs.map((s) => s.radius))).toBeLessThan(0.004);
   });
 
   it('on the head, finds the eyelid skin around each eye as collision candidates', async () => {

@@ -3,11 +3,15 @@
  * no such constraint; a closing lid needs one to slide over the eye instead of passing through it.
  */
 
-/** A sphere, or a capsule when `b` is given (the segment a-b swept by the radius). */
+/**
+ * A sphere around `a`; a capsule when `b` is given (the segment a-b swept by the radius); a slab when `up` is given
+ * too (the rectangle a, b, b + up, a + up swept by the radius, with `up` perpendicular to b - a).
+ */
 export interface Collider {
   name: string;
   a: [number, number, number];
   b?: [number, number, number];
+  up?: [number, number, number];
   radius: number;
 }
 
@@ -26,6 +30,17 @@ export function colliderDistance(c: Collider, x: number, y: number, z: number, o
     px += t * sx;
     py += t * sy;
     pz += t * sz;
+    if (c.up) {
+      const ux = c.up[0];
+      const uy = c.up[1];
+      const uz = c.up[2];
+      const up2 = ux * ux + uy * uy + uz * uz;
+      let u = up2 > 0 ? ((x - c.a[0]) * ux + (y - c.a[1]) * uy + (z - c.a[2]) * uz) / up2 : 0;
+      u = u < 0 ? 0 : u > 1 ? 1 : u;
+      px += u * ux;
+      py += u * uy;
+      pz += u * uz;
+    }
   }
   const dx = x - px;
   const dy = y - py;
@@ -44,22 +59,20 @@ export function colliderDistance(c: Collider, x: number, y: number, z: number, o
 }
 
 /**
- * A chain of capsules along a dental arch: the teeth vertices are binned by their angle about a point behind the
- * incisors, each bin gives a centre and a radius that covers most of its vertices.
+ * A chain of slabs along a row of teeth: the teeth vertices are binned by their angle about a point behind the
+ * incisors; each bin gives a point on the arch and the height of the teeth there, consecutive points a vertical
+ * rectangle, and the radius is the least that encloses every vertex: a thin wall the lips can slide over.
  */
-export function archCapsules(name: string, positions: ArrayLike<number>, segments = 6): Collider[] {
+export function archSlabs(name: string, positions: ArrayLike<number>, segments = 8): Collider[] {
   const n = Math.floor(positions.length / 3);
   if (n < 3) return [];
   let minZ = Infinity;
-  let maxZ = -Infinity;
   let cx = 0;
   for (let i = 0; i < n; i++) {
     minZ = Math.min(minZ, positions[3 * i + 2]);
-    maxZ = Math.max(maxZ, positions[3 * i + 2]);
     cx += positions[3 * i] / n;
   }
-  const pivotZ = minZ; // behind the incisors, at the back of the arch
-  const angle = (i: number): number => Math.atan2(positions[3 * i] - cx, positions[3 * i + 2] - pivotZ);
+  const angle = (i: number): number => Math.atan2(positions[3 * i] - cx, positions[3 * i + 2] - minZ);
   let lo = Infinity;
   let hi = -Infinity;
   for (let i = 0; i < n; i++) {
@@ -67,25 +80,40 @@ export function archCapsules(name: string, positions: ArrayLike<number>, segment
     hi = Math.max(hi, angle(i));
   }
   const bins = segments + 1;
-  const sum = Array.from({ length: bins }, () => [0, 0, 0, 0]);
   const binOf = (i: number): number => Math.min(bins - 1, Math.floor(((angle(i) - lo) / (hi - lo || 1)) * bins));
+  const sum = Array.from({ length: bins }, () => ({ x: 0, z: 0, count: 0, minY: Infinity, maxY: -Infinity }));
   for (let i = 0; i < n; i++) {
     const s = sum[binOf(i)];
-    s[0] += positions[3 * i];
-    s[1] += positions[3 * i + 1];
-    s[2] += positions[3 * i + 2];
-    s[3]++;
+    s.x += positions[3 * i];
+    s.z += positions[3 * i + 2];
+    s.minY = Math.min(s.minY, positions[3 * i + 1]);
+    s.maxY = Math.max(s.maxY, positions[3 * i + 1]);
+    s.count++;
   }
-  const centres = sum.filter((s) => s[3] > 0).map((s) => [s[0] / s[3], s[1] / s[3], s[2] / s[3]] as [number, number, number]);
-  const radius = new Array(centres.length).fill(0);
+  const points = sum.filter((s) => s.count > 0).map((s) => ({ x: s.x / s.count, z: s.z / s.count, minY: s.minY, maxY: s.maxY }));
+  const slabs: Collider[] = [];
+  for (let k = 0; k + 1 < points.length; k++) {
+    const p = points[k];
+    const q = points[k + 1];
+    const bottom = Math.min(p.minY, q.minY);
+    const top = Math.max(p.maxY, q.maxY);
+    slabs.push({ name: `${name}-${k}`, a: [p.x, bottom, p.z], b: [q.x, bottom, q.z], up: [0, top - bottom, 0], radius: 0 });
+  }
+  // Each slab's radius: the farthest of its own vertices (those nearest to its rectangle) from the rectangle.
+  const dir = [0, 0, 0];
+  const radius = new Array(slabs.length).fill(0);
   for (let i = 0; i < n; i++) {
-    const b = Math.min(centres.length - 1, binOf(i));
-    const c = centres[b];
-    radius[b] = Math.max(radius[b], Math.hypot(positions[3 * i] - c[0], positions[3 * i + 1] - c[1], positions[3 * i + 2] - c[2]));
+    let best = 0;
+    let bestD = Infinity;
+    for (let k = 0; k < slabs.length; k++) {
+      const d = colliderDistance(slabs[k], positions[3 * i], positions[3 * i + 1], positions[3 * i + 2], dir);
+      if (d < bestD) {
+        bestD = d;
+        best = k;
+      }
+    }
+    radius[best] = Math.max(radius[best], bestD);
   }
-  const out: Collider[] = [];
-  for (let k = 0; k + 1 < centres.length; k++) {
-    out.push({ name: `${name}-${k}`, a: centres[k], b: centres[k + 1], radius: 0.8 * Math.max(radius[k], radius[k + 1]) });
-  }
-  return out;
+  slabs.forEach((slab, k) => (slab.radius = radius[k]));
+  return slabs;
 }

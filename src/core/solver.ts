@@ -55,6 +55,12 @@ export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
  */
 export const BENDING_CALIBRATION = 6;
 
+/**
+ * Skin closer than this to a collider at rest (metres) is checked against it: the lids over the eyes, the lips over
+ * the teeth. Farther skin does not reach it in an expression, and checking it would only cost time.
+ */
+export const COLLISION_BAND = 0.006;
+
 /** Typed arrays the solver reads and writes; pass them to place them in shared memory. */
 export interface SolverBuffers {
   /** Current positions, xyz per simulation vertex. */
@@ -448,25 +454,35 @@ export class SkinSolver {
     }
   }
 
+  /** Each vertex within COLLISION_BAND of a collider at rest, outside it, is checked against the nearest one. */
   private collisionCandidates(colliders: Collider[]): { start: Uint32Array; vertices: Uint32Array; clearance: Float32Array } {
     const X = this.topology.rest;
     const n = this.topology.vertexCount;
+    const nearest = new Int32Array(n).fill(-1);
+    const distance = new Float32Array(n).fill(Infinity);
+    const dir = [0, 0, 0];
+    colliders.forEach((c, ci) => {
+      for (let v = 0; v < n; v++) {
+        const d = colliderDistance(c, X[3 * v], X[3 * v + 1], X[3 * v + 2], dir);
+        if (d < distance[v]) {
+          distance[v] = d;
+          nearest[v] = ci;
+        }
+      }
+    });
     const start = new Uint32Array(colliders.length + 1);
     const vertices: number[] = [];
     const clearance: number[] = [];
-    const dir = [0, 0, 0];
-    colliders.forEach((c, ci) => {
-      // Skin within a band around the shape at rest is what can reach it during an expression.
-      const band = Math.max(c.radius, 0.01);
+    for (let ci = 0; ci < colliders.length; ci++) {
       for (let v = 0; v < n; v++) {
-        const d = colliderDistance(c, X[3 * v], X[3 * v + 1], X[3 * v + 2], dir);
-        if (d >= 0 && d < band) {
+        // Skin inside a collider at rest (the eye socket's lining behind the eyeball) is left alone.
+        if (nearest[v] === ci && distance[v] >= 0 && distance[v] < COLLISION_BAND) {
           vertices.push(v);
-          clearance.push(Math.min(d, 0.001));
+          clearance.push(Math.min(distance[v], 0.001));
         }
       }
       start[ci + 1] = vertices.length;
-    });
+    }
     return { start, vertices: Uint32Array.from(vertices), clearance: Float32Array.from(clearance) };
   }
 }

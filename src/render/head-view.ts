@@ -24,6 +24,9 @@ export interface HeadViewOptions {
   maxPixelRatio: number;
 }
 
+/** Work done before each rendered frame; `now` is the frame's timestamp in ms. */
+export type FrameHook = (now: number) => void;
+
 /** Where the key light comes from: above, in front, from the subject's left. */
 const KEY_DIRECTION = new Vector3(0.55, 0.65, 1.0);
 
@@ -39,6 +42,7 @@ export class HeadView {
   readonly key: DirectionalLight;
   private head: HeadModel | undefined;
   private frame = 0;
+  private readonly frameHooks: FrameHook[] = [];
   private readonly resizeObserver: ResizeObserver;
 
   constructor(
@@ -84,20 +88,31 @@ export class HeadView {
     this.frame_(head);
   }
 
+  /** Runs `hook` before each rendered frame (until the returned function is called). It must not wait for anything. */
+  onFrame(hook: FrameHook): () => void {
+    this.frameHooks.push(hook);
+    return () => {
+      const i = this.frameHooks.indexOf(hook);
+      if (i >= 0) this.frameHooks.splice(i, 1);
+    };
+  }
+
   /** Starts the render loop. */
   start(): void {
-    const loop = (): void => {
+    const loop = (now: number): void => {
       this.frame = requestAnimationFrame(loop);
+      for (let i = 0; i < this.frameHooks.length; i++) this.frameHooks[i](now);
       this.controls.update();
       this.renderer.render(this.scene, this.camera);
     };
-    if (!this.frame) loop();
+    if (!this.frame) loop(performance.now());
   }
 
   /** Stops rendering and frees the GPU resources and listeners. */
   dispose(): void {
     cancelAnimationFrame(this.frame);
     this.frame = 0;
+    this.frameHooks.length = 0;
     this.resizeObserver.disconnect();
     this.controls.dispose();
     this.scene.environment?.dispose();

@@ -1,0 +1,16 @@
+import type { FrameSlot } from './layout';
+import type { SolverMode } from './protocol';
+
+/** How SkinSimulation reaches a solver: where it runs, how inputs get there and how frames come back. */
+export interface SolverBackend {
+  readonly mode: SolverMode;
+  /** The newest complete frame; the same object until a newer frame arrives. Allocates nothing. */
+  latest(): FrameSlot;
+  /** Delivers a published input batch (`transfer` mode sends it; the other modes read the control block). */
+  publish(seq: number, muscles: boolean, parameters: boolean): void;
+  /** Solves on the calling thread for up to `budgetMs` (`main` mode); the worker modes do nothing here. */
+  advance(budgetMs: number): void;
+  /** Why the solver stopped, if it failed. */
+  failure(): Error | undefined;
+  dispose(): void;
+}

@@ -1,0 +1,138 @@
+import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from '../core/solver';
+import {
+  CONTROL_INPUT_SEQ,
+  CONTROL_MUSCLE_REVISION,
+  CONTROL_PARAMETER_REVISION,
+  PARAMETER_INDEX,
+  readParameters,
+  writeParameters,
+  type ControlViews,
+} from './layout';
+
+/** Called once per published batch: its sequence number and which parts changed. */
+export type PublishInputs = (seq: number, muscles: boolean, parameters: boolean) => void;
+
+/**
+ * The main thread's side of the control block: checks every input at the boundary (a bad one throws and changes
+ * nothing), writes it, and publishes all inputs given in one task as one batch, so that in every mode they reach
+ * the solver together, before the same frame.
+ */
+export class InputStaging {
+  private open = false;
+  private musclesChanged = false;
+  private parametersChanged = false;
+  private readonly current: SkinParameters;
+  private readonly flushSoon = (): void => this.flush();
+
+  constructor(
+    private readonly control: ControlViews,
+    private readonly rest: Float32Array,
+    private readonly onPublish: PublishInputs,
+  ) {
+    this.current = readParameters(control.parameters, { ...SKIN_DEFAULTS });
+  }
+
+  /**
+   * Sets muscle targets (xyz per vertex) for some simulation vertices, all with one weight along the surface and one
+   * along the normal (both 0 release them; see SolverBuffers).
+   */
+  setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
+    const n = this.control.weights.length;
+    if (!isArrayLike(vertices) || !isArrayLike(targets)) throw new Error('setMuscleTargets: vertices and targets must be arrays of numbers');
+    if (targets.length !== 3 * vertices.length) {
+      throw new Error(`setMuscleTargets: ${vertices.length} vertices need ${3 * vertices.length} target coordinates, got ${targets.length}`);
+    }
+    if (typeof weight !== 'number' || !Number.isFinite(weight) || weight < 0 || weight > 1) {
+      throw new Error(`setMuscleTargets: weight must be a finite number from 0 to 1, got ${weight}`);
+    }
+    if (typeof normalWeight !== 'number' || !Number.isFinite(normalWeight) || normalWeight < 0 || normalWeight > 1) {
+      throw new Error(`setMuscleTargets: normal weight must be a finite number from 0 to 1, got ${normalWeight}`);
+    }
+    for (let i = 0; i < vertices.length; i++) {
+      const v = vertices[i];
+      if (!Number.isInteger(v) || v < 0 || v >= n) throw new Error(`setMuscleTargets: vertex ${i} is ${v}, not one of the ${n} skin vertices`);
+      for (let k = 0; k < 3; k++) {
+        const t = targets[3 * i + k];
+        if (typeof t !== 'number' || !Number.isFinite(t)) {
+          throw new Error(`setMuscleTargets: the target of vertex ${v} (entry ${i}) has a non-finite ${'xyz'[k]} coordinate: ${t}`);
+        }
+      }
+    }
+    this.begin();
+    const { targets: T, weights: W, normalWeights: WN } = this.control;
+    for (let i = 0; i < vertices.length; i++) {
+      const v = vertices[i];
+      T[3 * v] = targets[3 * i];
+      T[3 * v + 1] = targets[3 * i + 1];
+      T[3 * v + 2] = targets[3 * i + 2];
+      W[v] = weight;
+      WN[v] = normalWeight;
+    }
+    this.touchMuscles();
+  }
+
+  /** Releases every muscle pull. */
+  clearMuscleTargets(): void {
+    this.begin();
+    this.control.targets.set(this.rest);
+    this.control.weights.fill(0);
+    this.control.normalWeights.fill(0);
+    this.touchMuscles();
+  }
+
+  /** Changes some skin parameters; throws, changing nothing, if one is unknown or not a finite number in range. */
+  setParameters(partial: Partial<SkinParameters>): void {
+    if (typeof partial !== 'object' || partial === null) throw new Error(`skin parameters must be an object, got ${partial}`);
+    for (const name of Object.keys(partial)) {
+      if (!(name in PARAMETER_INDEX)) throw new Error(`unknown skin parameter "${name}" (known: ${Object.keys(PARAMETER_INDEX).join(', ')})`);
+    }
+    const next = { ...this.current, ...partial };
+    validateParameters(next);
+    this.begin();
+    Object.assign(this.current, next);
+    writeParameters(this.current, this.control.parameters);
+    Atomics.add(this.control.words, CONTROL_PARAMETER_REVISION, 1);
+    this.parametersChanged = true;
+  }
+
+  /** The parameters as last set (a copy). */
+  parameters(): SkinParameters {
+    return { ...this.current };
+  }
+
+  /** The sequence number of the newest published batch. */
+  publishedSeq(): number {
+    const seq = Atomics.load(this.control.words, CONTROL_INPUT_SEQ);
+    return this.open ? seq - 1 : seq;
+  }
+
+  /** Publishes the batch being written now instead of at the end of the task (settle() waits for every input). */
+  flush(): void {
+    if (!this.open) return;
+    this.open = false;
+    const seq = Atomics.add(this.control.words, CONTROL_INPUT_SEQ, 1) + 1;
+    Atomics.notify(this.control.words, CONTROL_INPUT_SEQ);
+    const muscles = this.musclesChanged;
+    const parameters = this.parametersChanged;
+    this.musclesChanged = false;
+    this.parametersChanged = false;
+    this.onPublish(seq, muscles, parameters);
+  }
+
+  /** Opens a batch: the odd sequence number tells the solver not to read the inputs until the batch is published. */
+  private begin(): void {
+    if (this.open) return;
+    this.open = true;
+    Atomics.add(this.control.words, CONTROL_INPUT_SEQ, 1);
+    queueMicrotask(this.flushSoon);
+  }
+
+  private touchMuscles(): void {
+    Atomics.add(this.control.words, CONTROL_MUSCLE_REVISION, 1);
+    this.musclesChanged = true;
+  }
+}
+
+function isArrayLike(a: unknown): a is ArrayLike<number> {
+  return Array.isArray(a) || ArrayBuffer.isView(a);
+}

@@ -1,0 +1,50 @@
+import type { SolverBackend } from './backend';
+import { ControlReader } from './control-reader';
+import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
+import type { SolverHost } from './solver-host';
+
+/**
+ * `main` mode: the same solver host on the main thread, stepped from the render loop within a time budget. Inputs go
+ * through a control block as in `shared` mode, so batches reach the solver at the same point.
+ */
+export class MainBackend implements SolverBackend {
+  readonly mode = 'main';
+  private readonly reader: ControlReader;
+  private readonly slot: FrameSlot;
+
+  constructor(
+    private readonly host: SolverHost,
+    control: ControlViews,
+    layout: SlotLayout,
+  ) {
+    this.reader = new ControlReader(control, host);
+    this.slot = frameSlot(new ArrayBuffer(4 * layout.words), 0, layout);
+    host.writeFrame(this.slot);
+  }
+
+  latest(): FrameSlot {
+    return this.slot;
+  }
+
+  publish(): void {
+    // advance() reads the control block.
+  }
+
+  /** Applies new inputs, then solves frames until the budget is spent or the skin sleeps; at least one if awake. */
+  advance(budgetMs: number): void {
+    this.reader.poll();
+    const start = performance.now();
+    let solved = false;
+    while (this.host.step()) {
+      solved = true;
+      if (performance.now() - start >= budgetMs) break;
+    }
+    if (solved) this.host.writeFrame(this.slot);
+  }
+
+  failure(): Error | undefined {
+    return undefined;
+  }
+
+  dispose(): void {}
+}

@@ -1,0 +1,56 @@
+/** Messages between SkinSimulation (main thread) and the skin worker. */
+import type { Collider } from '../core/colliders';
+import type { SkinParameters } from '../core/solver';
+
+/** How the solver runs: in a worker on shared memory, in a worker with transferred buffers, or on the main thread. */
+export type SolverMode = 'shared' | 'transfer' | 'main';
+export type WorkerMode = Exclude<SolverMode, 'main'>;
+
+/** Main to worker, first: the skin's render mesh, its colliders and the starting parameters. */
+export interface InitMessage {
+  type: 'init';
+  mode: WorkerMode;
+  renderPositions: Float32Array;
+  indices: Uint16Array | Uint32Array;
+  colliders: Collider[];
+  parameters: SkinParameters;
+}
+
+/** Worker to main, once the topology is built and the first frame (the rest shape) is written. */
+export interface ReadyMessage {
+  type: 'ready';
+  vertexCount: number;
+  edgeCount: number;
+  rest: Float32Array;
+  triangles: Uint32Array;
+  /** `shared` mode: the control and output blocks. */
+  control?: SharedArrayBuffer;
+  output?: SharedArrayBuffer;
+  /** `transfer` mode: the first frame's slot. */
+  frame?: ArrayBuffer;
+}
+
+/** Main to worker (`transfer` mode): one published input batch; absent parts did not change. */
+export interface InputsMessage {
+  type: 'inputs';
+  seq: number;
+  targets?: Float32Array;
+  weights?: Float32Array;
+  normalWeights?: Float32Array;
+  parameters?: Float64Array;
+}
+
+/** Worker to main (`transfer` mode): a solved frame's slot. Main to worker: a slot it no longer needs. */
+export interface FrameMessage {
+  type: 'frame' | 'frame-buffer';
+  buffer: ArrayBuffer;
+}
+
+/** Worker to main: the solver failed. */
+export interface ErrorMessage {
+  type: 'error';
+  message: string;
+}
+
+export type ToWorker = InitMessage | InputsMessage | FrameMessage;
+export type FromWorker = ReadyMessage | FrameMessage | ErrorMessage;

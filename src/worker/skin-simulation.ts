@@ -1,0 +1,228 @@
+import type { Collider } from '../core/colliders';
+import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../core/solver';
+import type { SolverBackend } from './backend';
+import { InputStaging } from './input-staging';
+import {
+  controlLayout,
+  controlViews,
+  initControl,
+  readSlotBounds,
+  slotAppliedInput,
+  slotConstraints,
+  slotFrames,
+  slotLayout,
+  slotSleeping,
+  slotSolveMs,
+  type ControlViews,
+} from './layout';
+import { MainBackend } from './main-backend';
+import type { SolverMode } from './protocol';
+import { SharedBackend } from './shared-backend';
+import { SolverHost } from './solver-host';
+import { TransferBackend } from './transfer-backend';
+import { WorkerConnection } from './worker-connection';
+
+/** What the simulation is built from. */
+export interface SkinSimulationOptions {
+  /** The skin's render mesh in head space: xyz per render vertex, and its triangles. */
+  renderPositions: Float32Array;
+  indices: Uint16Array | Uint32Array;
+  colliders?: Collider[];
+  parameters?: Partial<SkinParameters>;
+  /** Defaults to `shared` on cross-origin isolated pages and `transfer` elsewhere. */
+  mode?: SolverMode;
+}
+
+/** The simulation's state, as of the newest frame. */
+export interface SkinSimulationStats {
+  mode: SolverMode;
+  vertices: number;
+  edges: number;
+  constraints: ConstraintCounts;
+  /** Time the last solved frame took, in ms. */
+  solveMs: number;
+  sleeping: boolean;
+  /** Frames solved so far. */
+  frames: number;
+}
+
+/** Solve time the render loop gives the `main` mode solver per frame, in ms. */
+export const MAIN_THREAD_BUDGET_MS = 8;
+const SETTLE_POLL_MS = 8;
+
+/**
+ * The skin simulation as the main thread sees it, whichever mode runs the solver: inputs in, newest complete frame
+ * out, never waiting for the solver.
+ */
+export class SkinSimulation {
+  /** Bounds of the frame last read by readFrame: min xyz, max xyz. */
+  readonly bounds = new Float32Array(6);
+  private readonly staging: InputStaging;
+  private readFrames = -1;
+  private disposed = false;
+
+  private constructor(
+    private readonly backend: SolverBackend,
+    control: ControlViews,
+    /** Rest positions, xyz per simulation vertex. */
+    readonly rest: Float32Array,
+    /** Triangles over simulation vertices. */
+    readonly triangles: Uint32Array,
+    readonly edgeCount: number,
+    readonly renderVertexCount: number,
+  ) {
+    this.staging = new InputStaging(control, rest, (seq, muscles, parameters) => backend.publish(seq, muscles, parameters));
+  }
+
+  /** Builds the skin's topology and solver (in a worker unless `mode` is `main`) and resolves once it is running. */
+  static async create(options: SkinSimulationOptions): Promise<SkinSimulation> {
+    const parameters = { ...SKIN_DEFAULTS, ...options.parameters };
+    validateParameters(parameters);
+    const mode = options.mode ?? (crossOriginIsolated ? 'shared' : 'transfer');
+    if (mode === 'shared' && typeof SharedArrayBuffer === 'undefined') throw new Error("solver mode 'shared' needs a cross-origin isolated page");
+    const renderCount = options.renderPositions.length / 3;
+    const colliders = options.colliders ?? [];
+    if (mode === 'main') {
+      const host = new SolverHost({ renderPositions: options.renderPositions, indices: options.indices, colliders, parameters });
+      const t = host.topology;
+      const control = controlViews(new ArrayBuffer(controlLayout(t.vertexCount).byteLength), controlLayout(t.vertexCount));
+      initControl(control, t.rest, parameters);
+      const backend = new MainBackend(host, control, slotLayout(renderCount, t.vertexCount));
+      return new SkinSimulation(backend, control, t.rest.slice(), t.triangles.slice(), t.restLength.length, renderCount);
+    }
+    const { connection, ready } = await WorkerConnection.start({
+      type: 'init',
+      mode,
+      renderPositions: options.renderPositions,
+      indices: options.indices,
+      colliders,
+      parameters,
+    });
+    const layout = slotLayout(renderCount, ready.vertexCount);
+    const cLayout = controlLayout(ready.vertexCount);
+    if (mode === 'shared') {
+      const backend = new SharedBackend(connection, ready.output!, layout);
+      return new SkinSimulation(backend, controlViews(ready.control!, cLayout), ready.rest, ready.triangles, ready.edgeCount, renderCount);
+    }
+    const control = controlViews(new ArrayBuffer(cLayout.byteLength), cLayout);
+    initControl(control, ready.rest, parameters);
+    const backend = new TransferBackend(connection, control, ready.frame!, layout);
+    return new SkinSimulation(backend, control, ready.rest, ready.triangles, ready.edgeCount, renderCount);
+  }
+
+  get mode(): SolverMode {
+    return this.backend.mode;
+  }
+
+  get vertexCount(): number {
+    return this.rest.length / 3;
+  }
+
+  /**
+   * Pulls some simulation vertices toward targets (xyz each) with a weight from 0 to 1 along the surface and one along
+   * the normal (both 0 release them); other vertices keep theirs. Throws, changing nothing, on a bad vertex, a
+   * non-finite target or a bad weight.
+   */
+  setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
+    this.checkAlive();
+    this.staging.setMuscleTargets(vertices, targets, weight, normalWeight);
+  }
+
+  /** Releases every muscle pull. */
+  clearMuscleTargets(): void {
+    this.checkAlive();
+    this.staging.clearMuscleTargets();
+  }
+
+  /** Changes some skin parameters; throws, changing nothing, if one is unknown or not a finite number in range. */
+  setParameters(partial: Partial<SkinParameters>): void {
+    this.checkAlive();
+    this.staging.setParameters(partial);
+  }
+
+  /** The parameters as last set (a copy). */
+  parameters(): SkinParameters {
+    return this.staging.parameters();
+  }
+
+  /**
+   * Resolves once the solver has applied every input given so far and sleeps (its shape has converged). Rejects if
+   * the solver fails, or after `timeoutMs`.
+   */
+  async settle(timeoutMs = Infinity): Promise<void> {
+    this.checkAlive();
+    this.staging.flush();
+    const seq = this.staging.publishedSeq();
+    const start = performance.now();
+    for (;;) {
+      this.checkAlive();
+      const failure = this.backend.failure();
+      if (failure) throw failure;
+      const slot = this.backend.latest();
+      if (slotAppliedInput(slot) >= seq && slotSleeping(slot)) return;
+      if (performance.now() - start > timeoutMs) {
+        throw new Error(`the skin did not settle within ${timeoutMs} ms (${slotFrames(slot)} frames solved, last in ${slotSolveMs(slot).toFixed(1)} ms)`);
+      }
+      // In `main` mode nothing else may be stepping the solver (a hidden page gets no animation frames).
+      this.backend.advance(MAIN_THREAD_BUDGET_MS);
+      await new Promise((resolve) => setTimeout(resolve, SETTLE_POLL_MS));
+    }
+  }
+
+  /** Gives the `main` mode solver up to `budgetMs` of this frame; the worker modes need nothing. */
+  advance(budgetMs = MAIN_THREAD_BUDGET_MS): void {
+    if (!this.disposed) this.backend.advance(budgetMs);
+  }
+
+  /**
+   * Copies the newest complete frame in render-vertex order (xyz per render vertex) and its bounds into `bounds`.
+   * Returns false, copying nothing, if that frame was read already. Allocates nothing.
+   */
+  readFrame(intoPositions: Float32Array, intoNormals: Float32Array): boolean {
+    if (this.disposed) return false;
+    const slot = this.backend.latest();
+    const frames = slotFrames(slot);
+    if (frames === this.readFrames) return false;
+    if (intoPositions.length !== slot.renderPositions.length || intoNormals.length !== slot.renderNormals.length) {
+      throw new Error(`readFrame needs arrays of ${slot.renderPositions.length} floats (3 per render vertex)`);
+    }
+    intoPositions.set(slot.renderPositions);
+    intoNormals.set(slot.renderNormals);
+    readSlotBounds(slot, this.bounds);
+    this.readFrames = frames;
+    return true;
+  }
+
+  /** Copies the newest complete frame in simulation-vertex order (the order of `rest`). Allocates nothing. */
+  readSimulation(intoPositions: Float32Array, intoNormals: Float32Array): void {
+    this.checkAlive();
+    const slot = this.backend.latest();
+    intoPositions.set(slot.positions);
+    intoNormals.set(slot.normals);
+  }
+
+  stats(): SkinSimulationStats {
+    this.checkAlive();
+    const slot = this.backend.latest();
+    return {
+      mode: this.mode,
+      vertices: this.vertexCount,
+      edges: this.edgeCount,
+      constraints: slotConstraints(slot),
+      solveMs: slotSolveMs(slot),
+      sleeping: slotSleeping(slot),
+      frames: slotFrames(slot),
+    };
+  }
+
+  /** Stops the solver (terminating its worker) and removes every listener. */
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.backend.dispose();
+  }
+
+  private checkAlive(): void {
+    if (this.disposed) throw new Error('the skin simulation was disposed');
+  }
+}

@@ -1,0 +1,98 @@
+/**
+ * The skin worker: builds the topology and the solver, then solves a frame whenever the skin is awake and waits for
+ * inputs while it sleeps. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
+ * gets inputs as messages and passes two frame buffers back and forth.
+ */
+import { ControlReader } from './control-reader';
+import { controlLayout, controlViews, initControl, slotLayout } from './layout';
+import type { FromWorker, InitMessage, ToWorker } from './protocol';
+import { SharedOutput } from './shared-output';
+import { SolverHost } from './solver-host';
+import { TransferOutput } from './transfer-output';
+
+const scope = self as unknown as DedicatedWorkerGlobalScope;
+
+let host: SolverHost | undefined;
+/** `shared` mode. */
+let reader: ControlReader | undefined;
+let sharedOutput: SharedOutput | undefined;
+/** `transfer` mode. */
+let transferOutput: TransferOutput | undefined;
+
+// Each frame is its own task (posted through a channel, which unlike setTimeout is not clamped), so messages are
+// handled between frames.
+const channel = new MessageChannel();
+let scheduled = false;
+channel.port1.onmessage = tick;
+
+scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
+  const m = event.data;
+  try {
+    if (m.type === 'init') init(m);
+    else if (m.type === 'inputs') {
+      const muscles = m.targets && m.weights && m.normalWeights ? { targets: m.targets, weights: m.weights, normalWeights: m.normalWeights } : null;
+      host?.apply(m.seq, muscles, m.parameters ?? null);
+      schedule();
+    } else if (m.type === 'frame-buffer') transferOutput?.giveBack(m.buffer);
+  } catch (error) {
+    fail(error);
+  }
+});
+
+function init(m: InitMessage): void {
+  const h = new SolverHost(m);
+  const topology = h.topology;
+  const rest = topology.rest.slice();
+  const triangles = topology.triangles.slice();
+  const base = { type: 'ready', vertexCount: topology.vertexCount, edgeCount: topology.restLength.length, rest, triangles } as const;
+  const layout = slotLayout(m.renderPositions.length / 3, topology.vertexCount);
+  host = h;
+  if (m.mode === 'shared') {
+    const control = new SharedArrayBuffer(controlLayout(topology.vertexCount).byteLength);
+    const views = controlViews(control, controlLayout(topology.vertexCount));
+    initControl(views, topology.rest, m.parameters);
+    reader = new ControlReader(views, h);
+    sharedOutput = new SharedOutput(layout);
+    sharedOutput.publish(h);
+    post({ ...base, control, output: sharedOutput.buffer }, [rest.buffer, triangles.buffer]);
+  } else {
+    transferOutput = new TransferOutput(layout, h, (buffer) => post({ type: 'frame', buffer }, [buffer]));
+    const frame = transferOutput.first();
+    post({ ...base, frame }, [rest.buffer, triangles.buffer, frame]);
+  }
+  schedule();
+}
+
+function schedule(): void {
+  if (scheduled || !host) return;
+  scheduled = true;
+  channel.port2.postMessage(null);
+}
+
+/** One turn: apply new inputs, solve a frame if awake and publish it, else wait for inputs. */
+function tick(): void {
+  scheduled = false;
+  if (!host) return;
+  try {
+    reader?.poll();
+    if (host.step()) {
+      sharedOutput?.publish(host);
+      transferOutput?.publish();
+      schedule();
+    } else {
+      // `transfer` mode: the next inputs message schedules the next turn.
+      reader?.waitForInput(schedule);
+    }
+  } catch (error) {
+    fail(error);
+  }
+}
+
+function fail(error: unknown): void {
+  host = undefined;
+  post({ type: 'error', message: error instanceof Error ? error.message : String(error) });
+}
+
+function post(message: FromWorker, transfer: Transferable[] = []): void {
+  scope.postMessage(message, { transfer });
+}

@@ -1,0 +1,94 @@
+import type { Collider } from '../core/colliders';
+import { SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
+import { buildTopology, type SkinTopology } from '../core/topology';
+import { CONSTRAINT_INDEX, CONSTRAINT_KINDS, readParameters, writeFrameHeader, writeSlotBounds, type FrameHeader, type FrameSlot } from './layout';
+
+/** What a solver host is built from: the skin's render mesh (head space), the colliders and the parameters. */
+export interface SolverHostInput {
+  renderPositions: Float32Array;
+  indices: Uint16Array | Uint32Array;
+  colliders: Collider[];
+  parameters: SkinParameters;
+}
+
+/** The muscle inputs of a batch: targets (xyz per vertex) and the two weights per vertex. */
+export interface MuscleInput {
+  targets: Float32Array;
+  weights: Float32Array;
+  normalWeights: Float32Array;
+}
+
+/** Frames the host may spend settling the rest shape before it counts as ready. */
+const MAX_SETTLING_FRAMES = 64;
+
+/**
+ * Owns a SkinSolver wherever it runs (worker or main thread): applies published input batches between frames, steps,
+ * and writes frames into output slots. Every mode goes through this one class, so every mode solves alike.
+ */
+export class SolverHost {
+  readonly topology: SkinTopology;
+  readonly solver: SkinSolver;
+  private readonly header: FrameHeader = { frames: 0, sleeping: true, appliedInput: 0, solveMs: 0 };
+  /** Constraint counts change only when inputs do, so they are counted per input batch, not per frame. */
+  private readonly constraints = new Int32Array(CONSTRAINT_KINDS.length);
+  private readonly parameterScratch: SkinParameters = { ...SKIN_DEFAULTS };
+
+  constructor(input: SolverHostInput) {
+    this.topology = buildTopology(input.renderPositions, input.indices);
+    this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders });
+    // Start from the skin's own equilibrium (the float32 rest lengths move it by a hair), so that every mode starts
+    // from the same sleeping shape however many frames pass before the first input arrives.
+    for (let i = 0; i < MAX_SETTLING_FRAMES && this.step(); i++);
+    this.countConstraints();
+  }
+
+  /** Applies one input batch (null parts did not change), as of input sequence number `seq`. */
+  apply(seq: number, muscles: MuscleInput | null, parameters: Float64Array | null): void {
+    if (muscles) {
+      this.solver.buffers.targets.set(muscles.targets);
+      this.solver.buffers.weights.set(muscles.weights);
+      this.solver.buffers.normalWeights.set(muscles.normalWeights);
+      this.solver.updateMuscles();
+    }
+    if (parameters) this.solver.setParameters(readParameters(parameters, this.parameterScratch));
+    this.header.appliedInput = seq;
+    this.countConstraints();
+  }
+
+  /** Solves one frame unless the solver sleeps; returns whether it solved. */
+  step(): boolean {
+    const start = performance.now();
+    if (!this.solver.step()) return false;
+    this.header.solveMs = performance.now() - start;
+    return true;
+  }
+
+  /** Writes the current shape into a slot: render-order and simulation-order vertices, bounds and header. */
+  writeFrame(slot: FrameSlot): void {
+    const { positions, normals } = this.solver.buffers;
+    const renderToSim = this.topology.renderToSim;
+    const rp = slot.renderPositions;
+    const rn = slot.renderNormals;
+    for (let r = 0; r < renderToSim.length; r++) {
+      const s = 3 * renderToSim[r];
+      const o = 3 * r;
+      rp[o] = positions[s];
+      rp[o + 1] = positions[s + 1];
+      rp[o + 2] = positions[s + 2];
+      rn[o] = normals[s];
+      rn[o + 1] = normals[s + 1];
+      rn[o + 2] = normals[s + 2];
+    }
+    slot.positions.set(positions);
+    slot.normals.set(normals);
+    writeSlotBounds(slot, positions);
+    this.header.frames = this.solver.frames;
+    this.header.sleeping = this.solver.sleeping;
+    writeFrameHeader(slot, this.header, this.constraints);
+  }
+
+  private countConstraints(): void {
+    const counts = this.solver.counts();
+    for (const kind of CONSTRAINT_KINDS) this.constraints[CONSTRAINT_INDEX[kind]] = counts[kind];
+  }
+}

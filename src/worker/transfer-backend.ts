@@ -1,0 +1,51 @@
+import type { SolverBackend } from './backend';
+import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
+import type { WorkerConnection } from './worker-connection';
+
+/**
+ * `transfer` mode, main thread side (pages that are not cross-origin isolated have no SharedArrayBuffer): input
+ * batches go to the worker as messages, and each frame arrives in a buffer that goes back once a newer one is here.
+ */
+export class TransferBackend implements SolverBackend {
+  readonly mode = 'transfer';
+  private current: FrameSlot;
+
+  constructor(
+    private readonly connection: WorkerConnection,
+    private readonly control: ControlViews,
+    firstFrame: ArrayBuffer,
+    private readonly layout: SlotLayout,
+  ) {
+    this.current = frameSlot(firstFrame, 0, layout);
+    connection.onFrame = (buffer) => this.receive(buffer);
+  }
+
+  latest(): FrameSlot {
+    return this.current;
+  }
+
+  publish(seq: number, muscles: boolean, parameters: boolean): void {
+    const targets = muscles ? this.control.targets.slice() : undefined;
+    const weights = muscles ? this.control.weights.slice() : undefined;
+    const normalWeights = muscles ? this.control.normalWeights.slice() : undefined;
+    const params = parameters ? this.control.parameters.slice() : undefined;
+    const transfer = [targets?.buffer, weights?.buffer, normalWeights?.buffer, params?.buffer].filter((b): b is ArrayBuffer => b !== undefined);
+    this.connection.post({ type: 'inputs', seq, targets, weights, normalWeights, parameters: params }, transfer);
+  }
+
+  advance(): void {}
+
+  failure(): Error | undefined {
+    return this.connection.failure();
+  }
+
+  dispose(): void {
+    this.connection.dispose();
+  }
+
+  private receive(buffer: ArrayBuffer): void {
+    const previous = this.current.buffer as ArrayBuffer;
+    this.current = frameSlot(buffer, 0, this.layout);
+    this.connection.post({ type: 'frame-buffer', buffer: previous }, [previous]);
+  }
+}
