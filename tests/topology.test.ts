@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { buildTopology, computeNormals } from '../src/core/topology';
+import { buildTopology, computeNormals, describeTopology } from '../src/core/topology';
 import { triangleGrid } from './fixtures/grids';
 
 /** A 3 x 3 grid split into two UV islands along its middle column: the seam vertices appear twice. */
@@ -110,6 +110,9 @@ describe('skin topology', () => {
     expect(t.report).toMatchObject({ degenerateTriangles: 1, duplicateTriangles: 1, nonManifoldTriangles: 1, isolatedVertices: 2 });
     expect(t.triangles.length).toBe(g.indices.length);
     for (const x of t.restNormals) expect(Number.isFinite(x)).toBe(true);
+    expect(describeTopology(t)).toContain(
+      'skipped: 1 degenerate triangles, 1 duplicate triangles, 1 triangles on non-manifold edges, 2 isolated vertices (kept still)',
+    );
   });
 
   it('names a non-finite coordinate or an index out of range', () => {

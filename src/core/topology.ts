@@ -47,6 +47,23 @@ export interface SkinTopology {
   report: TopologyReport;
 }
 
+/** One line for the log: the skin's size and what was merged or skipped building it. */
+export function describeTopology(t: SkinTopology): string {
+  const r = t.report;
+  const skipped = [
+    [r.degenerateTriangles, 'degenerate triangles'],
+    [r.duplicateTriangles, 'duplicate triangles'],
+    [r.nonManifoldTriangles, 'triangles on non-manifold edges'],
+    [r.isolatedVertices, 'isolated vertices (kept still)'],
+  ]
+    .filter(([n]) => (n as number) > 0)
+    .map(([n, what]) => `${n} ${what}`);
+  return (
+    `skin: ${t.vertexCount} vertices (${r.weldedDuplicates} seam duplicates welded), ${t.restLength.length} edges in ` +
+    `${t.colourStart.length - 1} colours, ${t.triangles.length / 3} triangles; skipped: ${skipped.length ? skipped.join(', ') : 'nothing'}`
+  );
+}
+
 /** Builds the simulation topology of an indexed triangle mesh. Bad triangles are skipped and counted in `report`. */
 export function buildTopology(renderPositions: ArrayLike<number>, indices: ArrayLike<number>): SkinTopology {
   const renderCount = Math.floor(renderPositions.length / 3);

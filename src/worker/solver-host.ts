@@ -1,6 +1,6 @@
 import type { Collider } from '../core/colliders';
 import { SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
-import { buildTopology, type SkinTopology } from '../core/topology';
+import { buildTopology, describeTopology, type SkinTopology } from '../core/topology';
 import { CONSTRAINT_INDEX, CONSTRAINT_KINDS, readParameters, writeFrameHeader, writeSlotBounds, type FrameHeader, type FrameSlot } from './layout';
 
 /** What a solver host is built from: the skin's render mesh (head space), the colliders and the parameters. */
@@ -35,6 +35,7 @@ export class SolverHost {
 
   constructor(input: SolverHostInput) {
     this.topology = buildTopology(input.renderPositions, input.indices);
+    console.info(describeTopology(this.topology));
     this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders });
     // Start from the skin's own equilibrium (the float32 rest lengths move it by a hair), so that every mode starts
     // from the same sleeping shape however many frames pass before the first input arrives.
