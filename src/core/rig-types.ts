@@ -6,7 +6,10 @@
 
 export type Vec3 = [number, number, number];
 
-/** Euler angles in degrees, applied in XYZ order, that turn a muscle's local frame within the head. */
+/**
+ * Euler angles in degrees that turn a muscle's local frame within the head: R = Rz * Ry * Rx (x applied first),
+ * which is three.js `new Euler(x, y, z, 'ZYX')` in radians.
+ */
 export type EulerDegrees = [number, number, number];
 
 /** Which side of the face a muscle sits on (the subject's left is +x). */
@@ -43,7 +46,8 @@ export interface LinearMuscle extends MuscleCommon {
  * Waters' sphincter muscle (eyes, mouth): an ellipsoid of `radii` around `center`, in the frame turned by
  * `rotation`. Skin inside it is pulled toward the center, scaled per local axis by `scale` (eyes close more
  * vertically, the mouth purses more horizontally); the pull is reduced inside the inner ellipsoid (`innerRadii`) and
- * falls (cosine) to zero at the outer surface. Membership uses squared normalised distances.
+ * falls (cosine) to zero at the outer surface. Membership uses squared normalised distances. Inner radii must not
+ * exceed the outer ones; `scale` scales the pull's local components (0 on z: no pull in depth).
  */
 export interface SphincterMuscle extends MuscleCommon {
   type: 'sphincter';
@@ -59,7 +63,8 @@ export interface SphincterMuscle extends MuscleCommon {
 /**
  * Rotation muscle for a lid: skin inside the ellipsoid turns about a joint at the ellipsoid's back (center minus
  * radii.z along the local z axis), about the local x axis, by up to `maxAngle` degrees (|maxAngle| <= 90) at
- * contraction 1; the turn fades (cosine) to zero between `innerFraction` of the radii and the surface.
+ * contraction 1; the turn fades (cosine) to zero between `innerFraction` of the radii and the surface. A positive
+ * angle turns right-handed about local +x (+y toward +z): skin in front of the joint moves down, closing an upper lid.
  */
 export interface LidMuscle extends MuscleCommon {
   type: 'lid';
@@ -74,7 +79,8 @@ export interface LidMuscle extends MuscleCommon {
  * Rotation muscle for the jaw: skin inside the box (`size` = full edge lengths, local frame) turns about a joint at
  * the box's back face centre (center minus size.z / 2 along local z), about the local x axis, by up to `maxAngle`
  * degrees. `curve` opens the lip's middle further than its corners (the thesis's extra term), as a fraction of the
- * angle added at the centre line; the turn fades to zero within `fade` (metres) of the box's faces.
+ * angle added at the centre line; the turn fades to zero within `fade` (metres, > 0) of the box's faces. A positive
+ * angle moves the chin down (right-handed about local +x).
  */
 export interface JawMuscle extends MuscleCommon {
   type: 'jaw';

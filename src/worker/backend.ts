@@ -1,3 +1,4 @@
+import type { ChangedInputs } from './input-staging';
 import type { FrameSlot } from './layout';
 import type { SolverMode } from './protocol';
 
@@ -7,7 +8,7 @@ export interface SolverBackend {
   /** The newest complete frame; the same object until a newer frame arrives. Allocates nothing. */
   latest(): FrameSlot;
   /** Delivers a published input batch (`transfer` mode sends it; the other modes read the control block). */
-  publish(seq: number, muscles: boolean, parameters: boolean): void;
+  publish(seq: number, changed: ChangedInputs): void;
   /** Solves on the calling thread for up to `budgetMs` (`main` mode); the worker modes do nothing here. */
   advance(budgetMs: number): void;
   /** Why the solver stopped, if it failed. */

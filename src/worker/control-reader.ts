@@ -1,4 +1,5 @@
 import {
+  CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,
   CONTROL_MUSCLE_REVISION,
   CONTROL_PARAMETER_REVISION,
@@ -22,6 +23,8 @@ export class ControlReader {
   private appliedSeq = 0;
   private muscleRevision = 0;
   private parameterRevision = 0;
+  private contractionRevision = 0;
+  private readonly contractions: Float32Array;
   private readonly targets: Float32Array;
   private readonly weights: Float32Array;
   private readonly normalWeights: Float32Array;
@@ -34,6 +37,7 @@ export class ControlReader {
     this.targets = new Float32Array(control.targets.length);
     this.weights = new Float32Array(control.weights.length);
     this.normalWeights = new Float32Array(control.normalWeights.length);
+    this.contractions = new Float32Array(control.contractions.length);
   }
 
   /** True if a batch was published that is not applied yet. */
@@ -70,6 +74,8 @@ export class ControlReader {
     if ((seq & 1) === 1 || seq === this.appliedSeq) return false;
     const muscleRevision = Atomics.load(words, CONTROL_MUSCLE_REVISION);
     const parameterRevision = Atomics.load(words, CONTROL_PARAMETER_REVISION);
+    const contractionRevision = Atomics.load(words, CONTROL_CONTRACTION_REVISION);
+    const contractions = contractionRevision !== this.contractionRevision;
     const muscles = muscleRevision !== this.muscleRevision;
     const parameters = parameterRevision !== this.parameterRevision;
     if (muscles) {
@@ -78,12 +84,14 @@ export class ControlReader {
       this.normalWeights.set(this.control.normalWeights);
     }
     if (parameters) this.parameters.set(this.control.parameters);
+    if (contractions) this.contractions.set(this.control.contractions);
     if (Atomics.load(words, CONTROL_INPUT_SEQ) !== seq) return false;
     this.appliedSeq = seq;
     this.muscleRevision = muscleRevision;
     this.parameterRevision = parameterRevision;
+    this.contractionRevision = contractionRevision;
     const muscleInput = muscles ? { targets: this.targets, weights: this.weights, normalWeights: this.normalWeights } : null;
-    this.host.apply(seq, muscleInput, parameters ? this.parameters : null);
+    this.host.apply(seq, muscleInput, parameters ? this.parameters : null, contractions ? this.contractions : null);
     return true;
   }
 }

@@ -1,5 +1,6 @@
 import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from '../core/solver';
 import {
+  CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,
   CONTROL_MUSCLE_REVISION,
   CONTROL_PARAMETER_REVISION,
@@ -9,8 +10,17 @@ import {
   type ControlViews,
 } from './layout';
 
+/** Which parts of the inputs a published batch changed. */
+export interface ChangedInputs {
+  /** Muscle targets and weights set directly. */
+  muscles: boolean;
+  parameters: boolean;
+  /** The rig's muscle contractions. */
+  contractions: boolean;
+}
+
 /** Called once per published batch: its sequence number and which parts changed. */
-export type PublishInputs = (seq: number, muscles: boolean, parameters: boolean) => void;
+export type PublishInputs = (seq: number, changed: ChangedInputs) => void;
 
 /**
  * The main thread's side of the control block: checks every input at the boundary (a bad one throws and changes
@@ -21,6 +31,7 @@ export class InputStaging {
   private open = false;
   private musclesChanged = false;
   private parametersChanged = false;
+  private contractionsChanged = false;
   private readonly current: SkinParameters;
   private readonly flushSoon = (): void => this.flush();
 
@@ -80,6 +91,21 @@ export class InputStaging {
     this.touchMuscles();
   }
 
+  /** Sets the contraction (0..1, clamped) of every rig muscle, in the rig's order; a non-finite one throws by index. */
+  setContractions(values: ArrayLike<number>): void {
+    const C = this.control.contractions;
+    if (!isArrayLike(values) || values.length !== C.length) {
+      throw new Error(`setContractions: expected ${C.length} contractions (one per rig muscle), got ${isArrayLike(values) ? values.length : values}`);
+    }
+    for (let i = 0; i < values.length; i++) {
+      if (typeof values[i] !== 'number' || !Number.isFinite(values[i])) throw new Error(`setContractions: contraction ${i} is not a finite number: ${values[i]}`);
+    }
+    this.begin();
+    for (let i = 0; i < values.length; i++) C[i] = Math.min(1, Math.max(0, values[i]));
+    Atomics.add(this.control.words, CONTROL_CONTRACTION_REVISION, 1);
+    this.contractionsChanged = true;
+  }
+
   /** Changes some skin parameters; throws, changing nothing, if one is unknown or not a finite number in range. */
   setParameters(partial: Partial<SkinParameters>): void {
     if (typeof partial !== 'object' || partial === null) throw new Error(`skin parameters must be an object, got ${partial}`);
@@ -112,11 +138,11 @@ export class InputStaging {
     this.open = false;
     const seq = Atomics.add(this.control.words, CONTROL_INPUT_SEQ, 1) + 1;
     Atomics.notify(this.control.words, CONTROL_INPUT_SEQ);
-    const muscles = this.musclesChanged;
-    const parameters = this.parametersChanged;
+    const changed = { muscles: this.musclesChanged, parameters: this.parametersChanged, contractions: this.contractionsChanged };
     this.musclesChanged = false;
     this.parametersChanged = false;
-    this.onPublish(seq, muscles, parameters);
+    this.contractionsChanged = false;
+    this.onPublish(seq, changed);
   }
 
   /** Opens a batch: the odd sequence number tells the solver not to read the inputs until the batch is published. */

@@ -19,6 +19,8 @@ export const CONTROL_INPUT_SEQ = 0;
 export const CONTROL_MUSCLE_REVISION = 1;
 /** Bumped whenever the skin parameters change. */
 export const CONTROL_PARAMETER_REVISION = 2;
+/** Bumped whenever the rig's muscle contractions change. */
+export const CONTROL_CONTRACTION_REVISION = 3;
 const CONTROL_HEADER_BYTES = 64;
 
 /** Where each skin parameter sits in the control block's Float64 parameter array. Exhaustive by type. */
@@ -43,10 +45,12 @@ export interface ControlLayout {
   targetsByteOffset: number;
   weightsByteOffset: number;
   normalWeightsByteOffset: number;
+  muscleCount: number;
+  contractionsByteOffset: number;
   byteLength: number;
 }
 
-export function controlLayout(vertexCount: number): ControlLayout {
+export function controlLayout(vertexCount: number, muscleCount = 0): ControlLayout {
   const parametersByteOffset = CONTROL_HEADER_BYTES;
   const targetsByteOffset = align(parametersByteOffset + 8 * PARAMETER_COUNT, 16);
   const weightsByteOffset = targetsByteOffset + 4 * 3 * vertexCount;
@@ -57,7 +61,9 @@ export function controlLayout(vertexCount: number): ControlLayout {
     targetsByteOffset,
     weightsByteOffset,
     normalWeightsByteOffset,
-    byteLength: align(normalWeightsByteOffset + 4 * vertexCount, 16),
+    muscleCount,
+    contractionsByteOffset: normalWeightsByteOffset + 4 * vertexCount,
+    byteLength: align(normalWeightsByteOffset + 4 * vertexCount + 4 * muscleCount, 16),
   };
 }
 
@@ -68,6 +74,8 @@ export interface ControlViews {
   targets: Float32Array;
   weights: Float32Array;
   normalWeights: Float32Array;
+  /** Contraction of each rig muscle, 0..1, in the rig's muscle order. */
+  contractions: Float32Array;
 }
 
 export function controlViews(buffer: ArrayBufferLike, layout: ControlLayout): ControlViews {
@@ -78,6 +86,7 @@ export function controlViews(buffer: ArrayBufferLike, layout: ControlLayout): Co
     targets: new Float32Array(buffer, layout.targetsByteOffset, 3 * n),
     weights: new Float32Array(buffer, layout.weightsByteOffset, n),
     normalWeights: new Float32Array(buffer, layout.normalWeightsByteOffset, n),
+    contractions: new Float32Array(buffer, layout.contractionsByteOffset, layout.muscleCount),
   };
 }
 
@@ -87,6 +96,7 @@ export function initControl(views: ControlViews, rest: Float32Array, parameters:
   views.targets.set(rest);
   views.weights.fill(0);
   views.normalWeights.fill(0);
+  views.contractions.fill(0);
   writeParameters(parameters, views.parameters);
 }
 

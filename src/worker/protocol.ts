@@ -1,5 +1,6 @@
 /** Messages between SkinSimulation (main thread) and the skin worker. */
 import type { Collider } from '../core/colliders';
+import type { Muscle } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
 
 /** How the solver runs: in a worker on shared memory, in a worker with transferred buffers, or on the main thread. */
@@ -14,6 +15,7 @@ export interface InitMessage {
   indices: Uint16Array | Uint32Array;
   colliders: Collider[];
   parameters: SkinParameters;
+  muscles: Muscle[];
 }
 
 /** Worker to main, once the topology is built and the first frame (the rest shape) is written. */
@@ -38,6 +40,7 @@ export interface InputsMessage {
   weights?: Float32Array;
   normalWeights?: Float32Array;
   parameters?: Float64Array;
+  contractions?: Float32Array;
 }
 
 /** Worker to main (`transfer` mode): a solved frame's slot. Main to worker: a slot it no longer needs. */

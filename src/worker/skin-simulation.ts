@@ -1,4 +1,5 @@
 import type { Collider } from '../core/colliders';
+import type { Muscle } from '../core/rig-types';
 import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../core/solver';
 import type { SolverBackend } from './backend';
 import { InputStaging } from './input-staging';
@@ -29,6 +30,8 @@ export interface SkinSimulationOptions {
   indices: Uint16Array | Uint32Array;
   colliders?: Collider[];
   parameters?: Partial<SkinParameters>;
+  /** The rig's muscles; `setContractions` then drives them, in this order. */
+  muscles?: Muscle[];
   /** Defaults to `shared` on cross-origin isolated pages and `transfer` elsewhere. */
   mode?: SolverMode;
 }
@@ -71,7 +74,7 @@ export class SkinSimulation {
     readonly edgeCount: number,
     readonly renderVertexCount: number,
   ) {
-    this.staging = new InputStaging(control, rest, (seq, muscles, parameters) => backend.publish(seq, muscles, parameters));
+    this.staging = new InputStaging(control, rest, (seq, changed) => backend.publish(seq, changed));
   }
 
   /** Builds the skin's topology and solver (in a worker unless `mode` is `main`) and resolves once it is running. */
@@ -82,10 +85,12 @@ export class SkinSimulation {
     if (mode === 'shared' && typeof SharedArrayBuffer === 'undefined') throw new Error("solver mode 'shared' needs a cross-origin isolated page");
     const renderCount = options.renderPositions.length / 3;
     const colliders = options.colliders ?? [];
+    const muscles = options.muscles ?? [];
     if (mode === 'main') {
-      const host = new SolverHost({ renderPositions: options.renderPositions, indices: options.indices, colliders, parameters });
+      const host = new SolverHost({ renderPositions: options.renderPositions, indices: options.indices, colliders, parameters, muscles });
       const t = host.topology;
-      const control = controlViews(new ArrayBuffer(controlLayout(t.vertexCount).byteLength), controlLayout(t.vertexCount));
+      const mainLayout = controlLayout(t.vertexCount, muscles.length);
+      const control = controlViews(new ArrayBuffer(mainLayout.byteLength), mainLayout);
       initControl(control, t.rest, parameters);
       const backend = new MainBackend(host, control, slotLayout(renderCount, t.vertexCount));
       return new SkinSimulation(backend, control, t.rest.slice(), t.triangles.slice(), t.restLength.length, renderCount);
@@ -97,9 +102,10 @@ export class SkinSimulation {
       indices: options.indices,
       colliders,
       parameters,
+      muscles,
     });
     const layout = slotLayout(renderCount, ready.vertexCount);
-    const cLayout = controlLayout(ready.vertexCount);
+    const cLayout = controlLayout(ready.vertexCount, muscles.length);
     if (mode === 'shared') {
       const backend = new SharedBackend(connection, ready.output!, layout);
       return new SkinSimulation(backend, controlViews(ready.control!, cLayout), ready.rest, ready.triangles, ready.edgeCount, renderCount);
@@ -126,6 +132,12 @@ export class SkinSimulation {
   setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
     this.checkAlive();
     this.staging.setMuscleTargets(vertices, targets, weight, normalWeight);
+  }
+
+  /** Sets every rig muscle's contraction (0..1, clamped), in the rig's order; throws, changing nothing, on a bad one. */
+  setContractions(values: ArrayLike<number>): void {
+    this.checkAlive();
+    this.staging.setContractions(values);
   }
 
   /** Releases every muscle pull. */

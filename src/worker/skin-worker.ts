@@ -31,7 +31,7 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
     if (m.type === 'init') init(m);
     else if (m.type === 'inputs') {
       const muscles = m.targets && m.weights && m.normalWeights ? { targets: m.targets, weights: m.weights, normalWeights: m.normalWeights } : null;
-      host?.apply(m.seq, muscles, m.parameters ?? null);
+      host?.apply(m.seq, muscles, m.parameters ?? null, m.contractions ?? null);
       schedule();
     } else if (m.type === 'frame-buffer') transferOutput?.giveBack(m.buffer);
   } catch (error) {
@@ -48,8 +48,9 @@ function init(m: InitMessage): void {
   const layout = slotLayout(m.renderPositions.length / 3, topology.vertexCount);
   host = h;
   if (m.mode === 'shared') {
-    const control = new SharedArrayBuffer(controlLayout(topology.vertexCount).byteLength);
-    const views = controlViews(control, controlLayout(topology.vertexCount));
+    const cLayout = controlLayout(topology.vertexCount, m.muscles.length);
+    const control = new SharedArrayBuffer(cLayout.byteLength);
+    const views = controlViews(control, cLayout);
     initControl(views, topology.rest, m.parameters);
     reader = new ControlReader(views, h);
     sharedOutput = new SharedOutput(layout);

@@ -1,4 +1,6 @@
 import type { Collider } from '../core/colliders';
+import { MuscleRig } from '../core/muscles';
+import type { Muscle } from '../core/rig-types';
 import { SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
 import { buildTopology, describeTopology, type SkinTopology } from '../core/topology';
 import { CONSTRAINT_INDEX, CONSTRAINT_KINDS, readParameters, writeFrameHeader, writeSlotBounds, type FrameHeader, type FrameSlot } from './layout';
@@ -9,6 +11,8 @@ export interface SolverHostInput {
   indices: Uint16Array | Uint32Array;
   colliders: Collider[];
   parameters: SkinParameters;
+  /** The rig's muscles (may be empty); contractions arrive in this order. */
+  muscles: Muscle[];
 }
 
 /** The muscle inputs of a batch: targets (xyz per vertex) and the two weights per vertex. */
@@ -28,6 +32,8 @@ const MAX_SETTLING_FRAMES = 64;
 export class SolverHost {
   readonly topology: SkinTopology;
   readonly solver: SkinSolver;
+  /** Turns contractions into the solver's muscle targets and weights; absent without muscles. */
+  private readonly rig: MuscleRig | undefined;
   private readonly header: FrameHeader = { frames: 0, sleeping: true, appliedInput: 0, solveMs: 0 };
   /** Constraint counts change only when inputs do, so they are counted per input batch, not per frame. */
   private readonly constraints = new Int32Array(CONSTRAINT_KINDS.length);
@@ -37,6 +43,7 @@ export class SolverHost {
     this.topology = buildTopology(input.renderPositions, input.indices);
     console.info(describeTopology(this.topology));
     this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders });
+    this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
     // Start from the skin's own equilibrium (the float32 rest lengths move it by a hair), so that every mode starts
     // from the same sleeping shape however many frames pass before the first input arrives.
     for (let i = 0; i < MAX_SETTLING_FRAMES && this.step(); i++);
@@ -44,11 +51,16 @@ export class SolverHost {
   }
 
   /** Applies one input batch (null parts did not change), as of input sequence number `seq`. */
-  apply(seq: number, muscles: MuscleInput | null, parameters: Float64Array | null): void {
+  apply(seq: number, muscles: MuscleInput | null, parameters: Float64Array | null, contractions: Float32Array | null = null): void {
     if (muscles) {
       this.solver.buffers.targets.set(muscles.targets);
       this.solver.buffers.weights.set(muscles.weights);
       this.solver.buffers.normalWeights.set(muscles.normalWeights);
+      this.solver.updateMuscles();
+    }
+    // Rig contractions replace directly set targets: the rig computes every vertex's target and weights.
+    if (contractions && this.rig) {
+      this.rig.compute(contractions, this.solver.buffers);
       this.solver.updateMuscles();
     }
     if (parameters) this.solver.setParameters(readParameters(parameters, this.parameterScratch));

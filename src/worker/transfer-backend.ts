@@ -1,4 +1,5 @@
 import type { SolverBackend } from './backend';
+import type { ChangedInputs } from './input-staging';
 import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
 import type { WorkerConnection } from './worker-connection';
 
@@ -24,13 +25,14 @@ export class TransferBackend implements SolverBackend {
     return this.current;
   }
 
-  publish(seq: number, muscles: boolean, parameters: boolean): void {
+  publish(seq: number, { muscles, parameters, contractions }: ChangedInputs): void {
     const targets = muscles ? this.control.targets.slice() : undefined;
     const weights = muscles ? this.control.weights.slice() : undefined;
     const normalWeights = muscles ? this.control.normalWeights.slice() : undefined;
     const params = parameters ? this.control.parameters.slice() : undefined;
-    const transfer = [targets?.buffer, weights?.buffer, normalWeights?.buffer, params?.buffer].filter((b): b is ArrayBuffer => b !== undefined);
-    this.connection.post({ type: 'inputs', seq, targets, weights, normalWeights, parameters: params }, transfer);
+    const muscleContractions = contractions ? this.control.contractions.slice() : undefined;
+    const transfer = [targets?.buffer, weights?.buffer, normalWeights?.buffer, params?.buffer, muscleContractions?.buffer].filter((b): b is ArrayBuffer => b !== undefined);
+    this.connection.post({ type: 'inputs', seq, targets, weights, normalWeights, parameters: params, contractions: muscleContractions }, transfer);
   }
 
   advance(): void {}
