@@ -1,0 +1,279 @@
+/**
+ * The FACS side of the face: the Action Units the product offers (thesis 3.3 and 4.5), FACS intensity grades, and
+ * the expression state that turns Action Unit sliders and preset weights into muscle contractions. Pure: no DOM.
+ */
+
+import type { PresetDefinition, Rig } from './rig-types';
+
+/** An Action Unit of the catalogue: id `AU12`, its FACS number and name, and whether each side is set on its own. */
+export interface ActionUnitInfo {
+  readonly id: string;
+  readonly number: number;
+  readonly name: string;
+  readonly bilateral: boolean;
+}
+
+/**
+ * Bilateral units get one slider per side (`AU12L`, `AU12R`; left is the subject's left, +x); midline units get one.
+ *
+ * Midline, because the action is one structure or its sides never act apart in this rig:
+ * - AU9 nose wrinkler: FACS scores it for the nose as a whole, and the thesis contracts its two muscles as one unit;
+ *   a one-sided AU9 reads as AU10 (upper lip raiser), which is bilateral here.
+ * - AU17 chin raiser: the mentalis pair meet on the chin boss and act together (thesis 4.5.10).
+ * - AU18 pucker, AU23 lip tightener, AU24 lip pressor: the orbicularis oris is one ring around the mouth, modelled as
+ *   one sphincter per action; FACS allows scoring 23 and 24 on one side, but this rig cannot produce it.
+ * - AU25 lips part, AU26 jaw drop, AU27 mouth stretch: the lips and the jaw open as one.
+ * Bilateral, because FACS scores them on one side and the thesis or the prototypes need it: 1, 2, 4, 5, 6, 7
+ * (winks, one raised brow, a squint), 10, 12, 14, 15, 16, 20 (contempt is R12A + R14A) and 43 (one eye closed).
+ */
+export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
+  (
+    [
+      [1, 'inner brow raiser', true],
+      [2, 'outer brow raiser', true],
+      [4, 'brow lowerer', true],
+      [5, 'upper lid raiser', true],
+      [6, 'cheek raiser', true],
+      [7, 'lid tightener', true],
+      [9, 'nose wrinkler', false],
+      [10, 'upper lip raiser', true],
+      [12, 'lip corner puller', true],
+      [14, 'dimpler', true],
+      [15, 'lip corner depressor', true],
+      [16, 'lower lip depressor', true],
+      [17, 'chin raiser', false],
+      [18, 'lip pucker', false],
+      [20, 'lip stretcher', true],
+      [23, 'lip tightener', false],
+      [24, 'lip pressor', false],
+      [25, 'lips part', false],
+      [26, 'jaw drop', false],
+      [27, 'mouth stretch', false],
+      [43, 'eyes closed', true],
+    ] as const
+  ).map(([n, name, bilateral]) => Object.freeze({ id: `AU${n}`, number: n, name, bilateral })),
+);
+
+/** A FACS intensity grade: '' for none, then A (trace) to E (maximum). */
+export type Grade = '' | 'A' | 'B' | 'C' | 'D' | 'E';
+
+/**
+ * Upper bound (inclusive) of each grade on the 0..1 intensity scale. FACS grades are not evenly spaced: A and B are
+ * narrow, C and D wide, E narrow (the 2002 manual's picture of the scale), so: A up to 10 %, B to 20 %, C to 55 %,
+ * D to 90 %, E to 100 %.
+ */
+export const GRADE_BANDS: readonly (readonly [upTo: number, grade: Grade])[] = Object.freeze([
+  [0.1, 'A'],
+  [0.2, 'B'],
+  [0.55, 'C'],
+  [0.9, 'D'],
+  [1, 'E'],
+] as const);
+
+/** The FACS grade of an intensity (0..1): '' at 0 (or below, or NaN), 'E' above 1. */
+export function gradeOf(intensity: number): Grade {
+  if (!(intensity > 0)) return '';
+  for (const [upTo, grade] of GRADE_BANDS) if (intensity <= upTo) return grade;
+  return 'E';
+}
+
+/** Side codes in listings: left, right, or midline. */
+export type SideCode = 'L' | 'R' | 'M';
+
+/** An Action Unit as `listActionUnits` shows it. */
+export interface ActionUnitListing {
+  id: string;
+  number: number;
+  name: string;
+  sides: SideCode[];
+}
+
+/** A preset as `listPresets` shows it, with its current weight. */
+export interface PresetListing {
+  name: string;
+  source: string;
+  note?: string;
+  weight: number;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Slots: one number per Action Unit side, in catalogue order (AU1L, AU1R, AU2L, ..., AU9, ...).
+
+const SLOT_IDS: readonly string[] = ACTION_UNITS.flatMap((au) => (au.bilateral ? [`${au.id}L`, `${au.id}R`] : [au.id]));
+
+/** The slots an id sets: `AU12` both sides, `AU12L` one, `AU17` its only one. */
+const SLOTS_OF: ReadonlyMap<string, readonly number[]> = (() => {
+  const map = new Map<string, number[]>();
+  SLOT_IDS.forEach((id, slot) => map.set(id, [slot]));
+  for (const au of ACTION_UNITS) if (au.bilateral) map.set(au.id, [...map.get(`${au.id}L`)!, ...map.get(`${au.id}R`)!]);
+  return map;
+})();
+
+const CATALOGUE_BY_ID: ReadonlyMap<string, ActionUnitInfo> = new Map(ACTION_UNITS.map((au) => [au.id, au]));
+
+/** What `muscleContractions` needs from a rig, flattened: for each Action Unit side -> muscle link, its slot and weight. */
+interface ContractionPlan {
+  muscleCount: number;
+  slot: Int32Array;
+  muscle: Int32Array;
+  weight: Float64Array;
+}
+
+/** Rigs are treated as immutable once parsed, so a plan is built once per rig object. */
+const plans = new WeakMap<Rig, ContractionPlan>();
+
+function show(x: unknown): string {
+  return typeof x === 'string' ? JSON.stringify(x) : String(x);
+}
+
+function clamp01(x: number): number {
+  return x < 0 ? 0 : x > 1 ? 1 : x;
+}
+
+/**
+ * Action Unit sliders and preset weights, and the intensities and muscle contractions they add up to. Inputs are
+ * checked where they enter: a bad id or value throws and changes nothing.
+ */
+export class ExpressionState {
+  private readonly sliders = new Float64Array(SLOT_IDS.length);
+  private readonly presets: readonly PresetDefinition[];
+  private readonly presetWeights: Float64Array;
+  /** Each preset's intensity per slot (`AU12` spread to both sides), so that summing is one pass. */
+  private readonly presetSlots: readonly Float64Array[];
+  private readonly effectiveSlots = new Float64Array(SLOT_IDS.length);
+  private dirty = false;
+
+  /** The presets (usually `rig.presets`) must name catalogue Action Units, with a side only for bilateral ones. */
+  constructor(presets: readonly PresetDefinition[] = []) {
+    const names = new Set<string>();
+    this.presetSlots = presets.map((p) => {
+      if (names.has(p.name)) throw new Error(`ExpressionState: duplicate preset name ${show(p.name)}`);
+      names.add(p.name);
+      return presetToSlots(p);
+    });
+    this.presets = [...presets];
+    this.presetWeights = new Float64Array(presets.length);
+  }
+
+  /** Sets a slider (clamped to 0..1): `AU12` sets both sides, `AU12L` / `AU12R` one, `AU17` a midline unit. */
+  setActionUnit(id: string, value: number): void {
+    const slots = SLOTS_OF.get(id);
+    if (!slots) throw new Error(`setActionUnit: unknown Action Unit id ${show(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
+    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`setActionUnit: ${id} needs a finite number, got ${show(value)}`);
+    for (const s of slots) this.sliders[s] = clamp01(value);
+    this.dirty = true;
+  }
+
+  /** The slider values by side id (`AU12L`, `AU12R`, `AU17`, ...), presets not included. */
+  getActionUnits(): Record<string, number> {
+    const out: Record<string, number> = {};
+    SLOT_IDS.forEach((id, s) => (out[id] = this.sliders[s]));
+    return out;
+  }
+
+  /** The catalogue with the side ids each unit has. */
+  listActionUnits(): ActionUnitListing[] {
+    return ACTION_UNITS.map((au) => ({ id: au.id, number: au.number, name: au.name, sides: au.bilateral ? ['L', 'R'] : ['M'] }));
+  }
+
+  /** Sets a preset's weight (clamped to 0..1; 0 turns it off). */
+  applyPreset(name: string, weight: number): void {
+    const index = this.presets.findIndex((p) => p.name === name);
+    if (index < 0) throw new Error(`applyPreset: unknown preset ${show(name)} (presets: ${this.presets.map((p) => p.name).join(', ') || 'none'})`);
+    if (typeof weight !== 'number' || !Number.isFinite(weight)) throw new Error(`applyPreset: ${name} needs a finite weight, got ${show(weight)}`);
+    this.presetWeights[index] = clamp01(weight);
+    this.dirty = true;
+  }
+
+  /** The presets, in rig order, with their current weights. */
+  listPresets(): PresetListing[] {
+    return this.presets.map((p, i) => ({ name: p.name, source: p.source, ...(p.note === undefined ? {} : { note: p.note }), weight: this.presetWeights[i] }));
+  }
+
+  /** Every slider and preset weight back to 0. */
+  reset(): void {
+    this.sliders.fill(0);
+    this.presetWeights.fill(0);
+    this.dirty = true;
+  }
+
+  /** Intensity per Action Unit side: slider plus the weighted presets, clamped to 0..1. */
+  effective(): Record<string, number> {
+    const e = this.effectiveIntensities();
+    const out: Record<string, number> = {};
+    SLOT_IDS.forEach((id, s) => (out[id] = e[s]));
+    return out;
+  }
+
+  /**
+   * Contraction of each rig muscle (index = position in `rig.muscles`) into `into`: the sum over the Action Unit
+   * sides that drive it of intensity x weight, at most 1. Entries past the muscle count are left alone. The rig's
+   * links are read once per rig object (rigs are immutable once parsed): pass a new object after editing one.
+   */
+  muscleContractions(rig: Rig, into: Float32Array): Float32Array {
+    const plan = planFor(rig);
+    if (into.length < plan.muscleCount) throw new RangeError(`muscleContractions: needs room for ${plan.muscleCount} muscles, got ${into.length}`);
+    const e = this.effectiveIntensities();
+    into.fill(0, 0, plan.muscleCount);
+    for (let k = 0; k < plan.slot.length; k++) into[plan.muscle[k]] += e[plan.slot[k]] * plan.weight[k];
+    for (let m = 0; m < plan.muscleCount; m++) into[m] = clamp01(into[m]);
+    return into;
+  }
+
+  private effectiveIntensities(): Float64Array {
+    if (!this.dirty) return this.effectiveSlots;
+    const e = this.effectiveSlots;
+    e.set(this.sliders);
+    this.presetSlots.forEach((values, p) => {
+      const w = this.presetWeights[p];
+      if (w !== 0) for (let s = 0; s < e.length; s++) e[s] += w * values[s];
+    });
+    for (let s = 0; s < e.length; s++) e[s] = clamp01(e[s]);
+    this.dirty = false;
+    return e;
+  }
+}
+
+/** A preset's intensities per slot; `AU12` adds to both sides, `AU12R` to the right only. */
+function presetToSlots(p: PresetDefinition): Float64Array {
+  const values = new Float64Array(SLOT_IDS.length);
+  for (const [id, value] of Object.entries(p.actionUnits)) {
+    const slots = SLOTS_OF.get(id);
+    if (!slots) throw new Error(`ExpressionState: preset ${show(p.name)} names unknown Action Unit id ${show(id)}`);
+    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`ExpressionState: preset ${show(p.name)} gives ${id} a non-finite value ${show(value)}`);
+    for (const s of slots) values[s] += value;
+  }
+  return values;
+}
+
+function planFor(rig: Rig): ContractionPlan {
+  let plan = plans.get(rig);
+  if (!plan) {
+    plan = buildPlan(rig);
+    plans.set(rig, plan);
+  }
+  return plan;
+}
+
+/** Links each rig Action Unit side to its muscles; throws if the rig does not fit the catalogue. */
+function buildPlan(rig: Rig): ContractionPlan {
+  const muscleIndex = new Map(rig.muscles.map((m, i) => [m.name, i]));
+  const slot: number[] = [];
+  const muscle: number[] = [];
+  const weight: number[] = [];
+  for (const au of rig.actionUnits) {
+    const known = CATALOGUE_BY_ID.get(au.id);
+    if (!known) throw new Error(`muscleContractions: rig Action Unit ${au.id} is not in the catalogue`);
+    if (known.bilateral !== au.bilateral) throw new Error(`muscleContractions: rig has ${au.id} as ${au.bilateral ? 'bilateral' : 'midline'}, the catalogue as ${known.bilateral ? 'bilateral' : 'midline'}`);
+    for (const link of au.muscles) {
+      const m = muscleIndex.get(link.muscle);
+      if (m === undefined) throw new Error(`muscleContractions: ${au.id} names unknown muscle ${show(link.muscle)}`);
+      const sideId = !au.bilateral ? au.id : link.side === 'left' ? `${au.id}L` : link.side === 'right' ? `${au.id}R` : undefined;
+      if (sideId === undefined) throw new Error(`muscleContractions: bilateral ${au.id} links ${show(link.muscle)} on side "mid"`);
+      slot.push(SLOTS_OF.get(sideId)![0]);
+      muscle.push(m);
+      weight.push(link.weight);
+    }
+  }
+  return { muscleCount: rig.muscles.length, slot: Int32Array.from(slot), muscle: Int32Array.from(muscle), weight: Float64Array.from(weight) };
+}

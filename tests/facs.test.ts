@@ -1,0 +1,234 @@
+import { readFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { ACTION_UNITS, ExpressionState, gradeOf } from '../src/core/facs';
+import { parseRigText } from '../src/core/rig-schema';
+import type { LinearMuscle, MuscleSide, Rig } from '../src/core/rig-types';
+
+const DEFAULT_RIG = parseRigText(readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8'), 'default.json');
+
+function linear(name: string, side: MuscleSide): LinearMuscle {
+  return { name, side, type: 'linear', origin: [0, 0, 0], insertion: [0, 1, 0], angle: 20, falloffStart: 0.8, falloffEnd: 1.2, strength: 0.2, normalWeight: 0.2 };
+}
+
+/** A small rig: AU12 on two muscles per side with different weights, AU26 and AU27 sharing one jaw-like muscle. */
+const SMALL_RIG: Rig = {
+  format: 'softface-rig',
+  version: 1,
+  muscles: [linear('zyg-l', 'left'), linear('zyg-r', 'right'), linear('ris-l', 'left'), linear('ris-r', 'right'), linear('jaw', 'mid')],
+  actionUnits: [
+    {
+      id: 'AU12',
+      name: 'lip corner puller',
+      bilateral: true,
+      muscles: [
+        { muscle: 'zyg-l', side: 'left', weight: 1 },
+        { muscle: 'zyg-r', side: 'right', weight: 1 },
+        { muscle: 'ris-l', side: 'left', weight: 0.25 },
+        { muscle: 'ris-r', side: 'right', weight: 0.25 },
+      ],
+    },
+    { id: 'AU26', name: 'jaw drop', bilateral: false, muscles: [{ muscle: 'jaw', side: 'mid', weight: 0.48 }] },
+    { id: 'AU27', name: 'mouth stretch', bilateral: false, muscles: [{ muscle: 'jaw', side: 'mid', weight: 1 }] },
+  ],
+  presets: [
+    { name: 'smile', source: 'test', actionUnits: { AU12: 0.6 } },
+    { name: 'grin-right', source: 'test', actionUnits: { AU12R: 0.5, AU26: 0.5 } },
+  ],
+};
+
+function contractions(state: ExpressionState, rig: Rig = SMALL_RIG): Record<string, number> {
+  const c = state.muscleContractions(rig, new Float32Array(rig.muscles.length));
+  return Object.fromEntries(rig.muscles.map((m, i) => [m.name, c[i]]));
+}
+
+describe('the Action Unit catalogue', () => {
+  it('has the 21 Action Units, with midline ones 9, 17, 18, 23, 24, 25, 26 and 27', () => {
+    expect(ACTION_UNITS.map((a) => a.number)).toEqual([1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 43]);
+    expect(ACTION_UNITS.filter((a) => !a.bilateral).map((a) => a.id)).toEqual(['AU9', 'AU17', 'AU18', 'AU23', 'AU24', 'AU25', 'AU26', 'AU27']);
+    expect(ACTION_UNITS.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', bilateral: true });
+  });
+
+  it('matches the default rig (ids, names, sides)', () => {
+    expect(DEFAULT_RIG.actionUnits.map(({ id, name, bilateral }) => ({ id, name, bilateral }))).toEqual(ACTION_UNITS.map(({ id, name, bilateral }) => ({ id, name, bilateral })));
+  });
+});
+
+describe('gradeOf', () => {
+  it.each([
+    [0, ''],
+    [-0.1, ''],
+    [Number.NaN, ''],
+    [0.0001, 'A'],
+    [0.1, 'A'],
+    [0.1001, 'B'],
+    [0.2, 'B'],
+    [0.2001, 'C'],
+    [0.55, 'C'],
+    [0.5501, 'D'],
+    [0.9, 'D'],
+    [0.9001, 'E'],
+    [1, 'E'],
+    [1.5, 'E'],
+  ])('grades %f as %j', (intensity, grade) => {
+    expect(gradeOf(intensity)).toBe(grade);
+  });
+});
+
+describe('ExpressionState sliders', () => {
+  it('sets both sides with AU12 and one side with AU12L', () => {
+    const s = new ExpressionState();
+    s.setActionUnit('AU12', 0.4);
+    expect(s.getActionUnits()).toMatchObject({ AU12L: 0.4, AU12R: 0.4 });
+    s.setActionUnit('AU12L', 0.9);
+    expect(s.getActionUnits()).toMatchObject({ AU12L: 0.9, AU12R: 0.4 });
+    s.setActionUnit('AU26', 0.3);
+    expect(s.getActionUnits().AU26).toBe(0.3);
+  });
+
+  it('clamps values above 1 and below 0', () => {
+    const s = new ExpressionState();
+    s.setActionUnit('AU1', 1.7);
+    s.setActionUnit('AU2R', -0.5);
+    expect(s.getActionUnits()).toMatchObject({ AU1L: 1, AU1R: 1, AU2R: 0 });
+  });
+
+  it('throws on an unknown id or a non-finite value, naming it, and changes nothing', () => {
+    const s = new ExpressionState();
+    s.setActionUnit('AU4', 0.5);
+    const before = s.getActionUnits();
+    expect(() => s.setActionUnit('AU99', 0.5)).toThrow(/unknown Action Unit id "AU99"/);
+    expect(() => s.setActionUnit('AU26L', 0.5)).toThrow(/unknown Action Unit id "AU26L"/); // midline: no sides
+    expect(() => s.setActionUnit('AU4', Number.NaN)).toThrow(/AU4 needs a finite number, got NaN/);
+    expect(() => s.setActionUnit('AU4L', Number.POSITIVE_INFINITY)).toThrow(/AU4L needs a finite number, got Infinity/);
+    expect(() => s.setActionUnit('AU4', '0.7' as unknown as number)).toThrow(/AU4 needs a finite number, got "0.7"/);
+    expect(s.getActionUnits()).toEqual(before);
+    expect(s.effective()).toEqual(before);
+  });
+
+  it('lists the Action Units with their sides', () => {
+    const list = new ExpressionState().listActionUnits();
+    expect(list).toHaveLength(21);
+    expect(list.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', sides: ['L', 'R'] });
+    expect(list.find((a) => a.id === 'AU17')).toEqual({ id: 'AU17', number: 17, name: 'chin raiser', sides: ['M'] });
+  });
+});
+
+describe('ExpressionState presets', () => {
+  it('adds weighted presets to the sliders and clamps the sum (happiness + surprise)', () => {
+    const s = new ExpressionState(DEFAULT_RIG.presets);
+    s.applyPreset('happiness', 1); // AU6 0.6, AU12 0.8
+    s.applyPreset('surprise', 0.5); // AU1 0.7, AU2 0.7, AU5 0.15, AU26 0.6
+    s.setActionUnit('AU12L', 0.5);
+    s.setActionUnit('AU26', 0.1);
+    const e = s.effective();
+    expect(e.AU12L).toBe(1); // 0.5 + 0.8, clamped
+    expect(e.AU12R).toBeCloseTo(0.8, 12);
+    expect(e.AU6L).toBeCloseTo(0.6, 12);
+    expect(e.AU1R).toBeCloseTo(0.35, 12);
+    expect(e.AU5L).toBeCloseTo(0.075, 12);
+    expect(e.AU26).toBeCloseTo(0.4, 12); // 0.1 + 0.5 x 0.6
+    expect(e.AU15L).toBe(0);
+    expect(s.getActionUnits().AU12R).toBe(0); // sliders stay what was set
+  });
+
+  it('sums presets that share an Action Unit, and applies AU12 to both sides but AU12R to the right only', () => {
+    const s = new ExpressionState(SMALL_RIG.presets);
+    s.applyPreset('smile', 1);
+    s.applyPreset('grin-right', 1);
+    expect(s.effective()).toMatchObject({ AU12L: 0.6, AU12R: 1, AU26: 0.5 });
+  });
+
+  it('drives only the right lip corner with the contempt preset, at grade A', () => {
+    const s = new ExpressionState(DEFAULT_RIG.presets);
+    s.applyPreset('contempt', 1);
+    const e = s.effective();
+    expect(e).toMatchObject({ AU12L: 0, AU14L: 0 });
+    expect(gradeOf(e.AU12R)).toBe('A');
+    expect(gradeOf(e.AU14R)).toBe('A');
+    const c = contractions(s, DEFAULT_RIG);
+    expect(c['zygomaticus-major-r']).toBeCloseTo(0.08, 6);
+    expect(c['buccinator-r']).toBeCloseTo(0.08, 6);
+    const driven = Object.entries(c).filter(([, v]) => v > 0).map(([name]) => name);
+    expect(driven.sort()).toEqual(['buccinator-r', 'zygomaticus-major-r']);
+  });
+
+  it('clamps preset weights and rejects unknown presets or non-finite weights, changing nothing', () => {
+    const s = new ExpressionState(SMALL_RIG.presets);
+    s.applyPreset('smile', 3);
+    expect(s.listPresets()).toEqual([
+      { name: 'smile', source: 'test', weight: 1 },
+      { name: 'grin-right', source: 'test', weight: 0 },
+    ]);
+    expect(() => s.applyPreset('frown', 1)).toThrow(/unknown preset "frown"/);
+    expect(() => s.applyPreset('grin-right', Number.NaN)).toThrow(/grin-right needs a finite weight, got NaN/);
+    expect(s.listPresets().map((p) => p.weight)).toEqual([1, 0]);
+    s.applyPreset('smile', -1);
+    expect(s.effective().AU12L).toBe(0);
+  });
+
+  it('refuses presets naming Action Units outside the catalogue', () => {
+    expect(() => new ExpressionState([{ name: 'odd', source: 'test', actionUnits: { AU13: 0.5 } }])).toThrow(/preset "odd" names unknown Action Unit id "AU13"/);
+    expect(() => new ExpressionState([{ name: 'odd', source: 'test', actionUnits: { AU17R: 0.5 } }])).toThrow(/"AU17R"/);
+  });
+});
+
+describe('ExpressionState.muscleContractions', () => {
+  it('maps each Action Unit side to its muscles with their weights', () => {
+    const s = new ExpressionState();
+    s.setActionUnit('AU12L', 0.8);
+    s.setActionUnit('AU26', 0.5);
+    const c = contractions(s);
+    expect(c['zyg-l']).toBeCloseTo(0.8, 6);
+    expect(c['ris-l']).toBeCloseTo(0.2, 6);
+    expect(c['zyg-r']).toBe(0);
+    expect(c['ris-r']).toBe(0);
+    expect(c.jaw).toBeCloseTo(0.24, 6);
+  });
+
+  it('sums the Action Units on a shared muscle and clamps at 1', () => {
+    const s = new ExpressionState();
+    s.setActionUnit('AU26', 1);
+    expect(contractions(s).jaw).toBeCloseTo(0.48, 6);
+    s.setActionUnit('AU27', 0.7);
+    expect(contractions(s).jaw).toBe(1); // 0.48 + 0.7
+  });
+
+  it('drives the default rig: AU26 opens the jaw about 12 degrees, AU27 about 25', () => {
+    const jaw = DEFAULT_RIG.muscles.findIndex((m) => m.type === 'jaw');
+    const maxAngle = (DEFAULT_RIG.muscles[jaw] as { maxAngle: number }).maxAngle;
+    const s = new ExpressionState(DEFAULT_RIG.presets);
+    const into = new Float32Array(DEFAULT_RIG.muscles.length);
+    s.setActionUnit('AU26', 1);
+    expect(s.muscleContractions(DEFAULT_RIG, into)[jaw] * maxAngle).toBeCloseTo(12, 0);
+    s.reset();
+    s.setActionUnit('AU27', 1);
+    expect(s.muscleContractions(DEFAULT_RIG, into)[jaw] * maxAngle).toBeCloseTo(25, 0);
+  });
+
+  it('fills the given array, leaving entries past the muscles alone, and refuses one too short', () => {
+    const s = new ExpressionState();
+    s.setActionUnit('AU12', 1);
+    const into = new Float32Array(SMALL_RIG.muscles.length + 1).fill(7);
+    expect(s.muscleContractions(SMALL_RIG, into)).toBe(into);
+    expect(Array.from(into)).toEqual([1, 1, 0.25, 0.25, 0, 7]);
+    expect(() => s.muscleContractions(SMALL_RIG, new Float32Array(2))).toThrow(RangeError);
+  });
+
+  it('refuses a rig whose Action Units do not fit the catalogue', () => {
+    const odd: Rig = { ...SMALL_RIG, actionUnits: [{ ...SMALL_RIG.actionUnits[1], bilateral: true, muscles: [{ muscle: 'jaw', side: 'left', weight: 1 }] }] };
+    expect(() => new ExpressionState().muscleContractions(odd, new Float32Array(5))).toThrow(/AU26 as bilateral/);
+  });
+});
+
+describe('ExpressionState.reset', () => {
+  it('clears sliders, preset weights and contractions', () => {
+    const s = new ExpressionState(DEFAULT_RIG.presets);
+    s.setActionUnit('AU4', 0.7);
+    s.applyPreset('fear', 1);
+    s.reset();
+    expect(Object.values(s.getActionUnits()).every((v) => v === 0)).toBe(true);
+    expect(Object.values(s.effective()).every((v) => v === 0)).toBe(true);
+    expect(s.listPresets().every((p) => p.weight === 0)).toBe(true);
+    expect(Array.from(s.muscleContractions(DEFAULT_RIG, new Float32Array(DEFAULT_RIG.muscles.length))).every((v) => v === 0)).toBe(true);
+  });
+});
