@@ -775,3 +775,33 @@ describe('runtime checks', () => {
     expect(rig.muscles[0]).toBe(LINEAR);
   });
 });
+
+describe('jaw muscle with an explicit hinge', () => {
+  it('turns its skin about the given joint, not the box, so the chin moves down and back on an arc', () => {
+    const jaw: JawMuscle = {
+      name: 'jaw',
+      side: 'mid',
+      type: 'jaw',
+      center: [0, 0.63, 0.12],
+      rotation: [0, 0, 0],
+      size: [0.13, 0.05, 0.11],
+      joint: [0, 0.69, 0.065],
+      maxAngle: 20,
+      curve: 0,
+      fade: 0.002,
+    };
+    const field = new MuscleField(jaw);
+    expect(field.joint()).toEqual([0, 0.69, 0.065]);
+    const chin = [0.03, 0.62, 0.14];
+    const d = [0, 0, 0];
+    field.displace(1, chin[0], chin[1], chin[2], d);
+    const moved = chin.map((c, k) => c + d[k]);
+    const radius = (p: number[]) => Math.hypot(p[1] - 0.69, p[2] - 0.065);
+    expect(radius(moved)).toBeCloseTo(radius(chin), 9);
+    expect(moved[0]).toBeCloseTo(chin[0], 12);
+    const angle = (p: number[]) => Math.atan2(p[1] - 0.69, p[2] - 0.065);
+    expect((angle(chin) - angle(moved)) * (180 / Math.PI)).toBeCloseTo(20, 6);
+    expect(d[1]).toBeLessThan(0); // down
+    expect(d[2]).toBeLessThan(0); // and back
+  });
+});

@@ -110,6 +110,7 @@ export function validateMuscle(m: Muscle): void {
       vector(m.center, 'center');
       vector(m.rotation, 'rotation');
       vector(m.size, 'size', true);
+      if (m.joint !== undefined) vector(m.joint, 'joint');
       within(m.maxAngle, 'maxAngle', -90, 90);
       finite(m.curve, 'curve');
       // Without a fade the turn would stop abruptly at the box's faces.
@@ -179,9 +180,11 @@ function packMuscle(m: Muscle, P: Float64Array, o: number): void {
     P[o + HALF_SIZE + 1] = hy;
     P[o + HALF_SIZE + 2] = hz;
     P[o + BOUND_SQUARED] = hx * hx + hy * hy + hz * hz;
-    P[o + JOINT] = m.center[0] - hz * zx;
-    P[o + JOINT + 1] = m.center[1] - hz * zy;
-    P[o + JOINT + 2] = m.center[2] - hz * zz;
+    // The real hinge sits well above the lip line, so a box fitted to the moving skin gets its own joint.
+    const joint = m.joint ?? [m.center[0] - hz * zx, m.center[1] - hz * zy, m.center[2] - hz * zz];
+    P[o + JOINT] = joint[0];
+    P[o + JOINT + 1] = joint[1];
+    P[o + JOINT + 2] = joint[2];
     P[o + MAX_ANGLE] = m.maxAngle * DEGREES;
     P[o + CURVE] = m.curve;
     P[o + FADE] = m.fade;

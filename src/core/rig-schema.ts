@@ -123,6 +123,7 @@ const JawMuscleSchema = v.strictObject(
     center: position,
     rotation: euler,
     size: vec3(positive),
+    joint: v.optional(position),
     maxAngle: angle,
     curve: fraction,
     // Positive: without a fade the turn would stop in a step at the box's faces.

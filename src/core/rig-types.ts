@@ -76,9 +76,9 @@ export interface LidMuscle extends MuscleCommon {
 }
 
 /**
- * Rotation muscle for the jaw: skin inside the box (`size` = full edge lengths, local frame) turns about a joint at
- * the box's back face centre (center minus size.z / 2 along local z), about the local x axis, by up to `maxAngle`
- * degrees. `curve` opens the lip's middle further than its corners (the thesis's extra term), as a fraction of the
+ * Rotation muscle for the jaw: skin inside the box (`size` = full edge lengths, local frame) turns about the local x
+ * axis through `joint` (the jaw hinge; the thesis puts it at the box's back face centre, center minus size.z / 2 along
+ * local z, which is the default), by up to `maxAngle` degrees. `curve` opens the lip's middle further than its corners (the thesis's extra term), as a fraction of the
  * angle added at the centre line; the turn fades to zero within `fade` (metres, > 0) of the box's faces. A positive
  * angle moves the chin down (right-handed about local +x).
  */
@@ -87,6 +87,8 @@ export interface JawMuscle extends MuscleCommon {
   center: Vec3;
   rotation: EulerDegrees;
   size: Vec3;
+  /** The hinge the lower face turns about; defaults to the centre of the box's back face. */
+  joint?: Vec3;
   maxAngle: number;
   curve: number;
   fade: number;
