@@ -1,3 +1,7 @@
+import { Quaternion, Vector3 } from 'three';
+import { DEGREES, eulerMatrix } from '../core/math3';
+import { parseRigText } from '../core/rig-schema';
+import type { Rig } from '../core/rig-types';
 import { FaceHandle } from '../embed/face-handle';
 import { headColliders } from '../render/head-colliders';
 import { loadHeadModel, type HeadModel } from '../render/head-model';
@@ -20,6 +24,7 @@ function requestedResolution(): Resolution {
 
 const modelStatus = document.getElementById('status-model')!;
 const solverStatus = document.getElementById('status-solver')!;
+const rigStatus = document.getElementById('status-rig')!;
 const isolationStatus = document.getElementById('status-isolation')!;
 isolationStatus.textContent = crossOriginIsolated ? 'cross-origin isolated' : 'not cross-origin isolated';
 isolationStatus.dataset.isolated = String(crossOriginIsolated);
@@ -31,7 +36,7 @@ const view = new HeadView(document.getElementById('viewport')!);
 view.start();
 
 /** Starts the skin solver for a shown head and feeds its frames to the skin mesh. */
-async function startSkin(head: HeadModel, skinView: SkinView): Promise<SkinSimulation> {
+async function startSkin(head: HeadModel, skinView: SkinView, rig: Rig | undefined): Promise<SkinSimulation> {
   const { mode, warning } = chooseSolverMode(location.search, crossOriginIsolated);
   if (warning) console.warn(warning);
   solverStatus.textContent = `solver: ${mode}, starting…`;
@@ -41,6 +46,7 @@ async function startSkin(head: HeadModel, skinView: SkinView): Promise<SkinSimul
     renderPositions: geometry.getAttribute('position').array as Float32Array,
     indices: geometry.index!.array as Uint16Array | Uint32Array,
     colliders: headColliders(head),
+    muscles: rig?.muscles ?? [],
   });
   skinView.connect(simulation);
   view.onFrame(() => {
@@ -56,6 +62,45 @@ async function startSkin(head: HeadModel, skinView: SkinView): Promise<SkinSimul
   return simulation;
 }
 
+/**
+ * Loads the default muscle rig. A rig that cannot be loaded leaves the skin running without muscles, and the status
+ * bar says what is wrong.
+ */
+async function loadRig(): Promise<Rig | undefined> {
+  const source = 'rigs/default.json';
+  try {
+    const response = await fetch(`${import.meta.env.BASE_URL}${source}`);
+    if (!response.ok) throw new Error(`${source}: ${response.status} ${response.statusText}`);
+    return parseRigText(await response.text(), source);
+  } catch (error) {
+    rigStatus.textContent = `The muscle rig could not be loaded: ${(error as Error).message}`;
+    rigStatus.className = 'error';
+    console.warn(error);
+    return undefined;
+  }
+}
+
+/**
+ * Turns the lower teeth and tongue (the model's `jaw` node, placed at the jaw hinge) with the rig's jaw muscle, about
+ * the muscle's local x axis, by the angle its contraction asks for.
+ */
+function jawFollower(head: HeadModel, rig: Rig): ((contractions: Float32Array) => void) | undefined {
+  const index = rig.muscles.findIndex((m) => m.type === 'jaw');
+  const muscle = rig.muscles[index];
+  if (!head.jaw || !muscle || muscle.type !== 'jaw') return undefined;
+  const jaw = head.jaw;
+  const frame = new Array<number>(9);
+  eulerMatrix(muscle.rotation, frame);
+  const axis = new Vector3(frame[0], frame[3], frame[6]).normalize();
+  const rest = jaw.quaternion.clone();
+  const turn = new Quaternion();
+  return (contractions) => {
+    turn.setFromAxisAngle(axis, contractions[index] * muscle.maxAngle * DEGREES);
+    jaw.quaternion.multiplyQuaternions(turn, rest);
+  };
+}
+
+const rigLoading = loadRig(); // in parallel with the head
 const resolution = requestedResolution();
 const url = `${import.meta.env.BASE_URL}models/head-${resolution}.glb`;
 /** What failed, for the status bar. */
@@ -70,7 +115,9 @@ try {
   modelStatus.textContent = `${l.name} head: ${l.skinVertices.toLocaleString('en-US')} vertices, ${l.triangles.toLocaleString('en-US')} triangles`;
   failing = solverStatus;
   failure = 'The skin solver could not start';
-  face.attach(await startSkin(head, skinView));
+  const rig = await rigLoading;
+  face.attach(await startSkin(head, skinView, rig), rig);
+  if (rig) face.onContractions = jawFollower(head, rig);
   document.documentElement.dataset.state = 'ready';
 } catch (error) {
   failing.textContent = `${failure}: ${(error as Error).message}`;
