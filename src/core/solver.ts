@@ -180,17 +180,7 @@ export class SkinSolver {
    * along the rest normal; both 0 releases a vertex.
    */
   setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
-    const n = this.topology.vertexCount;
-    for (let i = 0; i < vertices.length; i++) {
-      const v = vertices[i];
-      if (!Number.isInteger(v) || v < 0 || v >= n) throw new Error(`muscle target ${i}: vertex ${v} is not one of the ${n} skin vertices`);
-      for (let k = 0; k < 3; k++) {
-        if (!Number.isFinite(targets[3 * i + k])) throw new Error(`muscle target ${i} (vertex ${v}) has a non-finite coordinate: ${targets[3 * i + k]}`);
-      }
-    }
-    if (!Number.isFinite(weight) || weight < 0 || weight > 1) throw new Error(`muscle weight must be a number from 0 to 1, got ${weight}`);
-    if (!Number.isFinite(normalWeight) || normalWeight < 0 || normalWeight > 1) throw new Error(`muscle normal weight must be a number from 0 to 1, got ${normalWeight}`);
-    if (targets.length < 3 * vertices.length) throw new Error(`muscle targets: ${vertices.length} vertices need ${3 * vertices.length} coordinates, got ${targets.length}`);
+    checkMuscleTargets(this.topology.vertexCount, vertices, targets, weight, normalWeight);
     const { targets: T, weights: W, normalWeights: WN } = this.buffers;
     for (let i = 0; i < vertices.length; i++) {
       const v = vertices[i];
@@ -484,6 +474,31 @@ export class SkinSolver {
       start[ci + 1] = vertices.length;
     }
     return { start, vertices: Uint32Array.from(vertices), clearance: Float32Array.from(clearance) };
+  }
+}
+
+/**
+ * Throws an error naming the first bad muscle-target input: a vertex that is not one of `vertexCount`, a target
+ * coordinate that is not finite, a weight outside 0..1. Every entry point checks with this before changing anything.
+ */
+export function checkMuscleTargets(vertexCount: number, vertices: ArrayLike<number>, targets: ArrayLike<number>, weight: number, normalWeight: number): void {
+  const isArrayLike = (a: unknown): boolean => Array.isArray(a) || ArrayBuffer.isView(a);
+  if (!isArrayLike(vertices) || !isArrayLike(targets)) throw new Error('setMuscleTargets: vertices and targets must be arrays of numbers');
+  if (targets.length !== 3 * vertices.length) {
+    throw new Error(`setMuscleTargets: ${vertices.length} vertices need ${3 * vertices.length} target coordinates, got ${targets.length}`);
+  }
+  for (const [name, w] of [['weight', weight], ['normal weight', normalWeight]] as const) {
+    if (typeof w !== 'number' || !Number.isFinite(w) || w < 0 || w > 1) throw new Error(`setMuscleTargets: ${name} must be a finite number from 0 to 1, got ${w}`);
+  }
+  for (let i = 0; i < vertices.length; i++) {
+    const v = vertices[i];
+    if (!Number.isInteger(v) || v < 0 || v >= vertexCount) throw new Error(`setMuscleTargets: vertex ${i} is ${v}, not one of the ${vertexCount} skin vertices`);
+    for (let k = 0; k < 3; k++) {
+      const t = targets[3 * i + k];
+      if (typeof t !== 'number' || !Number.isFinite(t)) {
+        throw new Error(`setMuscleTargets: the target of vertex ${v} (entry ${i}) has a non-finite ${'xyz'[k]} coordinate: ${t}`);
+      }
+    }
   }
 }
 

@@ -1,4 +1,4 @@
-import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from '../core/solver';
+import { SKIN_DEFAULTS, checkMuscleTargets, validateParameters, type SkinParameters } from '../core/solver';
 import {
   CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,
@@ -48,27 +48,7 @@ export class InputStaging {
    * along the normal (both 0 release them; see SolverBuffers).
    */
   setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
-    const n = this.control.weights.length;
-    if (!isArrayLike(vertices) || !isArrayLike(targets)) throw new Error('setMuscleTargets: vertices and targets must be arrays of numbers');
-    if (targets.length !== 3 * vertices.length) {
-      throw new Error(`setMuscleTargets: ${vertices.length} vertices need ${3 * vertices.length} target coordinates, got ${targets.length}`);
-    }
-    if (typeof weight !== 'number' || !Number.isFinite(weight) || weight < 0 || weight > 1) {
-      throw new Error(`setMuscleTargets: weight must be a finite number from 0 to 1, got ${weight}`);
-    }
-    if (typeof normalWeight !== 'number' || !Number.isFinite(normalWeight) || normalWeight < 0 || normalWeight > 1) {
-      throw new Error(`setMuscleTargets: normal weight must be a finite number from 0 to 1, got ${normalWeight}`);
-    }
-    for (let i = 0; i < vertices.length; i++) {
-      const v = vertices[i];
-      if (!Number.isInteger(v) || v < 0 || v >= n) throw new Error(`setMuscleTargets: vertex ${i} is ${v}, not one of the ${n} skin vertices`);
-      for (let k = 0; k < 3; k++) {
-        const t = targets[3 * i + k];
-        if (typeof t !== 'number' || !Number.isFinite(t)) {
-          throw new Error(`setMuscleTargets: the target of vertex ${v} (entry ${i}) has a non-finite ${'xyz'[k]} coordinate: ${t}`);
-        }
-      }
-    }
+    checkMuscleTargets(this.control.weights.length, vertices, targets, weight, normalWeight);
     this.begin();
     const { targets: T, weights: W, normalWeights: WN } = this.control;
     for (let i = 0; i < vertices.length; i++) {
