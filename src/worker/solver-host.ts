@@ -1,4 +1,5 @@
 import type { Collider } from '../core/colliders';
+import { JawFollower } from '../core/jaw-follower';
 import { MuscleRig } from '../core/muscles';
 import type { Muscle } from '../core/rig-types';
 import { SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
@@ -34,6 +35,8 @@ export class SolverHost {
   readonly solver: SkinSolver;
   /** Turns contractions into the solver's muscle targets and weights; absent without muscles. */
   private readonly rig: MuscleRig | undefined;
+  /** Moves the lower teeth's colliders with the jaw muscle; null without a jaw or lower teeth. */
+  private readonly jaw: JawFollower | null;
   private readonly header: FrameHeader = { frames: 0, sleeping: true, appliedInput: 0, solveMs: 0 };
   /** Constraint counts change only when inputs do, so they are counted per input batch, not per frame. */
   private readonly constraints = new Int32Array(CONSTRAINT_KINDS.length);
@@ -44,6 +47,7 @@ export class SolverHost {
     console.info(describeTopology(this.topology));
     this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders });
     this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
+    this.jaw = JawFollower.create(input.muscles, input.colliders);
     // Start from the skin's own equilibrium (the float32 rest lengths move it by a hair), so that every mode starts
     // from the same sleeping shape however many frames pass before the first input arrives.
     for (let i = 0; i < MAX_SETTLING_FRAMES && this.step(); i++);
@@ -60,6 +64,7 @@ export class SolverHost {
     }
     // Rig contractions replace directly set targets: the rig computes every vertex's target and weights.
     if (contractions && this.rig) {
+      this.jaw?.update(contractions);
       this.rig.compute(contractions, this.solver.buffers);
       this.solver.updateMuscles();
     }
