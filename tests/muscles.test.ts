@@ -1,20 +1,12 @@
 import { Euler, Matrix4 } from 'three';
 import { describe, expect, it } from 'vitest';
+import { mulberry32 } from '../scripts/model/eye';
 import { DEGREES, eulerMatrix, rotateAboutAxis } from '../src/core/math3';
 import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle, type MuscleOutputs } from '../src/core/muscles';
 import type { JawMuscle, LidMuscle, LinearMuscle, Muscle, SphincterMuscle, Vec3 } from '../src/core/rig-types';
 
 /** A seeded generator of uniform numbers in [0, 1) (mulberry32), so every run sees the same points. */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+const random = mulberry32;
 
 /** n points uniform in the box lo..hi, seeded. */
 function randomPoints(n: number, lo: Vec3, hi: Vec3, seed: number): Float32Array {

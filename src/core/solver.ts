@@ -181,23 +181,13 @@ export class SkinSolver {
    */
   setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
     checkMuscleTargets(this.topology.vertexCount, vertices, targets, weight, normalWeight);
-    const { targets: T, weights: W, normalWeights: WN } = this.buffers;
-    for (let i = 0; i < vertices.length; i++) {
-      const v = vertices[i];
-      T[3 * v] = targets[3 * i];
-      T[3 * v + 1] = targets[3 * i + 1];
-      T[3 * v + 2] = targets[3 * i + 2];
-      W[v] = weight;
-      WN[v] = normalWeight;
-    }
+    writeMuscleTargets(this.buffers, vertices, targets, weight, normalWeight);
     this.updateMuscles();
   }
 
   /** Releases every muscle constraint. */
   clearMuscleTargets(): void {
-    this.buffers.weights.fill(0);
-    this.buffers.normalWeights.fill(0);
-    this.buffers.targets.set(this.topology.rest);
+    clearMuscleInputs(this.buffers, this.topology.rest);
     this.updateMuscles();
   }
 
@@ -500,6 +490,29 @@ export function checkMuscleTargets(vertexCount: number, vertices: ArrayLike<numb
       }
     }
   }
+}
+
+/** Per-vertex muscle inputs: the solver's buffers and the worker's control block both have them. */
+export type MuscleInputs = Pick<SolverBuffers, 'targets' | 'weights' | 'normalWeights'>;
+
+/** Writes checked muscle targets (see checkMuscleTargets) and both weights for some vertices into `into`. */
+export function writeMuscleTargets(into: MuscleInputs, vertices: ArrayLike<number>, targets: ArrayLike<number>, weight: number, normalWeight: number): void {
+  const { targets: T, weights: W, normalWeights: WN } = into;
+    for (let i = 0; i < vertices.length; i++) {
+      const v = vertices[i];
+      T[3 * v] = targets[3 * i];
+      T[3 * v + 1] = targets[3 * i + 1];
+      T[3 * v + 2] = targets[3 * i + 2];
+      W[v] = weight;
+      WN[v] = normalWeight;
+    }
+}
+
+/** Releases every vertex: targets back at rest, both weights 0. */
+export function clearMuscleInputs(into: MuscleInputs, rest: Float32Array): void {
+  into.targets.set(rest);
+  into.weights.fill(0);
+  into.normalWeights.fill(0);
 }
 
 const RANGES: Record<keyof SkinParameters, [number, number, boolean]> = {

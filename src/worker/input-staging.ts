@@ -1,4 +1,4 @@
-import { SKIN_DEFAULTS, checkMuscleTargets, validateParameters, type SkinParameters } from '../core/solver';
+import { SKIN_DEFAULTS, checkMuscleTargets, clearMuscleInputs, validateParameters, writeMuscleTargets, type SkinParameters } from '../core/solver';
 import {
   CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,
@@ -50,24 +50,14 @@ export class InputStaging {
   setMuscleTargets(vertices: ArrayLike<number>, targets: ArrayLike<number>, weight = 1, normalWeight = weight): void {
     checkMuscleTargets(this.control.weights.length, vertices, targets, weight, normalWeight);
     this.begin();
-    const { targets: T, weights: W, normalWeights: WN } = this.control;
-    for (let i = 0; i < vertices.length; i++) {
-      const v = vertices[i];
-      T[3 * v] = targets[3 * i];
-      T[3 * v + 1] = targets[3 * i + 1];
-      T[3 * v + 2] = targets[3 * i + 2];
-      W[v] = weight;
-      WN[v] = normalWeight;
-    }
+    writeMuscleTargets(this.control, vertices, targets, weight, normalWeight);
     this.touchMuscles();
   }
 
   /** Releases every muscle pull. */
   clearMuscleTargets(): void {
     this.begin();
-    this.control.targets.set(this.rest);
-    this.control.weights.fill(0);
-    this.control.normalWeights.fill(0);
+    clearMuscleInputs(this.control, this.rest);
     this.touchMuscles();
   }
 
