@@ -1,17 +1,47 @@
 /**
- * Contact sheet of every Action Unit and preset at full intensity: `npm run gallery [-- low|medium|high]`.
+ * Contact sheet of every Action Unit and preset at full intensity: `npm run gallery [-- low|medium|high] [options]`.
  * Builds the app, serves it, sets each expression through `window.face`, waits for the skin to settle and writes
  * docs/images/gallery.jpg (tiles labelled with the expression; "not settled" if it did not within the time limit).
+ *
+ * Options:
+ *   --only AU1+AU2,AU4,happiness   these expressions only (`+` combines Action Units and presets in one tile)
+ *   --region forehead|brows|eyes|nose|mouth|chin|face   a close-up of part of the face (default: face)
+ *   --columns N                    tiles per row (default 6)
+ *   --out docs/images/name.jpg     where to write the sheet
  */
 import { spawn, execSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname } from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumPath } from './chromium-path.mjs';
 
-const resolution = process.argv[2] ?? 'medium';
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const i = args.indexOf(`--${name}`);
+  return i >= 0 && i + 1 < args.length ? args[i + 1] : fallback;
+};
+const resolution = args[0] && !args[0].startsWith('--') ? args[0] : 'medium';
+const only = option('only', '')
+  .split(',')
+  .filter(Boolean);
+const out = option('out', 'docs/images/gallery.jpg');
+const columns = Number(option('columns', '6'));
+/** Page areas (CSS pixels of the 640 x 640 view) framing parts of the face; close-ups are shot at 3x. */
+const REGIONS = {
+  face: { x: 170, y: 150, width: 300, height: 390, scale: 1 },
+  forehead: { x: 240, y: 150, width: 160, height: 80, scale: 3 },
+  brows: { x: 250, y: 190, width: 140, height: 70, scale: 3 },
+  eyes: { x: 220, y: 215, width: 200, height: 80, scale: 3 },
+  nose: { x: 260, y: 220, width: 120, height: 110, scale: 3 },
+  mouth: { x: 245, y: 310, width: 150, height: 90, scale: 3 },
+  chin: { x: 255, y: 350, width: 130, height: 90, scale: 3 },
+};
+const regionName = option('region', 'face');
+const region = REGIONS[regionName];
+if (!region) throw new Error(`--region must be one of ${Object.keys(REGIONS).join(', ')}, got ${regionName}`);
+const TILE = { width: region.width * region.scale, height: region.height * region.scale };
 const PORT = 4180;
-const TILE = { width: 300, height: 390 };
-const SETTLE_MS = 30_000;
+const SETTLE_MS = 60_000;
 
 execSync('npx vite build', { stdio: 'ignore' });
 const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
@@ -20,7 +50,7 @@ const browser = await chromium.launch({
   args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--no-first-run'],
 });
 try {
-  const page = await browser.newPage({ viewport: { width: 640, height: 640 } });
+  const page = await browser.newPage({ viewport: { width: 640, height: 640 }, deviceScaleFactor: region.scale });
   for (let i = 0; ; i++) {
     try {
       await page.goto(`http://127.0.0.1:${PORT}/?resolution=${resolution}`);
@@ -31,19 +61,20 @@ try {
     }
   }
   await page.evaluate(() => window.face.ready);
-  const items = await page.evaluate(() => [
-    'neutral',
-    ...window.face.listActionUnits().map((au) => au.id),
-    ...window.face.listPresets().map((p) => p.name),
-  ]);
+  const items =
+    only.length > 0
+      ? only
+      : await page.evaluate(() => ['neutral', ...window.face.listActionUnits().map((au) => au.id), ...window.face.listPresets().map((p) => p.name)]);
   const tiles = [];
   for (const item of items) {
     const settled = await page.evaluate(
       async ({ item, timeout }) => {
         const face = window.face;
         face.reset();
-        if (item.startsWith('AU')) face.setActionUnit(item, 1);
-        else if (item !== 'neutral') face.applyPreset(item, 1);
+        for (const part of item.split('+')) {
+          if (part.startsWith('AU')) face.setActionUnit(part, 1);
+          else if (part !== 'neutral') face.applyPreset(part, 1);
+        }
         try {
           await face.settle(timeout);
           return true;
@@ -54,13 +85,12 @@ try {
       { item, timeout: SETTLE_MS },
     );
     await page.waitForTimeout(200); // let the renderer show the newest frame
-    const png = await page.screenshot({ clip: { x: 170, y: 150, width: TILE.width, height: TILE.height } });
+    const png = await page.screenshot({ clip: { x: region.x, y: region.y, width: region.width, height: region.height } });
     tiles.push({ label: settled ? item : `${item} (not settled)`, data: png.toString('base64') });
     console.log(`${item}: ${settled ? 'settled' : 'not settled'}`);
   }
   const sheet = await page.evaluate(
-    async ({ tiles, tile }) => {
-      const columns = 6;
+    async ({ tiles, tile, columns }) => {
       const label = 22;
       const canvas = document.createElement('canvas');
       canvas.width = columns * tile.width;
@@ -81,11 +111,11 @@ try {
       }
       return canvas.toDataURL('image/jpeg', 0.85).split(',')[1];
     },
-    { tiles, tile: TILE },
+    { tiles, tile: TILE, columns: Math.min(columns, tiles.length) },
   );
-  mkdirSync('docs/images', { recursive: true });
-  writeFileSync('docs/images/gallery.jpg', Buffer.from(sheet, 'base64'));
-  console.log(`wrote docs/images/gallery.jpg (${tiles.length} expressions, ${resolution} head)`);
+  mkdirSync(dirname(out), { recursive: true });
+  writeFileSync(out, Buffer.from(sheet, 'base64'));
+  console.log(`wrote ${out} (${tiles.length} expressions, ${resolution} head)`);
 } finally {
   await browser.close();
   process.kill(-server.pid);

@@ -116,9 +116,18 @@ export class SkinSolver {
   readonly buffers: SolverBuffers;
   private readonly params: SkinParameters = { ...SKIN_DEFAULTS };
   private readonly previous: Float32Array;
+  /** Running means of each vertex's move (xyz) and of its length, to tell a vertex going round from one going somewhere. */
+  private readonly meanStep: Float32Array;
+  private readonly meanStepLength: Float32Array;
+  /** Running mean of each vertex's solved move before damping: it shrinks where a circling dies out by itself. */
+  private readonly meanRawLength: Float32Array;
+  /** Share of its solved move each vertex takes this frame (see `damp`). */
+  private readonly relaxation: Float32Array;
   private readonly held: Uint32Array;
   private heldCount = 0;
   private readonly bendStiffness: Float32Array;
+  /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
+  private readonly triangleFrames: Float32Array;
   private readonly seed: Float32Array;
   private readonly colliders: Collider[];
   private readonly colliderStart: Uint32Array;
@@ -139,6 +148,10 @@ export class SkinSolver {
     const n = topology.vertexCount;
     this.buffers = options.buffers ?? createSolverBuffers(topology);
     this.previous = new Float32Array(3 * n);
+    this.meanStep = new Float32Array(3 * n);
+    this.meanStepLength = new Float32Array(n);
+    this.meanRawLength = new Float32Array(n);
+    this.relaxation = new Float32Array(n).fill(1);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
     // A fixed, deterministic per-vertex value in [-0.25, 0.75): breaks the symmetry of a flat compressed patch so it
@@ -146,6 +159,7 @@ export class SkinSolver {
     // mean lifts the whole patch in one bulge instead of folding it.
     this.seed = new Float32Array(n);
     for (let v = 0; v < n; v++) this.seed[v] = hash01(v) - 0.25;
+    this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.colliders = options.colliders ?? [];
     const c = this.collisionCandidates(this.colliders);
     this.colliderStart = c.start;
@@ -198,6 +212,11 @@ export class SkinSolver {
     let count = 0;
     for (let v = 0; v < W.length; v++) if (W[v] > 0 || WN[v] > 0) this.held[count++] = v;
     this.heldCount = count;
+    // New inputs start a new motion: every vertex may take whole steps again.
+    this.relaxation.fill(1);
+    this.meanStep.fill(0);
+    this.meanStepLength.fill(0);
+    this.meanRawLength.fill(0);
     this.inputsChanged = true;
     this.wake();
   }
@@ -240,7 +259,10 @@ export class SkinSolver {
       this.projectMuscles();
       t0 = now();
       time.muscles += t0 - t1;
-      for (let l = 0; l < p.lengthIterations; l++) this.projectLengths();
+      for (let l = 0; l < p.lengthIterations; l++) {
+        this.projectLengths();
+        this.projectOrientation();
+      }
       t1 = now();
       time.lengths += t1 - t0;
       this.projectBending();
@@ -249,11 +271,11 @@ export class SkinSolver {
       this.projectCollisions();
       time.collisions += now() - t0;
     }
-    let move = 0;
-    for (let i = 0; i < x.length; i++) {
-      const d = Math.abs(x[i] - this.previous[i]);
-      if (d > move) move = d;
-    }
+    // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle.
+    const untangle = now();
+    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
+    time.lengths += now() - untangle;
+    const move = this.damp();
     this.lastMove = move;
     this.frames++;
     const beforeNormals = now();
@@ -265,6 +287,50 @@ export class SkinSolver {
     this.inputsChanged = false;
     if (!changed && move <= p.sleepTolerance * this.topology.size) this.asleep = true;
     return true;
+  }
+
+  /**
+   * Damps vertices that circle instead of settling, and returns the largest move. Where compressed skin is sharply
+   * curved, the length, bending and fold projections can hand a vertex around between a few shapes, frame after
+   * frame (a limit cycle, not a rest state). Each vertex keeps a running mean of its moves and of their lengths: a
+   * vertex going somewhere has a mean move about as long as its moves, one going round has a much shorter one and
+   * takes a smaller share of its solved move next frame (down to MIN_RELAXATION); one going somewhere regains it.
+   * The skin thus comes to rest where it would circle for ever, as real tissue's friction would stop it.
+   */
+  private damp(): number {
+    const x = this.buffers.positions;
+    const prev = this.previous;
+    const mean = this.meanStep;
+    const meanLength = this.meanStepLength;
+    const meanRaw = this.meanRawLength;
+    const share = this.relaxation;
+    const keep = 1 - STEP_MEMORY;
+    let move = 0;
+    for (let v = 0, i = 0; v < share.length; v++, i += 3) {
+      const w = share[v];
+      const dx = w * (x[i] - prev[i]);
+      const dy = w * (x[i + 1] - prev[i + 1]);
+      const dz = w * (x[i + 2] - prev[i + 2]);
+      x[i] = prev[i] + dx;
+      x[i + 1] = prev[i + 1] + dy;
+      x[i + 2] = prev[i + 2] + dz;
+      const mx = (mean[i] = STEP_MEMORY * mean[i] + keep * dx);
+      const my = (mean[i + 1] = STEP_MEMORY * mean[i + 1] + keep * dy);
+      const mz = (mean[i + 2] = STEP_MEMORY * mean[i + 2] + keep * dz);
+      const length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      const ml = (meanLength[v] = STEP_MEMORY * meanLength[v] + keep * length);
+      // The solved move before damping: a circling that dies out by itself is left alone.
+      const raw = length / w;
+      const rawBefore = meanRaw[v];
+      const rawNow = (meanRaw[v] = STEP_MEMORY * rawBefore + keep * raw);
+      if (ml > 0) {
+        const straight = Math.sqrt(mx * mx + my * my + mz * mz) / ml;
+        if (straight >= 0.5) share[v] = Math.min(w * 1.1, 1);
+        else if (rawNow > 0.98 * rawBefore) share[v] = Math.max(w * 0.7, MIN_RELAXATION);
+      }
+      if (length > move) move = length;
+    }
+    return move;
   }
 
   /**
@@ -365,6 +431,61 @@ export class SkinSolver {
         x[ib + 2] += pb * N[ib + 2];
       }
     }
+  }
+
+  /**
+   * Orientation: each triangle's area projected on its rest normal stays above a fraction of its rest area, so
+   * compressed skin folds (the triangle tilts) instead of crumpling flat (the triangle turns over within the
+   * surface), which no length constraint can tell from the right shape. The projected area is linear in each corner,
+   * so one projection restores the bound exactly; the corrections lie in the rest tangent plane.
+   */
+  private projectOrientation(): boolean {
+    const x = this.buffers.positions;
+    const T = this.topology.triangles;
+    const F = this.triangleFrames;
+    const count = T.length / 3;
+    let corrected = false;
+    for (let t = 0; t < count; t++) {
+      const ia = 3 * T[3 * t];
+      const ib = 3 * T[3 * t + 1];
+      const ic = 3 * T[3 * t + 2];
+      const nx = F[4 * t];
+      const ny = F[4 * t + 1];
+      const nz = F[4 * t + 2];
+      const ux = x[ib] - x[ia];
+      const uy = x[ib + 1] - x[ia + 1];
+      const uz = x[ib + 2] - x[ia + 2];
+      const vx = x[ic] - x[ia];
+      const vy = x[ic + 1] - x[ia + 1];
+      const vz = x[ic + 2] - x[ia + 2];
+      // Twice the area along n: n . (u x v).
+      const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - F[4 * t + 3];
+      if (C >= 0) continue;
+      corrected = true;
+      // Gradients: b gets v x n, c gets n x u, a gets minus their sum, (u - v) x n.
+      const gbx = vy * nz - vz * ny;
+      const gby = vz * nx - vx * nz;
+      const gbz = vx * ny - vy * nx;
+      const gcx = ny * uz - nz * uy;
+      const gcy = nz * ux - nx * uz;
+      const gcz = nx * uy - ny * ux;
+      const gax = -gbx - gcx;
+      const gay = -gby - gcy;
+      const gaz = -gbz - gcz;
+      const norm = gax * gax + gay * gay + gaz * gaz + gbx * gbx + gby * gby + gbz * gbz + gcx * gcx + gcy * gcy + gcz * gcz;
+      if (norm === 0) continue;
+      const lambda = -C / norm;
+      x[ia] += lambda * gax;
+      x[ia + 1] += lambda * gay;
+      x[ia + 2] += lambda * gaz;
+      x[ib] += lambda * gbx;
+      x[ib + 1] += lambda * gby;
+      x[ib + 2] += lambda * gbz;
+      x[ic] += lambda * gcx;
+      x[ic + 1] += lambda * gcy;
+      x[ic + 2] += lambda * gcz;
+    }
+    return corrected;
   }
 
   /**
@@ -539,6 +660,40 @@ export function validateParameters(p: SkinParameters): void {
 
 /** Milliseconds from a monotonic clock (performance.now exists in browsers, workers and Node). */
 const now = (): number => performance.now();
+
+/** The least share of its solved move a circling vertex takes in a frame (see SkinSolver.damp). */
+export const MIN_RELAXATION = 1 / 4096;
+/** Weight of the past in the running means of each vertex's moves: about the last five frames count. */
+const STEP_MEMORY = 0.8;
+
+/**
+ * The least share of its rest area a triangle keeps along its rest normal: a triangle tilted 75 degrees into a fold
+ * still passes, one flattened to a sliver or turned over does not.
+ */
+export const MIN_PROJECTED_AREA = 0.25;
+/** At most this many orientation passes end a frame (they stop once a pass corrects nothing). */
+const ORIENTATION_PASSES = 16;
+
+/** Each triangle's rest unit normal and twice its least projected area (MIN_PROJECTED_AREA of the rest), xyzA. */
+function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Array {
+  const count = triangles.length / 3;
+  const out = new Float32Array(4 * count);
+  for (let t = 0; t < count; t++) {
+    const a = 3 * triangles[3 * t];
+    const b = 3 * triangles[3 * t + 1];
+    const c = 3 * triangles[3 * t + 2];
+    const ux = rest[b] - rest[a], uy = rest[b + 1] - rest[a + 1], uz = rest[b + 2] - rest[a + 2];
+    const vx = rest[c] - rest[a], vy = rest[c + 1] - rest[a + 1], vz = rest[c + 2] - rest[a + 2];
+    const cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+    const twiceArea = Math.hypot(cx, cy, cz);
+    if (twiceArea === 0) continue;
+    out[4 * t] = cx / twiceArea;
+    out[4 * t + 1] = cy / twiceArea;
+    out[4 * t + 2] = cz / twiceArea;
+    out[4 * t + 3] = MIN_PROJECTED_AREA * twiceArea;
+  }
+  return out;
+}
 
 /** A fixed hash of an integer to [0, 1). */
 function hash01(i: number): number {
