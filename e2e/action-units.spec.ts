@@ -65,6 +65,53 @@ test('AU26 lowers the chin', async ({ page }) => {
   expect(m.chin[1]).toBeLessThan(-4);
 });
 
+test('AU18 draws both lip corners toward the middle of the mouth', async ({ page }) => {
+  const m = await actionUnitMoves(page, 'AU18');
+  expect(m.lipCornerL[0]).toBeLessThan(-2); // the left corner (+x) moves toward x = 0
+  expect(m.lipCornerR[0]).toBeGreaterThan(2);
+});
+
+/** The left eye's centre on the default head (metres). */
+const EYE_L = [0.0308, 0.7284, 0.1245] as const;
+
+test('AU43 brings the upper lids down to the lower lids', async ({ page }) => {
+  // Across the middle of the left eye (every 4 mm from 4 mm inside to 4 mm outside its centre), the vertical opening
+  // between the lid margins: the two skin vertices at rest either side of the widest gap in front of the eye.
+  const openings = await page.evaluate(
+    async ({ eye }) => {
+      const face = window.face;
+      const measure = () => {
+        const { rest, positions } = face.getSkin();
+        return [-0.004, 0, 0.004].map((dx) => {
+          const near: number[] = [];
+          for (let v = 0; v < rest.length / 3; v++) {
+            if (Math.abs(rest[3 * v] - eye[0] - dx) < 0.0015 && rest[3 * v + 2] > eye[2] + 0.005 && Math.abs(rest[3 * v + 1] - eye[1]) < 0.006) near.push(v);
+          }
+          near.sort((a, b) => rest[3 * a + 1] - rest[3 * b + 1]);
+          let gap = 0;
+          let upper = -1;
+          let lower = -1;
+          for (let k = 1; k < near.length; k++) {
+            const g = rest[3 * near[k] + 1] - rest[3 * near[k - 1] + 1];
+            if (g > gap) [gap, upper, lower] = [g, near[k], near[k - 1]];
+          }
+          return 1000 * (positions[3 * upper + 1] - positions[3 * lower + 1]);
+        });
+      };
+      face.reset();
+      await face.settle(60_000);
+      const open = measure();
+      face.setActionUnit('AU43', 1);
+      await face.settle(120_000);
+      return { open, closed: measure() };
+    },
+    { eye: EYE_L },
+  );
+  for (const mm of openings.open) expect(mm).toBeGreaterThan(5);
+  // Closed: the margins meet within a millimetre and a half (a little overlap is a closed eye too).
+  for (const mm of openings.closed) expect(Math.abs(mm)).toBeLessThan(1.5);
+});
+
 test('an unknown Action Unit or a NaN intensity throws naming it and changes nothing', async ({ page }) => {
   const result = await page.evaluate(() => {
     const face = window.face;

@@ -8,6 +8,7 @@
  *   --region forehead|brows|eyes|nose|mouth|chin|face   a close-up of part of the face (default: face)
  *   --columns N                    tiles per row (default 6)
  *   --out docs/images/name.jpg     where to write the sheet
+ *   --no-build                     serve the last build (dist/) as it is
  */
 import { spawn, execSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -43,7 +44,7 @@ const TILE = { width: region.width * region.scale, height: region.height * regio
 const PORT = 4180;
 const SETTLE_MS = 60_000;
 
-execSync('npx vite build', { stdio: 'ignore' });
+if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
 const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
 const browser = await chromium.launch({
   executablePath: chromiumPath(),

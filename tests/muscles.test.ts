@@ -271,6 +271,16 @@ describe('sphincter muscle', () => {
     expect(Math.abs(out[1])).toBeGreaterThan(2.9 * Math.abs(out[0]));
   });
 
+  it('pushes away from the center along an axis of negative scale (lips thrust forward in a pucker)', () => {
+    const pucker = new MuscleField({ ...SPHINCTER, scale: [1, 1, -0.5] });
+    // In front of the center and to its side: pulled in sideways, pushed out in front, half as much per metre.
+    const f = pucker.displace(1, c[0] + 0.01, c[1], c[2] + 0.01, out);
+    expect(f).toBeGreaterThan(0);
+    expect(out[0]).toBeLessThan(0);
+    expect(out[2]).toBeGreaterThan(0);
+    expect(out[2]).toBeCloseTo(-0.5 * out[0], 12);
+  });
+
   it('works in its turned frame: turning the muscle turns its field', () => {
     const plain = new MuscleField({ ...SPHINCTER, center: [0, 0, 0], scale: [0.5, 1.5, 1] });
     const rotation: Vec3 = [25, -40, 70];
@@ -352,6 +362,20 @@ describe('lid muscle (rotation)', () => {
     expect(norm(sub(o.targets, joint))).toBeCloseTo(norm(sub(rest, joint)), 7);
     expect(o.weights[0]).toBe(1);
     expect(o.normalWeights[0]).toBe(1);
+  });
+
+  it('carries its skin the whole turn even where the turn takes it out of the ellipsoid (its zone is asked at rest)', () => {
+    // A point in the inner region, 9 mm along local z from the joint: 90 degrees swing it out of the ellipsoid.
+    const R = new Float64Array(9);
+    eulerMatrix(LID.rotation, R);
+    const rest = Float32Array.from([0, 1, 2].map((k) => joint[k] + 0.009 * R[3 * k + 2]));
+    const wide: LidMuscle = { ...LID, maxAngle: 90 };
+    const o = outputsFor(1);
+    new MuscleRig(rest, [wide]).compute([1], o);
+    const moved = sub(o.targets, rest);
+    const wideField = new MuscleField(wide);
+    expect(wideField.displace(1, o.targets[0], o.targets[1], o.targets[2], out)).toBe(0); // outside now
+    expect(turnAngle(rest, moved)).toBeCloseTo(90, 4);
   });
 
   it('is zero outside its ellipsoid and fades continuously to it', () => {
@@ -439,6 +463,23 @@ describe('jaw muscle (rotation)', () => {
       expect(jump).toBeLessThan(10 * step);
       expect(fieldJumps(field, 1, line(a, b, step / 2)).jump).toBeLessThan(0.6 * jump);
     }
+  });
+});
+
+describe('jaw muscle lip fade', () => {
+  it('fades over lipFade below its top face and over fade above its bottom face', () => {
+    const jaw = new MuscleField({ ...JAW, lipFade: 0.002 });
+    const plain = new MuscleField(JAW);
+    const out = [0, 0, 0];
+    // Top face at y = -0.02, bottom at -0.08 (centre -0.05, height 6 cm); x, z well inside.
+    expect(jaw.displace(1, 0, -0.0225, 0.04, out)).toBe(1); // 2.5 mm under the top: past the lip fade
+    expect(plain.displace(1, 0, -0.0225, 0.04, out)).toBeLessThan(0.5); // within the 1 cm fade
+    expect(jaw.displace(1, 0, -0.0775, 0.04, out)).toBeCloseTo(plain.displace(1, 0, -0.0775, 0.04, out), 12);
+    expect(jaw.displace(1, 0, -0.0775, 0.04, out)).toBeLessThan(0.5);
+  });
+
+  it('rejects a lipFade that is not positive, naming it', () => {
+    expect(() => validateMuscle({ ...JAW, lipFade: 0 })).toThrow('muscle test-jaw: lipFade must be greater than 0, got 0');
   });
 });
 

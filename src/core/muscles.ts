@@ -37,6 +37,7 @@ const MAX_ANGLE = 28; // lid, jaw: radians at contraction 1
 const INNER_FRACTION = 29; // lid
 const CURVE = 29; // jaw
 const FADE = 30; // jaw, metres
+const LIP_FADE = 31; // jaw, metres: the top face's fade
 
 const LINEAR = 0;
 const SPHINCTER = 1;
@@ -90,8 +91,7 @@ export function validateMuscle(m: Muscle): void {
       // radii on an axis are allowed (a rig may want no fade along the depth): the step is then only at that axis's
       // two poles, the outer ellipsoid's tips, and the fade is steep only near them.
       for (let i = 0; i < 3; i++) if (!(inner[i] <= radii[i])) fail(`innerRadii[${i}] must not exceed radii[${i}] (${radii[i]}), got ${inner[i]}`);
-      const scale = vector(m.scale, 'scale');
-      for (let i = 0; i < 3; i++) if (scale[i] < 0) fail(`scale[${i}] must not be negative, got ${scale[i]}`);
+      vector(m.scale, 'scale');
       if (finite(m.strength, 'strength') < 0) fail(`strength must not be negative, got ${m.strength}`);
       within(m.normalWeight, 'normalWeight', 0, 1);
       return;
@@ -115,6 +115,7 @@ export function validateMuscle(m: Muscle): void {
       finite(m.curve, 'curve');
       // Without a fade the turn would stop abruptly at the box's faces.
       if (!(finite(m.fade, 'fade') > 0)) fail(`fade must be greater than 0, got ${m.fade}`);
+      if (m.lipFade !== undefined && !(finite(m.lipFade, 'lipFade') > 0)) fail(`lipFade must be greater than 0, got ${m.lipFade}`);
       return;
     }
     default:
@@ -188,6 +189,7 @@ function packMuscle(m: Muscle, P: Float64Array, o: number): void {
     P[o + MAX_ANGLE] = m.maxAngle * DEGREES;
     P[o + CURVE] = m.curve;
     P[o + FADE] = m.fade;
+    P[o + LIP_FADE] = m.lipFade ?? m.fade;
     P[o + STRENGTH] = 1;
     P[o + NORMAL_SHARE] = 1;
   }
@@ -195,17 +197,24 @@ function packMuscle(m: Muscle, P: Float64Array, o: number): void {
 
 /**
  * Displacement of the point (x, y, z) by packed muscle `o` at contraction `c`, into `out[0..3]`; returns the
- * muscle's falloff there (0..1; 0 outside its zone, where the displacement is zero too). Allocates nothing.
+ * muscle's falloff (0..1; 0 outside its zone, where the displacement is zero too). Linear and sphincter fields are
+ * asked where the skin is now (so skin sliding out of a zone is pulled less); a rotation muscle's zone is asked at the
+ * skin's rest point (rx, ry, rz), because the lid or jaw carries its skin with it: skin it has turned is still its
+ * skin, and a lid closing would otherwise leave its own zone halfway. Allocates nothing.
  */
-function displace(P: Float64Array, o: number, c: number, x: number, y: number, z: number, out: Float64Array | number[]): number {
+function displace(P: Float64Array, o: number, c: number, x: number, y: number, z: number, out: Float64Array | number[], rx = x, ry = y, rz = z): number {
   out[0] = 0;
   out[1] = 0;
   out[2] = 0;
-  const dx = x - P[o + ANCHOR];
-  const dy = y - P[o + ANCHOR + 1];
-  const dz = z - P[o + ANCHOR + 2];
-  if (dx * dx + dy * dy + dz * dz >= P[o + BOUND_SQUARED]) return 0;
   const type = P[o + TYPE];
+  const rotates = type === LID || type === JAW;
+  const px = rotates ? rx : x;
+  const py = rotates ? ry : y;
+  const pz = rotates ? rz : z;
+  const dx = px - P[o + ANCHOR];
+  const dy = py - P[o + ANCHOR + 1];
+  const dz = pz - P[o + ANCHOR + 2];
+  if (dx * dx + dy * dy + dz * dz >= P[o + BOUND_SQUARED]) return 0;
   if (type === LINEAR) return displaceLinear(P, o, c, dx, dy, dz, out);
   // Local coordinates: the transposed frame times the offset from the centre.
   const F = o + FRAME;
@@ -325,9 +334,11 @@ function jawFalloff(P: Float64Array, o: number, qx: number, qy: number, qz: numb
   const gz = P[o + HALF_SIZE + 2] - Math.abs(qz);
   if (gx <= 0 || gy <= 0 || gz <= 0) return 0;
   const fade = P[o + FADE];
+  // The top face runs along the lips, which part sharply; the other faces lie in skin the jaw stretches.
+  const fadeY = qy > 0 ? P[o + LIP_FADE] : fade;
   // sin(g/fade pi/2) = cos((1 - g/fade) pi/2): zero on the face, 1 with a level slope at `fade` inside.
   const fx = gx >= fade ? 1 : Math.sin((gx / fade) * HALF_PI);
-  const fy = gy >= fade ? 1 : Math.sin((gy / fade) * HALF_PI);
+  const fy = gy >= fadeY ? 1 : Math.sin((gy / fadeY) * HALF_PI);
   const fz = gz >= fade ? 1 : Math.sin((gz / fade) * HALF_PI);
   return fx * fy * fz;
 }
@@ -630,7 +641,7 @@ export class MuscleRig {
             const c = stepContraction[m];
             if (c === 0) continue;
             const o = m * STRIDE;
-            const falloff = displace(P, o, c, x, y, z, step);
+            const falloff = displace(P, o, c, x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
             if (k === 0 && falloff > 0) {
               const hold = falloff * holdScale[m];
               weight += hold;
@@ -644,7 +655,7 @@ export class MuscleRig {
           // Slid farther: it may have entered any zone, so every active muscle is asked (most reject at their bound).
           for (let a = 0; a < activeCount; a++) {
             const m = this.active[a];
-            displace(P, m * STRIDE, stepContraction[m], x, y, z, step);
+            displace(P, m * STRIDE, stepContraction[m], x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
             sx += step[0];
             sy += step[1];
             sz += step[2];

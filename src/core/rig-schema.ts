@@ -43,7 +43,6 @@ const isObj = (x: unknown): x is Obj => typeof x === 'object' && x !== null && !
 
 const number = v.pipe(v.number('expected a number'), v.finite('expected a finite number'));
 const positive = v.pipe(number, v.gtValue(0, 'expected a positive number'));
-const nonNegative = v.pipe(number, v.minValue(0, 'expected a number >= 0'));
 const fraction = v.pipe(number, v.minValue(0, 'expected a number from 0 to 1'), v.maxValue(1, 'expected a number from 0 to 1'));
 const text = v.string('expected a string');
 const name = v.pipe(text, v.nonEmpty('expected a non-empty name'));
@@ -93,7 +92,8 @@ const SphincterMuscleSchema = v.strictObject(
     radii: vec3(positive),
     // Positive: the pull inside the inner ellipsoid is scaled by the distance over these radii.
     innerRadii: vec3(positive),
-    scale: vec3(nonNegative),
+    // Negative pushes away from the center along that axis (a pucker thrusts the lips forward).
+    scale: vec3(number),
     strength: fraction,
     normalWeight: fraction,
   },
@@ -128,6 +128,7 @@ const JawMuscleSchema = v.strictObject(
     curve: fraction,
     // Positive: without a fade the turn would stop in a step at the box's faces.
     fade: positive,
+    lipFade: v.optional(positive),
   },
   object,
 );

@@ -47,7 +47,8 @@ export interface LinearMuscle extends MuscleCommon {
  * `rotation`. Skin inside it is pulled toward the center, scaled per local axis by `scale` (eyes close more
  * vertically, the mouth purses more horizontally); the pull is reduced inside the inner ellipsoid (`innerRadii`) and
  * falls (cosine) to zero at the outer surface. Membership uses squared normalised distances. Inner radii must not
- * exceed the outer ones; `scale` scales the pull's local components (0 on z: no pull in depth).
+ * exceed the outer ones; `scale` scales the pull's local components (0 on z: no pull in depth; negative: a push away
+ * from the center along that axis, as the lips thrust forward while the mouth's ring tightens in a pucker).
  */
 export interface SphincterMuscle extends MuscleCommon {
   type: 'sphincter';
@@ -79,7 +80,8 @@ export interface LidMuscle extends MuscleCommon {
  * Rotation muscle for the jaw: skin inside the box (`size` = full edge lengths, local frame) turns about the local x
  * axis through `joint` (the jaw hinge; the thesis puts it at the box's back face centre, center minus size.z / 2 along
  * local z, which is the default), by up to `maxAngle` degrees. `curve` opens the lip's middle further than its corners (the thesis's extra term), as a fraction of the
- * angle added at the centre line; the turn fades to zero within `fade` (metres, > 0) of the box's faces. A positive
+ * angle added at the centre line; the turn fades to zero within `fade` (metres, > 0) of the box's faces, and within
+ * `lipFade` (default `fade`) of its top face, which follows the line where the lips part. A positive
  * angle moves the chin down (right-handed about local +x).
  */
 export interface JawMuscle extends MuscleCommon {
@@ -92,6 +94,8 @@ export interface JawMuscle extends MuscleCommon {
   maxAngle: number;
   curve: number;
   fade: number;
+  /** The top face's fade (metres, > 0): short, so the lips part cleanly while the skin around the jaw stretches. */
+  lipFade?: number;
 }
 
 export type Muscle = LinearMuscle | SphincterMuscle | LidMuscle | JawMuscle;

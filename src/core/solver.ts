@@ -135,6 +135,8 @@ export class SkinSolver {
   private readonly colliderClearance: Float32Array;
   private readonly direction = new Float32Array(3);
   private inputsChanged = false;
+  /** Frames solved since the muscle inputs last changed (see COOLING_START). */
+  private framesSinceInput = 0;
   private asleep = true;
   /** Largest vertex move of the last frame, in model units. */
   lastMove = 0;
@@ -186,6 +188,9 @@ export class SkinSolver {
       const ratio = next.wrinkleSpacing > 0 && h > 0 ? next.wrinkleSpacing / (twoPi * h) : 0;
       this.bendStiffness[v] = Math.min(1, BENDING_CALIBRATION * next.positionStiffness * ratio ** 4);
     }
+    // New parameters start a new motion, as new muscle inputs do.
+    this.relaxation.fill(1);
+    this.framesSinceInput = 0;
     this.wake();
   }
 
@@ -214,6 +219,7 @@ export class SkinSolver {
     this.heldCount = count;
     // New inputs start a new motion: every vertex may take whole steps again.
     this.relaxation.fill(1);
+    this.framesSinceInput = 0;
     this.meanStep.fill(0);
     this.meanStepLength.fill(0);
     this.meanRawLength.fill(0);
@@ -271,12 +277,13 @@ export class SkinSolver {
       this.projectCollisions();
       time.collisions += now() - t0;
     }
-    // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle.
+    // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle; and
+    // again after the damping, which blends two shapes and so could turn a sliver over.
     const untangle = now();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
+    this.lastMove = this.damp();
+    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
     time.lengths += now() - untangle;
-    const move = this.damp();
-    this.lastMove = move;
     this.frames++;
     const beforeNormals = now();
     computeNormals(x, this.topology.triangles, this.buffers.normals);
@@ -285,7 +292,7 @@ export class SkinSolver {
     time.total = end - start;
     const changed = this.inputsChanged;
     this.inputsChanged = false;
-    if (!changed && move <= p.sleepTolerance * this.topology.size) this.asleep = true;
+    if (!changed && this.lastMove <= p.sleepTolerance * this.topology.size) this.asleep = true;
     return true;
   }
 
@@ -295,7 +302,9 @@ export class SkinSolver {
    * frame (a limit cycle, not a rest state). Each vertex keeps a running mean of its moves and of their lengths: a
    * vertex going somewhere has a mean move about as long as its moves, one going round has a much shorter one and
    * takes a smaller share of its solved move next frame (down to MIN_RELAXATION); one going somewhere regains it.
-   * The skin thus comes to rest where it would circle for ever, as real tissue's friction would stop it.
+   * The skin thus comes to rest where it would circle for ever, as real tissue's friction would stop it. Skin still
+   * creeping COOLING_START frames after the last input change is slowed down for good (every share capped by
+   * COOLING per frame), so every expression comes to rest in bounded time; by then the shape has long been reached.
    */
   private damp(): number {
     const x = this.buffers.positions;
@@ -305,9 +314,11 @@ export class SkinSolver {
     const meanRaw = this.meanRawLength;
     const share = this.relaxation;
     const keep = 1 - STEP_MEMORY;
+    const late = this.framesSinceInput++ - COOLING_START;
+    const cap = late > 0 ? COOLING ** late : 1;
     let move = 0;
     for (let v = 0, i = 0; v < share.length; v++, i += 3) {
-      const w = share[v];
+      const w = share[v] < cap ? share[v] : cap;
       const dx = w * (x[i] - prev[i]);
       const dy = w * (x[i + 1] - prev[i + 1]);
       const dz = w * (x[i + 2] - prev[i + 2]);
@@ -663,6 +674,10 @@ const now = (): number => performance.now();
 
 /** The least share of its solved move a circling vertex takes in a frame (see SkinSolver.damp). */
 export const MIN_RELAXATION = 1 / 4096;
+/** Frames after an input change when creeping skin starts being slowed down for good (see SkinSolver.damp). */
+export const COOLING_START = 400;
+/** Per frame after COOLING_START, the cap on every vertex's share shrinks by this factor. */
+const COOLING = 0.98;
 /** Weight of the past in the running means of each vertex's moves: about the last five frames count. */
 const STEP_MEMORY = 0.8;
 

@@ -1,0 +1,15 @@
+import { beforeAll, describe, expect, it } from 'vitest';
+import { loadDefaultRig, loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression } from './fixtures/head-simulation';
+
+// Each preset at full weight on the medium head, solved as the worker solves it (SolverHost, colliders, rig).
+describe('every preset at full weight on the medium head', () => {
+  let sim: Awaited<ReturnType<typeof loadHeadSimulation>>;
+  beforeAll(async () => {
+    sim = await loadHeadSimulation('medium');
+  });
+
+  it.each(loadDefaultRig().presets.map((p) => p.name))('%s comes to rest with no NaN and no triangle turned over', (name) => {
+    const r = settleExpression(sim, name, MAX_SETTLE_FRAMES);
+    expect(r).toMatchObject({ sleeping: true, nonFinite: 0, inverted: 0 });
+  });
+});
