@@ -12,6 +12,10 @@ export interface OutputsPanelOptions {
   refreshMs?: number;
 }
 
+/** Frames, or else ms, that one fps reading spans at least. */
+const MIN_FRAMES = 4;
+const MAX_WINDOW_MS = 3000;
+
 const OUTPUTS_PANEL_DEFAULTS: Required<OutputsPanelOptions> = { refreshMs: 500 };
 
 /** What the Outputs folder shows. */
@@ -80,9 +84,13 @@ export class OutputsPanel {
   private refresh(): void {
     const now = performance.now();
     const elapsed = now - this.since;
-    if (elapsed > 0) this.outputs.fps = (1000 * this.frames) / elapsed;
-    this.frames = 0;
-    this.since = now;
+    // A slow page (software WebGL draws a couple of frames a second) would read 0 or jump between 0 and 2 over one
+    // refresh, so the count runs on until it has a few frames or a few seconds.
+    if (this.frames >= MIN_FRAMES || elapsed >= MAX_WINDOW_MS) {
+      this.outputs.fps = (1000 * this.frames) / elapsed;
+      this.frames = 0;
+      this.since = now;
+    }
     const s = this.face.stats();
     const out = this.outputs;
     out.solverMs = s.solveMs;
