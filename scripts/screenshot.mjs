@@ -22,6 +22,8 @@ try {
   await page.waitForFunction(() => document.documentElement.dataset.state, null, { timeout: 60_000 });
   const state = await page.evaluate(() => document.documentElement.dataset.state);
   if (state !== 'ready') throw new Error(`the page reports "${state}": ${await page.locator('#status').innerText()}`);
+  // Let the skin settle first, so that an expression given in the URL hash is shown finished.
+  await page.evaluate(() => window.face?.settle?.(60_000));
   await page.waitForTimeout(500);
   await page.screenshot({ path: out });
   console.log(`wrote ${out}`);

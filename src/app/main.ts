@@ -7,8 +7,10 @@ import { headColliders } from '../render/head-colliders';
 import { loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView } from '../render/head-view';
 import { SkinView } from '../render/skin-view';
+import { Panels } from '../ui/panels';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { chooseSolverMode } from '../worker/solver-mode';
+import { decodeExpression, encodeExpression } from './expression-hash';
 
 const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 type Resolution = (typeof RESOLUTIONS)[number];
@@ -33,6 +35,7 @@ const face = new FaceHandle();
 window.face = face;
 
 const view = new HeadView(document.getElementById('viewport')!);
+face.attachView(view);
 view.start();
 
 /** Starts the skin solver for a shown head and feeds its frames to the skin mesh. */
@@ -100,6 +103,33 @@ function jawFollower(head: HeadModel, rig: Rig): ((contractions: Float32Array) =
   };
 }
 
+/** Reloads the page with another head resolution, carrying the current expression over in the URL hash. */
+function switchResolution(resolution: Resolution): void {
+  const params = new URLSearchParams(location.search);
+  params.set('resolution', resolution);
+  const presets = Object.fromEntries(face.listPresets().map((p) => [p.name, p.weight]));
+  location.assign(`${location.pathname}?${params}${encodeExpression({ actionUnits: face.getActionUnits(), presets })}`);
+}
+
+/**
+ * Applies an expression carried in the URL hash (see expression-hash.ts), then drops the hash: it would go stale as
+ * soon as a slider moves. Entries the face rejects are reported as warnings and skipped.
+ */
+function applyHashExpression(): void {
+  if (!location.hash) return;
+  const { actionUnits, presets } = decodeExpression(location.hash);
+  const attempt = (apply: () => void): void => {
+    try {
+      apply();
+    } catch (error) {
+      console.warn(`URL hash: ${(error as Error).message}`);
+    }
+  };
+  for (const [id, value] of Object.entries(actionUnits)) attempt(() => face.setActionUnit(id, value));
+  for (const [name, weight] of Object.entries(presets)) attempt(() => face.applyPreset(name, weight));
+  history.replaceState(null, '', `${location.pathname}${location.search}`);
+}
+
 const rigLoading = loadRig(); // in parallel with the head
 const resolution = requestedResolution();
 const url = `${import.meta.env.BASE_URL}models/head-${resolution}.glb`;
@@ -118,6 +148,8 @@ try {
   const rig = await rigLoading;
   face.attach(await startSkin(head, skinView, rig), rig);
   if (rig) face.onContractions = jawFollower(head, rig);
+  if (rig) applyHashExpression();
+  new Panels(face, { frames: view, resolution, onResolution: switchResolution });
   document.documentElement.dataset.state = 'ready';
 } catch (error) {
   failing.textContent = `${failure}: ${(error as Error).message}`;

@@ -1,6 +1,7 @@
 import { ExpressionState, type ActionUnitListing, type PresetListing } from '../core/facs';
 import type { Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
+import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
 
 /** The welded skin at one moment, in simulation vertex order. */
@@ -16,6 +17,20 @@ export interface SkinSnapshot {
 
 export type FaceStats = SkinSimulationStats;
 
+/** What a handle call changed: the Action Units or presets, the light, the render options, or the skin parameters. */
+export type FaceChange = 'expression' | 'light' | 'render' | 'skin';
+
+/** Told after every successful change made through the handle (panels refresh their sliders with it). */
+export type FaceChangeListener = (change: FaceChange) => void;
+
+/** The view the handle drives lights and render options through (HeadView). */
+export interface FaceView {
+  setLight(partial: Partial<LightOptions>): void;
+  lightOptions(): LightOptions;
+  setRenderOptions(partial: Partial<RenderOptions>): void;
+  renderOptions(): RenderOptions;
+}
+
 /**
  * A face on the page, as scripts (and the tests) drive it: `window.face`. The embedding API will hand out the same
  * object. Vertices are simulation vertex indices, the order of `getSkin().rest`.
@@ -24,6 +39,8 @@ export class FaceHandle {
   /** Resolves once the head is shown and its skin solver runs; rejects if either fails. */
   readonly ready: Promise<void>;
   private simulation: SkinSimulation | undefined;
+  private view: FaceView | undefined;
+  private readonly listeners: FaceChangeListener[] = [];
   private rig: Rig | undefined;
   private expression = new ExpressionState();
   /** Contraction per rig muscle, reused for every change. */
@@ -51,6 +68,20 @@ export class FaceHandle {
       this.contractions = new Float32Array(rig.muscles.length);
     }
     this.resolveReady();
+  }
+
+  /** Connects the view that shows the face, for `setLight` and `setRenderOptions` (usable before `ready`). */
+  attachView(view: FaceView): void {
+    this.view = view;
+  }
+
+  /** Calls `listener` after every change made through the handle; returns the function that stops it. */
+  onChange(listener: FaceChangeListener): () => void {
+    this.listeners.push(listener);
+    return () => {
+      const i = this.listeners.indexOf(listener);
+      if (i >= 0) this.listeners.splice(i, 1);
+    };
   }
 
   /** Rejects `ready`: the face could not start. */
@@ -92,6 +123,35 @@ export class FaceHandle {
   /** Changes some skin parameters; throws, changing nothing, if one is unknown or not a finite number in range. */
   setSkinParameters(partial: Partial<SkinParameters>): void {
     this.running().setParameters(partial);
+    this.emit('skin');
+  }
+
+  /** The skin parameters as last set. */
+  getSkinParameters(): SkinParameters {
+    return this.running().parameters();
+  }
+
+  /**
+   * Changes some light options (`ambientIntensity`, `keyAzimuth` 0..360, `keyElevation` -90..90, `keyIntensity`,
+   * `keyColor` "#rrggbb"); an unknown option or a value of the wrong type or range throws naming it and changes nothing.
+   */
+  setLight(partial: Partial<LightOptions>): void {
+    this.shown().setLight(partial);
+    this.emit('light');
+  }
+
+  getLight(): LightOptions {
+    return this.shown().lightOptions();
+  }
+
+  /** Changes some render options (`wireframe`, `showEyes`, `showTeeth`, booleans); bad input throws and changes nothing. */
+  setRenderOptions(partial: Partial<RenderOptions>): void {
+    this.shown().setRenderOptions(partial);
+    this.emit('render');
+  }
+
+  getRenderOptions(): RenderOptions {
+    return this.shown().renderOptions();
   }
 
   /**
@@ -107,6 +167,11 @@ export class FaceHandle {
   /** The Action Unit sliders, per side: `{ AU1L: 0, AU1R: 0, ..., AU17: 0, ... }`. */
   getActionUnits(): Record<string, number> {
     return this.expression.getActionUnits();
+  }
+
+  /** What each Action Unit side adds up to with the presets (clamped to 0..1), by side id like `getActionUnits`. */
+  getEffectiveActionUnits(): Record<string, number> {
+    return this.expression.effective();
   }
 
   /** Every Action Unit: id, FACS number, name and sides (`L`, `R` or `M`). */
@@ -139,6 +204,17 @@ export class FaceHandle {
     if (!this.rig) throw new Error('the face has no muscle rig: Action Units cannot move it');
     simulation.setContractions(this.expression.muscleContractions(this.rig, this.contractions));
     this.onContractions?.(this.contractions);
+    this.emit('expression');
+  }
+
+  private emit(change: FaceChange): void {
+    // A copy, so that a listener that unsubscribes while being told does not make the next one miss the change.
+    for (const listener of this.listeners.slice()) listener(change);
+  }
+
+  private shown(): FaceView {
+    if (!this.view) throw new Error('the face has no view yet');
+    return this.view;
   }
 
   private running(): SkinSimulation {

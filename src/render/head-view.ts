@@ -3,6 +3,7 @@ import {
   Color,
   DirectionalLight,
   HemisphereLight,
+  Mesh,
   PMREMGenerator,
   PerspectiveCamera,
   Scene,
@@ -13,6 +14,14 @@ import {
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { boxCentre, type HeadModel } from './head-model';
+import {
+  LIGHT_DEFAULTS,
+  LIGHT_RANGES,
+  RENDER_DEFAULTS,
+  checkOptions,
+  type LightOptions,
+  type RenderOptions,
+} from './view-options';
 
 /** Options of the view. */
 export interface HeadViewOptions {
@@ -27,8 +36,9 @@ export interface HeadViewOptions {
 /** Work done before each rendered frame; `now` is the frame's timestamp in ms. */
 export type FrameHook = (now: number) => void;
 
-/** Where the key light comes from: above, in front, from the subject's left. */
-const KEY_DIRECTION = new Vector3(0.55, 0.65, 1.0);
+/** How far the key light sits from the head's centre, in metres (a directional light: only its direction counts). */
+const KEY_DISTANCE = 1.3;
+const DEGREES = Math.PI / 180;
 
 export const HEAD_VIEW_DEFAULTS: Required<HeadViewOptions> = { background: 0x1d2024, fov: 28, maxPixelRatio: 2 };
 
@@ -41,6 +51,10 @@ export class HeadView {
   readonly ambient: HemisphereLight;
   readonly key: DirectionalLight;
   private head: HeadModel | undefined;
+  /** Where the key light aims and turns around: the head's centre once a head is shown. */
+  private readonly centre = new Vector3();
+  private readonly light: Required<LightOptions> = { ...LIGHT_DEFAULTS };
+  private readonly render: Required<RenderOptions> = { ...RENDER_DEFAULTS };
   private frame = 0;
   private readonly frameHooks: FrameHook[] = [];
   private readonly resizeObserver: ResizeObserver;
@@ -63,10 +77,10 @@ export class HeadView {
     this.scene.environmentIntensity = 0.2;
     pmrem.dispose();
 
-    this.ambient = new HemisphereLight(0xf4f1ec, 0x3a302c, 0.3);
-    this.key = new DirectionalLight(0xfff3e6, 2.4);
-    this.key.position.copy(KEY_DIRECTION);
+    this.ambient = new HemisphereLight(0xf4f1ec, 0x3a302c);
+    this.key = new DirectionalLight();
     this.scene.add(this.ambient, this.key, this.key.target);
+    this.applyLight();
 
     this.camera = new PerspectiveCamera(o.fov, 1, 0.01, 20);
     this.camera.position.set(0, 0.7, 1);
@@ -86,6 +100,29 @@ export class HeadView {
     this.head = head;
     this.scene.add(head.root);
     this.frame_(head);
+    this.applyRender();
+  }
+
+  /** Changes some light options; throws, changing nothing, on an unknown option or a value of the wrong type or range. */
+  setLight(partial: Partial<LightOptions>): void {
+    Object.assign(this.light, checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, LIGHT_RANGES));
+    this.applyLight();
+  }
+
+  /** A copy of the current light options. */
+  lightOptions(): LightOptions {
+    return { ...this.light };
+  }
+
+  /** Changes some render options (wireframe, eyes, teeth); throws, changing nothing, on bad input. */
+  setRenderOptions(partial: Partial<RenderOptions>): void {
+    Object.assign(this.render, checkOptions<RenderOptions>('setRenderOptions', partial, RENDER_DEFAULTS));
+    this.applyRender();
+  }
+
+  /** A copy of the current render options. */
+  renderOptions(): RenderOptions {
+    return { ...this.render };
   }
 
   /** Runs `hook` before each rendered frame (until the returned function is called). It must not wait for anything. */
@@ -127,9 +164,43 @@ export class HeadView {
     const distance = 1.15 * fit + size.z / 2;
     this.controls.target.copy(centre);
     this.camera.position.set(centre.x, centre.y + 0.03 * size.y, centre.z + distance);
-    this.key.target.position.copy(centre);
-    this.key.position.copy(centre).add(KEY_DIRECTION);
+    this.centre.copy(centre);
+    this.applyLight();
     this.controls.update();
+  }
+
+  private applyLight(): void {
+    const l = this.light;
+    this.ambient.intensity = l.ambientIntensity;
+    this.key.intensity = l.keyIntensity;
+    this.key.color.set(l.keyColor);
+    const azimuth = l.keyAzimuth * DEGREES;
+    const elevation = l.keyElevation * DEGREES;
+    const horizontal = KEY_DISTANCE * Math.cos(elevation);
+    this.key.position.set(
+      this.centre.x + horizontal * Math.sin(azimuth),
+      this.centre.y + KEY_DISTANCE * Math.sin(elevation),
+      this.centre.z + horizontal * Math.cos(azimuth),
+    );
+    this.key.target.position.copy(this.centre);
+  }
+
+  /** Applies the render options to the shown head (again whenever a head is shown). */
+  private applyRender(): void {
+    const head = this.head;
+    if (!head) return;
+    const wireframe = this.render.wireframe;
+    head.root.traverse((o) => {
+      if (!(o instanceof Mesh)) return;
+      const materials = Array.isArray(o.material) ? o.material : [o.material];
+      for (const m of materials) if ('wireframe' in m && m.wireframe !== wireframe) {
+        m.wireframe = wireframe;
+        m.needsUpdate = true;
+      }
+    });
+    for (const eye of head.eyes) eye.visible = this.render.showEyes;
+    for (const t of head.teeth) t.visible = this.render.showTeeth;
+    if (head.tongue) head.tongue.visible = this.render.showTeeth;
   }
 
   private resize(): void {

@@ -1,0 +1,72 @@
+/** The light and render options a view takes from scripts and panels, their defaults, ranges and checks. */
+
+/** The view's lights: a hemisphere fill and a directional key light placed by two angles around the head. */
+export interface LightOptions {
+  /** Hemisphere (sky and ground fill) intensity. */
+  ambientIntensity: number;
+  /** Key light's horizontal angle in degrees, 0..360: 0 in front of the face, 90 from the subject's left (+x). */
+  keyAzimuth: number;
+  /** Key light's vertical angle in degrees: -90 from straight below, 0 level with the head's centre, 90 from above. */
+  keyElevation: number;
+  keyIntensity: number;
+  /** Key light colour, sRGB `#rrggbb`. */
+  keyColor: string;
+}
+
+/** What the view shows, and how. */
+export interface RenderOptions {
+  /** Draw every mesh of the head as its triangle edges. */
+  wireframe: boolean;
+  showEyes: boolean;
+  /** Teeth and tongue. */
+  showTeeth: boolean;
+}
+
+/**
+ * The look the app had before the light became adjustable: the key light up and to the subject's left of the face
+ * (its old fixed direction (0.55, 0.65, 1) is 28.8 degrees round and 29.7 up; whole degrees keep sliders tidy).
+ */
+export const LIGHT_DEFAULTS: Readonly<Required<LightOptions>> = Object.freeze({
+  ambientIntensity: 0.3,
+  keyAzimuth: 29,
+  keyElevation: 30,
+  keyIntensity: 2.4,
+  keyColor: '#fff3e6',
+});
+
+/** Allowed range of each numeric light option (inclusive); panels use the same bounds for their sliders. */
+export const LIGHT_RANGES: Readonly<Record<'ambientIntensity' | 'keyAzimuth' | 'keyElevation' | 'keyIntensity', readonly [number, number]>> =
+  Object.freeze({ ambientIntensity: [0, 3], keyAzimuth: [0, 360], keyElevation: [-90, 90], keyIntensity: [0, 10] });
+
+export const RENDER_DEFAULTS: Readonly<Required<RenderOptions>> = Object.freeze({ wireframe: false, showEyes: true, showTeeth: true });
+
+const COLOUR = /^#[0-9a-f]{6}$/i;
+
+function show(x: unknown): string {
+  return typeof x === 'string' ? JSON.stringify(x) : String(x);
+}
+
+/**
+ * Checks a partial set of options against their defaults (which give the keys and types) and numeric ranges, and
+ * returns it typed; throws an error naming the method and the first bad key or value. String options are colours.
+ */
+export function checkOptions<T extends object>(
+  method: string,
+  partial: unknown,
+  defaults: Readonly<Required<T>>,
+  ranges?: Readonly<Partial<Record<keyof T, readonly [number, number]>>>,
+): Partial<T> {
+  if (typeof partial !== 'object' || partial === null || Array.isArray(partial)) throw new Error(`${method}: needs an object of options, got ${show(partial)}`);
+  for (const [key, value] of Object.entries(partial)) {
+    if (!Object.hasOwn(defaults, key)) throw new Error(`${method}: unknown option ${show(key)} (options: ${Object.keys(defaults).join(', ')})`);
+    const expected = typeof defaults[key as keyof T];
+    if (typeof value !== expected) throw new Error(`${method}: ${key} needs a ${expected}, got ${show(value)}`);
+    if (typeof value === 'number') {
+      if (!Number.isFinite(value)) throw new Error(`${method}: ${key} needs a finite number, got ${show(value)}`);
+      const range = ranges?.[key as keyof T];
+      if (range && (value < range[0] || value > range[1])) throw new Error(`${method}: ${key} must be within ${range[0]}..${range[1]}, got ${value}`);
+    }
+    if (typeof value === 'string' && !COLOUR.test(value)) throw new Error(`${method}: ${key} needs a colour "#rrggbb", got ${show(value)}`);
+  }
+  return partial as Partial<T>;
+}

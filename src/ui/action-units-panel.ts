@@ -1,0 +1,83 @@
+import type GUI from 'lil-gui';
+import type { Controller } from 'lil-gui';
+import { gradeOf, type Grade } from '../core/facs';
+import type { FaceChange, FaceHandle } from '../embed/face-handle';
+
+/** One slider of the panel: an Action Unit side (`AU12L`) or a midline unit (`AU17`). */
+interface SideSlider {
+  id: string;
+  /** Its label without the grade. */
+  label: string;
+  controller: Controller;
+  /** The grade its label shows (none before the first), so the label is rebuilt only when the grade changes. */
+  grade: Grade | undefined;
+}
+
+/**
+ * The Action Units folder: a folder per unit titled with its number and name, a 0..1 slider per side whose label
+ * shows the FACS grade (A trace .. E maximum), and for bilateral units a link checkbox (on by default) that makes
+ * either side's slider drive both.
+ */
+export class ActionUnitsPanel {
+  readonly folder: GUI;
+  /** The slider values by side id, which the controllers read and write. */
+  private readonly values: Record<string, number>;
+  /** Link state by Action Unit id (bilateral units only). */
+  private readonly links: Record<string, boolean> = {};
+  private readonly sliders: SideSlider[] = [];
+  private readonly unsubscribe: () => void;
+
+  constructor(parent: GUI, private readonly face: FaceHandle) {
+    this.folder = parent.addFolder('Action Units');
+    this.values = face.getActionUnits();
+    for (const au of face.listActionUnits()) {
+      const unit = this.folder.addFolder(`AU${au.number} ${au.name}`);
+      unit.domElement.dataset.actionUnit = au.id;
+      const bilateral = au.sides.length === 2;
+      for (const side of au.sides) {
+        const id = bilateral ? `${au.id}${side}` : au.id;
+        const label = side === 'L' ? 'left' : side === 'R' ? 'right' : 'intensity';
+        const controller = unit
+          .add(this.values, id, 0, 1, 0.01)
+          .onChange((v: number) => face.setActionUnit(bilateral && this.links[au.id] ? au.id : id, v));
+        controller.domElement.dataset.control = id;
+        const slider: SideSlider = { id, label, controller, grade: undefined };
+        this.label(slider);
+        this.sliders.push(slider);
+      }
+      if (bilateral) {
+        this.links[au.id] = true;
+        unit.add(this.links, au.id).name('link sides').domElement.dataset.control = `${au.id}-link`;
+      }
+    }
+    this.unsubscribe = face.onChange((change) => this.changed(change));
+  }
+
+  /** Whether a bilateral unit's sides move together. */
+  linked(id: string): boolean {
+    return this.links[id] ?? false;
+  }
+
+  /** Removes the folder and stops following the face. */
+  destroy(): void {
+    this.unsubscribe();
+    this.folder.destroy();
+  }
+
+  private changed(change: FaceChange): void {
+    if (change !== 'expression') return;
+    Object.assign(this.values, this.face.getActionUnits());
+    for (const slider of this.sliders) {
+      slider.controller.updateDisplay();
+      this.label(slider);
+    }
+  }
+
+  /** Shows the slider's grade in its label, rebuilding the label only when the grade changed. */
+  private label(slider: SideSlider): void {
+    const grade = gradeOf(this.values[slider.id]);
+    if (grade === slider.grade) return;
+    slider.grade = grade;
+    slider.controller.name(`${slider.label} · ${grade || '–'}`);
+  }
+}

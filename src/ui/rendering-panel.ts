@@ -1,0 +1,71 @@
+import type GUI from 'lil-gui';
+import type { Controller } from 'lil-gui';
+import type { FaceChange, FaceHandle } from '../embed/face-handle';
+
+export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
+export type Resolution = (typeof RESOLUTIONS)[number];
+
+/** What the Rendering folder needs from the page. */
+export interface RenderingPanelOptions {
+  /** The head resolution shown. */
+  resolution: Resolution;
+  /** Called when the user picks another resolution (the page reloads with it). */
+  onResolution: (resolution: Resolution) => void;
+  /** Largest iteration count the sliders offer. */
+  maxIterations?: number;
+}
+
+const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations'>> = { maxIterations: 20 };
+
+/**
+ * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, and the solver's length and position
+ * iteration counts.
+ */
+export class RenderingPanel {
+  readonly folder: GUI;
+  private readonly state: { wireframe: boolean; showEyes: boolean; showTeeth: boolean; resolution: Resolution; lengthIterations: number; positionIterations: number };
+  private readonly controllers: Controller[] = [];
+  private readonly unsubscribe: () => void;
+
+  constructor(parent: GUI, private readonly face: FaceHandle, options: RenderingPanelOptions) {
+    const o = { ...RENDERING_PANEL_DEFAULTS, ...options };
+    const skin = face.getSkinParameters();
+    this.state = { ...face.getRenderOptions(), resolution: o.resolution, lengthIterations: skin.lengthIterations, positionIterations: skin.positionIterations };
+    this.folder = parent.addFolder('Rendering');
+    const s = this.state;
+    this.add(this.folder.add(s, 'wireframe').onChange((v: boolean) => face.setRenderOptions({ wireframe: v })), 'wireframe');
+    this.add(this.folder.add(s, 'showEyes').name('show eyes').onChange((v: boolean) => face.setRenderOptions({ showEyes: v })), 'show-eyes');
+    this.add(this.folder.add(s, 'showTeeth').name('show teeth').onChange((v: boolean) => face.setRenderOptions({ showTeeth: v })), 'show-teeth');
+    this.add(this.folder.add(s, 'resolution', [...RESOLUTIONS]).name('mesh resolution').onChange((r: Resolution) => o.onResolution(r)), 'resolution');
+    this.add(
+      this.folder.add(s, 'lengthIterations', 1, o.maxIterations, 1).name('length iterations').onChange((n: number) => face.setSkinParameters({ lengthIterations: n })),
+      'length-iterations',
+    );
+    this.add(
+      this.folder.add(s, 'positionIterations', 1, o.maxIterations, 1).name('position iterations').onChange((n: number) => face.setSkinParameters({ positionIterations: n })),
+      'position-iterations',
+    );
+    this.unsubscribe = face.onChange((change) => this.changed(change));
+  }
+
+  /** Removes the folder and stops following the face. */
+  destroy(): void {
+    this.unsubscribe();
+    this.folder.destroy();
+  }
+
+  private add(controller: Controller, name: string): void {
+    controller.domElement.dataset.control = name;
+    this.controllers.push(controller);
+  }
+
+  private changed(change: FaceChange): void {
+    if (change === 'render') Object.assign(this.state, this.face.getRenderOptions());
+    else if (change === 'skin') {
+      const skin = this.face.getSkinParameters();
+      this.state.lengthIterations = skin.lengthIterations;
+      this.state.positionIterations = skin.positionIterations;
+    } else return;
+    for (const c of this.controllers) c.updateDisplay();
+  }
+}
