@@ -30,12 +30,12 @@ const columns = Number(option('columns', '6'));
 /** Page areas (CSS pixels of the 640 x 640 view) framing parts of the face; close-ups are shot at 3x. */
 const REGIONS = {
   face: { x: 170, y: 150, width: 300, height: 390, scale: 1 },
-  forehead: { x: 240, y: 150, width: 160, height: 80, scale: 3 },
-  brows: { x: 250, y: 190, width: 140, height: 70, scale: 3 },
-  eyes: { x: 220, y: 215, width: 200, height: 80, scale: 3 },
-  nose: { x: 260, y: 220, width: 120, height: 110, scale: 3 },
-  mouth: { x: 245, y: 310, width: 150, height: 90, scale: 3 },
-  chin: { x: 255, y: 350, width: 130, height: 90, scale: 3 },
+  forehead: { x: 240, y: 165, width: 160, height: 90, scale: 3 },
+  brows: { x: 250, y: 228, width: 140, height: 80, scale: 3 },
+  eyes: { x: 220, y: 248, width: 200, height: 80, scale: 3 },
+  nose: { x: 260, y: 270, width: 120, height: 110, scale: 3 },
+  mouth: { x: 245, y: 371, width: 150, height: 100, scale: 3 },
+  chin: { x: 255, y: 420, width: 130, height: 100, scale: 3 },
 };
 const regionName = option('region', 'face');
 const region = REGIONS[regionName];

@@ -675,9 +675,9 @@ const now = (): number => performance.now();
 /** The least share of its solved move a circling vertex takes in a frame (see SkinSolver.damp). */
 export const MIN_RELAXATION = 1 / 4096;
 /** Frames after an input change when creeping skin starts being slowed down for good (see SkinSolver.damp). */
-export const COOLING_START = 400;
+export const COOLING_START = 200;
 /** Per frame after COOLING_START, the cap on every vertex's share shrinks by this factor. */
-const COOLING = 0.98;
+const COOLING = 0.97;
 /** Weight of the past in the running means of each vertex's moves: about the last five frames count. */
 const STEP_MEMORY = 0.8;
 
