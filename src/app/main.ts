@@ -10,6 +10,7 @@ import { SkinView } from '../render/skin-view';
 import { Panels } from '../ui/panels';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { chooseSolverMode } from '../worker/solver-mode';
+import { EyeDriver } from './eye-driver';
 import { decodeExpression, encodeExpression } from './expression-hash';
 
 const RESOLUTIONS = ['low', 'medium', 'high'] as const;
@@ -148,6 +149,8 @@ try {
   const rig = await rigLoading;
   face.attach(await startSkin(head, skinView, rig), rig);
   if (rig) face.onContractions = jawFollower(head, rig);
+  // Seeded from the clock: every page load blinks differently; the state machine is seeded for its tests.
+  face.attachEyes(new EyeDriver(face, view, head.eyes, { lids: !!rig, simulation: { seed: Date.now() >>> 0 } }));
   if (rig) applyHashExpression();
   new Panels(face, { frames: view, resolution, onResolution: switchResolution });
   document.documentElement.dataset.state = 'ready';

@@ -18,19 +18,33 @@ export interface RenderingPanelOptions {
 const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations'>> = { maxIterations: 20 };
 
 /**
- * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, and the solver's length and position
- * iteration counts.
+ * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, the solver's length and position
+ * iteration counts and the eye simulation.
  */
 export class RenderingPanel {
   readonly folder: GUI;
-  private readonly state: { wireframe: boolean; showEyes: boolean; showTeeth: boolean; resolution: Resolution; lengthIterations: number; positionIterations: number };
+  private readonly state: {
+    wireframe: boolean;
+    showEyes: boolean;
+    showTeeth: boolean;
+    resolution: Resolution;
+    lengthIterations: number;
+    positionIterations: number;
+    eyeSimulation: boolean;
+  };
   private readonly controllers: Controller[] = [];
   private readonly unsubscribe: () => void;
 
   constructor(parent: GUI, private readonly face: FaceHandle, options: RenderingPanelOptions) {
     const o = { ...RENDERING_PANEL_DEFAULTS, ...options };
     const skin = face.getSkinParameters();
-    this.state = { ...face.getRenderOptions(), resolution: o.resolution, lengthIterations: skin.lengthIterations, positionIterations: skin.positionIterations };
+    this.state = {
+      ...face.getRenderOptions(),
+      resolution: o.resolution,
+      lengthIterations: skin.lengthIterations,
+      positionIterations: skin.positionIterations,
+      eyeSimulation: face.getEyeSimulation(),
+    };
     this.folder = parent.addFolder('Rendering');
     const s = this.state;
     this.add(this.folder.add(s, 'wireframe').onChange((v: boolean) => face.setRenderOptions({ wireframe: v })), 'wireframe');
@@ -45,6 +59,7 @@ export class RenderingPanel {
       this.folder.add(s, 'positionIterations', 1, o.maxIterations, 1).name('position iterations').onChange((n: number) => face.setSkinParameters({ positionIterations: n })),
       'position-iterations',
     );
+    this.add(this.folder.add(s, 'eyeSimulation').name('eye simulation').onChange((v: boolean) => face.setEyeSimulation(v)), 'eye-simulation');
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }
 
@@ -61,6 +76,7 @@ export class RenderingPanel {
 
   private changed(change: FaceChange): void {
     if (change === 'render') Object.assign(this.state, this.face.getRenderOptions());
+    else if (change === 'eyes') this.state.eyeSimulation = this.face.getEyeSimulation();
     else if (change === 'skin') {
       const skin = this.face.getSkinParameters();
       this.state.lengthIterations = skin.lengthIterations;
