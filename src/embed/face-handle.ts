@@ -54,6 +54,8 @@ export interface FaceView {
   lightOptions(): LightOptions;
   setRenderOptions(partial: Partial<RenderOptions>): void;
   renderOptions(): RenderOptions;
+  /** Renders a frame and encodes the canvas as a PNG. */
+  snapshot(): Promise<Blob>;
 }
 
 /**
@@ -279,6 +281,11 @@ export class FaceHandle {
   /** The eye simulation's blink and saccade counts and the gaze now. */
   eyeStats(): EyeStats {
     return this.eyeSimulation().stats();
+  }
+
+  /** A PNG of the canvas, rendered just before it is read. */
+  savePNG(): Promise<Blob> {
+    return this.shown().snapshot();
   }
 
   /** Sends the muscle contractions and tells the listeners that the expression changed. */

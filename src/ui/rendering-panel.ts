@@ -1,6 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import { downloadBlob, fileTimestamp } from './download';
 
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 export type Resolution = (typeof RESOLUTIONS)[number];
@@ -19,7 +20,7 @@ const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterati
 
 /**
  * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, the solver's length and position
- * iteration counts and the eye simulation.
+ * iteration counts, the eye simulation, and a button that saves the picture as a PNG.
  */
 export class RenderingPanel {
   readonly folder: GUI;
@@ -31,6 +32,7 @@ export class RenderingPanel {
     lengthIterations: number;
     positionIterations: number;
     eyeSimulation: boolean;
+    savePNG: () => void;
   };
   private readonly controllers: Controller[] = [];
   private readonly unsubscribe: () => void;
@@ -44,6 +46,7 @@ export class RenderingPanel {
       lengthIterations: skin.lengthIterations,
       positionIterations: skin.positionIterations,
       eyeSimulation: face.getEyeSimulation(),
+      savePNG: () => void this.savePNG(),
     };
     this.folder = parent.addFolder('Rendering');
     const s = this.state;
@@ -60,6 +63,7 @@ export class RenderingPanel {
       'position-iterations',
     );
     this.add(this.folder.add(s, 'eyeSimulation').name('eye simulation').onChange((v: boolean) => face.setEyeSimulation(v)), 'eye-simulation');
+    this.add(this.folder.add(s, 'savePNG').name('save PNG'), 'save-png');
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }
 
@@ -72,6 +76,15 @@ export class RenderingPanel {
   private add(controller: Controller, name: string): void {
     controller.domElement.dataset.control = name;
     this.controllers.push(controller);
+  }
+
+  /** Downloads the canvas as `softface-<timestamp>.png`; a failure is reported on the console, not thrown. */
+  private async savePNG(): Promise<void> {
+    try {
+      downloadBlob(await this.face.savePNG(), `softface-${fileTimestamp()}.png`);
+    } catch (error) {
+      console.warn(`save PNG: ${(error as Error).message}`);
+    }
   }
 
   private changed(change: FaceChange): void {
