@@ -20,7 +20,9 @@ test('switching the mesh resolution reloads with the other head and keeps the ex
   const after = await page.evaluate(() => ({ units: window.face.getActionUnits(), presets: window.face.listPresets(), url: location.href }));
   expect(after.units).toEqual(before.units);
   expect(after.presets).toEqual(before.presets);
-  expect(after.url).not.toContain('#'); // the hash is applied once, then dropped so it cannot go stale
+  // The hash stays, and keeps following the face: the address bar is a link to what is shown.
+  expect(after.url).toContain('AU12L=0.6&AU12R=0.6');
+  expect(after.url).toContain('preset%3Asurprise=0.5');
   expect(await sliderValue(page, 'AU12L')).toBe(0.6);
   expect(await sliderValue(page, 'AU12R')).toBe(0.6);
   expect(await sliderValue(page, 'AU4R')).toBe(0.25);

@@ -232,3 +232,34 @@ describe('ExpressionState.reset', () => {
     expect(Array.from(s.muscleContractions(DEFAULT_RIG, new Float32Array(DEFAULT_RIG.muscles.length))).every((v) => v === 0)).toBe(true);
   });
 });
+
+describe('ExpressionState overlay', () => {
+  it('adds to sliders and presets, clamped, without moving a slider; reset leaves it', () => {
+    const s = new ExpressionState(SMALL_RIG.presets);
+    s.setActionUnit('AU12L', 0.3);
+    s.applyPreset('smile', 0.5); // AU12 0.3 on both sides
+    expect(s.setOverlay('AU12L', 0.2)).toBe(true);
+    expect(s.setOverlay('AU12L', 0.2)).toBe(false); // unchanged
+    expect(s.getActionUnits().AU12L).toBe(0.3);
+    expect(s.effective().AU12L).toBeCloseTo(0.8, 9);
+    expect(s.effective().AU12R).toBeCloseTo(0.3, 9);
+    expect(contractions(s)['zyg-l']).toBeCloseTo(0.8, 6);
+    s.setOverlay('AU12', 0.9);
+    expect(s.effective().AU12L).toBe(1);
+    expect(s.effective().AU12R).toBeCloseTo(1, 9);
+    s.reset();
+    expect(s.getActionUnits().AU12L).toBe(0);
+    expect(s.effective().AU12L).toBeCloseTo(0.9, 9);
+    expect(s.getOverlay().AU12R).toBeCloseTo(0.9, 9);
+    expect(s.clearOverlay()).toBe(true);
+    expect(s.clearOverlay()).toBe(false);
+    expect(s.effective().AU12L).toBe(0);
+  });
+
+  it('throws on an unknown id or a non-finite value, changing nothing', () => {
+    const s = new ExpressionState();
+    expect(() => s.setOverlay('AU99', 0.5)).toThrow(/AU99/);
+    expect(() => s.setOverlay('AU43L', Number.NaN)).toThrow(/AU43L/);
+    expect(Object.values(s.getOverlay()).every((v) => v === 0)).toBe(true);
+  });
+});

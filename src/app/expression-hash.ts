@@ -1,7 +1,7 @@
 /**
- * The expression carried in a URL hash when the page reloads with another head resolution:
- * `#AU12L=0.5&AU12R=0.5&preset:happiness=0.3`, non-zero values only. (The later shareable-link feature can keep
- * this format and write it live.)
+ * The expression carried in the URL hash, kept up to date by HashSync so that a copied link reopens the same face,
+ * and carried over when the page reloads with another head resolution: `#AU12L=0.5&AU12R=0.5&preset:happiness=0.3`
+ * (non-zero values only; `URLSearchParams` writes the colon as `%3A`, and either form reads back).
  */
 
 /** What the hash carries: Action Unit sliders by side id, and preset weights by name. */

@@ -10,7 +10,9 @@ import { SkinView } from '../render/skin-view';
 import { Panels } from '../ui/panels';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { chooseSolverMode } from '../worker/solver-mode';
-import { decodeExpression, encodeExpression } from './expression-hash';
+import { EyeDriver } from './eye-driver';
+import { encodeExpression } from './expression-hash';
+import { HashSync } from './hash-sync';
 
 const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 type Resolution = (typeof RESOLUTIONS)[number];
@@ -111,25 +113,6 @@ function switchResolution(resolution: Resolution): void {
   location.assign(`${location.pathname}?${params}${encodeExpression({ actionUnits: face.getActionUnits(), presets })}`);
 }
 
-/**
- * Applies an expression carried in the URL hash (see expression-hash.ts), then drops the hash: it would go stale as
- * soon as a slider moves. Entries the face rejects are reported as warnings and skipped.
- */
-function applyHashExpression(): void {
-  if (!location.hash) return;
-  const { actionUnits, presets } = decodeExpression(location.hash);
-  const attempt = (apply: () => void): void => {
-    try {
-      apply();
-    } catch (error) {
-      console.warn(`URL hash: ${(error as Error).message}`);
-    }
-  };
-  for (const [id, value] of Object.entries(actionUnits)) attempt(() => face.setActionUnit(id, value));
-  for (const [name, weight] of Object.entries(presets)) attempt(() => face.applyPreset(name, weight));
-  history.replaceState(null, '', `${location.pathname}${location.search}`);
-}
-
 const rigLoading = loadRig(); // in parallel with the head
 const resolution = requestedResolution();
 const url = `${import.meta.env.BASE_URL}models/head-${resolution}.glb`;
@@ -148,7 +131,10 @@ try {
   const rig = await rigLoading;
   face.attach(await startSkin(head, skinView, rig), rig);
   if (rig) face.onContractions = jawFollower(head, rig);
-  if (rig) applyHashExpression();
+  // Seeded from the clock: every page load blinks differently; the state machine is seeded for its tests.
+  face.attachEyes(new EyeDriver(face, view, head.eyes, { lids: !!rig, simulation: { seed: Date.now() >>> 0 } }));
+  // The expression lives in the URL hash from here on: a copied link reopens the same face.
+  if (rig) new HashSync(face);
   new Panels(face, { frames: view, resolution, onResolution: switchResolution });
   document.documentElement.dataset.state = 'ready';
 } catch (error) {

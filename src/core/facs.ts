@@ -109,6 +109,11 @@ const SLOTS_OF: ReadonlyMap<string, readonly number[]> = (() => {
   return map;
 })();
 
+/** Whether `id` names an Action Unit or one of its sides (`AU12`, `AU12L`, `AU17`). */
+export function isActionUnitId(id: string): boolean {
+  return SLOTS_OF.has(id);
+}
+
 const CATALOGUE_BY_ID: ReadonlyMap<string, ActionUnitInfo> = new Map(ACTION_UNITS.map((au) => [au.id, au]));
 
 /** What `muscleContractions` needs from a rig, flattened: for each Action Unit side -> muscle link, its slot and weight. */
@@ -140,6 +145,11 @@ export class ExpressionState {
   private readonly presetWeights: Float64Array;
   /** Each preset's intensity per slot (`AU12` spread to both sides), so that summing is one pass. */
   private readonly presetSlots: readonly Float64Array[];
+  /**
+   * A contribution added on top of the sliders and presets by the page itself (the eye simulation's blinks and lid
+   * follow), kept apart so that it never moves a slider and `reset` leaves it alone.
+   */
+  private readonly overlay = new Float64Array(SLOT_IDS.length);
   private readonly effectiveSlots = new Float64Array(SLOT_IDS.length);
   private dirty = false;
 
@@ -162,6 +172,44 @@ export class ExpressionState {
     if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`setActionUnit: ${id} needs a finite number, got ${show(value)}`);
     for (const s of slots) this.sliders[s] = clamp01(value);
     this.dirty = true;
+  }
+
+  /**
+   * Sets an overlay intensity (clamped to 0..1) that adds to the sliders and presets without changing them; ids as in
+   * `setActionUnit`. Returns whether the overlay changed. Allocation-free: the eye simulation calls it every frame.
+   */
+  setOverlay(id: string, value: number): boolean {
+    const slots = SLOTS_OF.get(id);
+    if (!slots) throw new Error(`setOverlay: unknown Action Unit id ${show(id)} (expected e.g. "AU43", "AU43L" or "AU43R")`);
+    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`setOverlay: ${id} needs a finite number, got ${show(value)}`);
+    const v = clamp01(value);
+    let changed = false;
+    for (let i = 0; i < slots.length; i++) {
+      if (this.overlay[slots[i]] !== v) {
+        this.overlay[slots[i]] = v;
+        changed = true;
+      }
+    }
+    if (changed) this.dirty = true;
+    return changed;
+  }
+
+  /** Zeroes the overlay; returns whether it had any contribution. */
+  clearOverlay(): boolean {
+    let changed = false;
+    for (let s = 0; s < this.overlay.length; s++) if (this.overlay[s] !== 0) changed = true;
+    if (changed) {
+      this.overlay.fill(0);
+      this.dirty = true;
+    }
+    return changed;
+  }
+
+  /** The overlay intensities by side id, like `getActionUnits`. */
+  getOverlay(): Record<string, number> {
+    const out: Record<string, number> = {};
+    SLOT_IDS.forEach((id, s) => (out[id] = this.overlay[s]));
+    return out;
   }
 
   /** The slider values by side id (`AU12L`, `AU12R`, `AU17`, ...), presets not included. */
@@ -190,14 +238,14 @@ export class ExpressionState {
     return this.presets.map((p, i) => ({ name: p.name, source: p.source, ...(p.note === undefined ? {} : { note: p.note }), weight: this.presetWeights[i] }));
   }
 
-  /** Every slider and preset weight back to 0. */
+  /** Every slider and preset weight back to 0 (the overlay is the page's, and stays). */
   reset(): void {
     this.sliders.fill(0);
     this.presetWeights.fill(0);
     this.dirty = true;
   }
 
-  /** Intensity per Action Unit side: slider plus the weighted presets, clamped to 0..1. */
+  /** Intensity per Action Unit side: slider plus the weighted presets plus the overlay, clamped to 0..1. */
   effective(): Record<string, number> {
     const e = this.effectiveIntensities();
     const out: Record<string, number> = {};
@@ -224,6 +272,7 @@ export class ExpressionState {
     if (!this.dirty) return this.effectiveSlots;
     const e = this.effectiveSlots;
     e.set(this.sliders);
+    for (let s = 0; s < e.length; s++) e[s] += this.overlay[s];
     this.presetSlots.forEach((values, p) => {
       const w = this.presetWeights[p];
       if (w !== 0) for (let s = 0; s < e.length; s++) e[s] += w * values[s];

@@ -1,4 +1,4 @@
-import { ExpressionState, type ActionUnitListing, type PresetListing } from '../core/facs';
+import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
 import type { Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
 import type { LightOptions, RenderOptions } from '../render/view-options';
@@ -17,8 +17,33 @@ export interface SkinSnapshot {
 
 export type FaceStats = SkinSimulationStats;
 
-/** What a handle call changed: the Action Units or presets, the light, the render options, or the skin parameters. */
-export type FaceChange = 'expression' | 'light' | 'render' | 'skin';
+/**
+ * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters, or
+ * whether the eye simulation runs.
+ */
+export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes';
+
+/** What the eye simulation has done since the page started it first: counts, and the gaze now in degrees. */
+export interface EyeStats {
+  /** Whether it runs. */
+  on: boolean;
+  /** Blinks and saccades started. */
+  blinks: number;
+  saccades: number;
+  /** Lid closure of the blink now, 0 open .. 1 closed. */
+  blink: number;
+  /** The simulation's clock: ms of rendered frames since it was switched on. */
+  time: number;
+  /** Positive yaw looks to the subject's left, positive pitch up. */
+  gaze: { yaw: number; pitch: number };
+}
+
+/** The eye simulation the handle switches (EyeDriver). */
+export interface FaceEyes {
+  setEnabled(on: boolean): void;
+  enabled(): boolean;
+  stats(): EyeStats;
+}
 
 /** Told after every successful change made through the handle (panels refresh their sliders with it). */
 export type FaceChangeListener = (change: FaceChange) => void;
@@ -29,6 +54,8 @@ export interface FaceView {
   lightOptions(): LightOptions;
   setRenderOptions(partial: Partial<RenderOptions>): void;
   renderOptions(): RenderOptions;
+  /** Renders a frame and encodes the canvas as a PNG. */
+  snapshot(): Promise<Blob>;
 }
 
 /**
@@ -40,6 +67,7 @@ export class FaceHandle {
   readonly ready: Promise<void>;
   private simulation: SkinSimulation | undefined;
   private view: FaceView | undefined;
+  private eyes: FaceEyes | undefined;
   private readonly listeners: FaceChangeListener[] = [];
   private rig: Rig | undefined;
   private expression = new ExpressionState();
@@ -73,6 +101,11 @@ export class FaceHandle {
   /** Connects the view that shows the face, for `setLight` and `setRenderOptions` (usable before `ready`). */
   attachView(view: FaceView): void {
     this.view = view;
+  }
+
+  /** Connects the eye simulation that `setEyeSimulation` switches. */
+  attachEyes(eyes: FaceEyes): void {
+    this.eyes = eyes;
   }
 
   /** Calls `listener` after every change made through the handle; returns the function that stops it. */
@@ -169,7 +202,10 @@ export class FaceHandle {
     return this.expression.getActionUnits();
   }
 
-  /** What each Action Unit side adds up to with the presets (clamped to 0..1), by side id like `getActionUnits`. */
+  /**
+   * What each Action Unit side adds up to with the presets and the overlay (the eye simulation's lids), clamped to
+   * 0..1, by side id like `getActionUnits`.
+   */
   getEffectiveActionUnits(): Record<string, number> {
     return this.expression.effective();
   }
@@ -198,13 +234,77 @@ export class FaceHandle {
     this.drive();
   }
 
-  /** Sends the muscle contractions the current Action Units and presets add up to. */
+  /**
+   * Sets the page's own contribution to some Action Unit sides (`ids[i]` to `values[i]`, each clamped to 0..1): it
+   * adds to the sliders and presets (clamped per side) without moving them, and tells no listener, because it may
+   * change every frame. The eye simulation drives the lids with it. Bad input throws and changes nothing.
+   */
+  setOverlay(ids: readonly string[], values: ArrayLike<number>): void {
+    this.running();
+    if (ids.length !== values.length) throw new Error(`setOverlay: ${ids.length} ids but ${values.length} values`);
+    for (let i = 0; i < ids.length; i++) {
+      if (!isActionUnitId(ids[i])) throw new Error(`setOverlay: unknown Action Unit id ${JSON.stringify(ids[i])}`);
+      if (typeof values[i] !== 'number' || !Number.isFinite(values[i])) throw new Error(`setOverlay: ${ids[i]} needs a finite number, got ${String(values[i])}`);
+    }
+    let changed = false;
+    for (let i = 0; i < ids.length; i++) if (this.expression.setOverlay(ids[i], values[i])) changed = true;
+    if (changed) this.send();
+  }
+
+  /** Removes the page's whole contribution (see `setOverlay`). */
+  clearOverlay(): void {
+    this.running();
+    if (this.expression.clearOverlay()) this.send();
+  }
+
+  /** The overlay by side id, like `getActionUnits`. */
+  getOverlay(): Record<string, number> {
+    return this.expression.getOverlay();
+  }
+
+  /**
+   * Starts or stops the eye simulation (thesis 5.3.3): random blinks through the lids and gaze saccades, added on top
+   * of the sliders. Off by default, so that pictures of the face are repeatable.
+   */
+  setEyeSimulation(on: boolean): void {
+    if (typeof on !== 'boolean') throw new Error(`setEyeSimulation: needs a boolean, got ${String(on)}`);
+    this.running();
+    this.eyeSimulation().setEnabled(on);
+    this.emit('eyes');
+  }
+
+  /** Whether the eye simulation runs. */
+  getEyeSimulation(): boolean {
+    return this.eyes?.enabled() ?? false;
+  }
+
+  /** The eye simulation's blink and saccade counts and the gaze now. */
+  eyeStats(): EyeStats {
+    return this.eyeSimulation().stats();
+  }
+
+  /** A PNG of the canvas, rendered just before it is read. */
+  savePNG(): Promise<Blob> {
+    return this.shown().snapshot();
+  }
+
+  /** Sends the muscle contractions and tells the listeners that the expression changed. */
   private drive(): void {
+    this.send();
+    this.emit('expression');
+  }
+
+  /** Sends the muscle contractions the current Action Units, presets and overlay add up to. */
+  private send(): void {
     const simulation = this.running();
     if (!this.rig) throw new Error('the face has no muscle rig: Action Units cannot move it');
     simulation.setContractions(this.expression.muscleContractions(this.rig, this.contractions));
     this.onContractions?.(this.contractions);
-    this.emit('expression');
+  }
+
+  private eyeSimulation(): FaceEyes {
+    if (!this.eyes) throw new Error('the face has no eye simulation yet: await face.ready first');
+    return this.eyes;
   }
 
   private emit(change: FaceChange): void {

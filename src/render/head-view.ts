@@ -125,6 +125,16 @@ export class HeadView {
     return { ...this.render };
   }
 
+  /** Renders a frame now and encodes the canvas as a PNG (what the user sees, at the canvas's pixel size). */
+  snapshot(): Promise<Blob> {
+    this.controls.update();
+    this.renderer.render(this.scene, this.camera);
+    // Read in the same task as the render, so the picture is there even without a preserved drawing buffer.
+    return new Promise((resolve, reject) => {
+      this.renderer.domElement.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the canvas could not be encoded as a PNG'))), 'image/png');
+    });
+  }
+
   /** Runs `hook` before each rendered frame (until the returned function is called). It must not wait for anything. */
   onFrame(hook: FrameHook): () => void {
     this.frameHooks.push(hook);

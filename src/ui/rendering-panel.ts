@@ -1,6 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import { downloadBlob, fileTimestamp } from './download';
 
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 export type Resolution = (typeof RESOLUTIONS)[number];
@@ -18,19 +19,35 @@ export interface RenderingPanelOptions {
 const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations'>> = { maxIterations: 20 };
 
 /**
- * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, and the solver's length and position
- * iteration counts.
+ * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, the solver's length and position
+ * iteration counts, the eye simulation, and a button that saves the picture as a PNG.
  */
 export class RenderingPanel {
   readonly folder: GUI;
-  private readonly state: { wireframe: boolean; showEyes: boolean; showTeeth: boolean; resolution: Resolution; lengthIterations: number; positionIterations: number };
+  private readonly state: {
+    wireframe: boolean;
+    showEyes: boolean;
+    showTeeth: boolean;
+    resolution: Resolution;
+    lengthIterations: number;
+    positionIterations: number;
+    eyeSimulation: boolean;
+    savePNG: () => void;
+  };
   private readonly controllers: Controller[] = [];
   private readonly unsubscribe: () => void;
 
   constructor(parent: GUI, private readonly face: FaceHandle, options: RenderingPanelOptions) {
     const o = { ...RENDERING_PANEL_DEFAULTS, ...options };
     const skin = face.getSkinParameters();
-    this.state = { ...face.getRenderOptions(), resolution: o.resolution, lengthIterations: skin.lengthIterations, positionIterations: skin.positionIterations };
+    this.state = {
+      ...face.getRenderOptions(),
+      resolution: o.resolution,
+      lengthIterations: skin.lengthIterations,
+      positionIterations: skin.positionIterations,
+      eyeSimulation: face.getEyeSimulation(),
+      savePNG: () => void this.savePNG(),
+    };
     this.folder = parent.addFolder('Rendering');
     const s = this.state;
     this.add(this.folder.add(s, 'wireframe').onChange((v: boolean) => face.setRenderOptions({ wireframe: v })), 'wireframe');
@@ -45,6 +62,8 @@ export class RenderingPanel {
       this.folder.add(s, 'positionIterations', 1, o.maxIterations, 1).name('position iterations').onChange((n: number) => face.setSkinParameters({ positionIterations: n })),
       'position-iterations',
     );
+    this.add(this.folder.add(s, 'eyeSimulation').name('eye simulation').onChange((v: boolean) => face.setEyeSimulation(v)), 'eye-simulation');
+    this.add(this.folder.add(s, 'savePNG').name('save PNG'), 'save-png');
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }
 
@@ -59,8 +78,18 @@ export class RenderingPanel {
     this.controllers.push(controller);
   }
 
+  /** Downloads the canvas as `softface-<timestamp>.png`; a failure is reported on the console, not thrown. */
+  private async savePNG(): Promise<void> {
+    try {
+      downloadBlob(await this.face.savePNG(), `softface-${fileTimestamp()}.png`);
+    } catch (error) {
+      console.warn(`save PNG: ${(error as Error).message}`);
+    }
+  }
+
   private changed(change: FaceChange): void {
     if (change === 'render') Object.assign(this.state, this.face.getRenderOptions());
+    else if (change === 'eyes') this.state.eyeSimulation = this.face.getEyeSimulation();
     else if (change === 'skin') {
       const skin = this.face.getSkinParameters();
       this.state.lengthIterations = skin.lengthIterations;

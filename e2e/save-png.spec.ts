@@ -1,0 +1,35 @@
+import { readFile } from 'node:fs/promises';
+import { openFace } from './face';
+import { expect, test } from './fixtures';
+import { control, openFolder } from './panels';
+
+const PNG_MAGIC = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];
+
+test('save PNG: face.savePNG() gives the canvas as a PNG, and the button downloads it', async ({ page }) => {
+  await openFace(page, '/?resolution=low');
+  const png = await page.evaluate(async () => {
+    const blob = await window.face.savePNG();
+    const bytes = Array.from(new Uint8Array(await blob.slice(0, 8).arrayBuffer()));
+    const image = await createImageBitmap(blob);
+    // The middle of the picture is the face, not the background.
+    const c = new OffscreenCanvas(image.width, image.height);
+    const ctx = c.getContext('2d')!;
+    ctx.drawImage(image, 0, 0);
+    const [r, g, b] = ctx.getImageData(image.width >> 1, image.height >> 1, 1, 1).data;
+    const canvas = document.querySelector('#viewport canvas') as HTMLCanvasElement;
+    return { type: blob.type, size: blob.size, bytes, width: image.width, height: image.height, canvas: [canvas.width, canvas.height], centre: [r, g, b] };
+  });
+  console.log(`PNG: ${png.width} x ${png.height}, ${png.size} bytes, centre pixel ${png.centre}`);
+  expect(png.type).toBe('image/png');
+  expect(png.bytes).toEqual(PNG_MAGIC);
+  expect(png.size).toBeGreaterThan(10_000);
+  expect([png.width, png.height]).toEqual(png.canvas);
+  expect(Math.abs(png.centre[0] - 0x1d) + Math.abs(png.centre[1] - 0x20) + Math.abs(png.centre[2] - 0x24)).toBeGreaterThan(60);
+
+  await openFolder(page, 'Rendering');
+  const [download] = await Promise.all([page.waitForEvent('download'), control(page, 'save-png').locator('button').click()]);
+  expect(download.suggestedFilename()).toMatch(/^softface-\d{4}-\d\d-\d\dT\d\d-\d\d-\d\d\.png$/);
+  const file = await readFile(await download.path());
+  expect(Array.from(file.subarray(0, 8))).toEqual(PNG_MAGIC);
+  expect(file.length).toBeGreaterThan(10_000);
+});

@@ -1,0 +1,100 @@
+import { Euler, Quaternion, type Object3D } from 'three';
+import { DEGREES } from '../core/math3';
+import { EyeSimulation, type EyeSimulationOptions } from '../core/eye-simulation';
+import type { EyeStats, FaceEyes, FaceHandle } from '../embed/face-handle';
+import type { FrameHook } from '../render/head-view';
+
+/** Something that runs a hook before every rendered frame (HeadView). */
+export interface FrameHooks {
+  onFrame(hook: FrameHook): () => void;
+}
+
+/** Options of the eye driver. */
+export interface EyeDriverOptions {
+  /** The state machine's options: seed, timing, gaze range, how far the lids follow the gaze. */
+  simulation?: Partial<EyeSimulationOptions>;
+  /** Whether to move the lids through the face's overlay (needs a muscle rig); the eyes turn either way. */
+  lids?: boolean;
+}
+
+const EYE_DRIVER_DEFAULTS: Required<EyeDriverOptions> = { simulation: {}, lids: true };
+
+/** The overlay entries the driver writes: AU43 closes both upper lids, AU5 raises them. */
+const LID_IDS: readonly string[] = ['AU43', 'AU5'];
+
+/**
+ * Runs the eye simulation on the page: every frame it advances the state machine to the frame's time, turns the
+ * eyeballs about their centres (their nodes sit at the model's eye pivots) and sets the lids' Action Units in the
+ * face's overlay, so blinks happen on the skin, through the lid muscles, on top of whatever the sliders say.
+ */
+export class EyeDriver implements FaceEyes {
+  private readonly simulation: EyeSimulation;
+  private readonly o: Required<EyeDriverOptions>;
+  private readonly rest: Quaternion[];
+  private readonly euler = new Euler(0, 0, 0, 'YXZ');
+  private readonly turn = new Quaternion();
+  private readonly lidValues = new Float64Array(LID_IDS.length);
+  private readonly stopFrames: () => void;
+  private on = false;
+  /** Frame time at which the simulation's clock reads 0 (NaN until the first frame after switching on). */
+  private startedAt = Number.NaN;
+
+  constructor(
+    private readonly face: FaceHandle,
+    frames: FrameHooks,
+    private readonly eyes: readonly Object3D[],
+    options: EyeDriverOptions = {},
+  ) {
+    this.o = { ...EYE_DRIVER_DEFAULTS, ...options };
+    this.simulation = new EyeSimulation(this.o.simulation);
+    this.rest = eyes.map((e) => e.quaternion.clone());
+    this.stopFrames = frames.onFrame((now) => this.frame(now));
+  }
+
+  /** Starts (from a fresh clock and zeroed counts) or stops the simulation; stopping puts eyes and lids back. */
+  setEnabled(on: boolean): void {
+    if (on === this.on) return;
+    this.on = on;
+    if (on) {
+      this.simulation.reset();
+      this.startedAt = Number.NaN;
+    } else this.putBack();
+  }
+
+  enabled(): boolean {
+    return this.on;
+  }
+
+  /** Counts since the simulation was last switched on, and the gaze now. */
+  stats(): EyeStats {
+    const s = this.simulation;
+    return { on: this.on, blinks: s.blinks, saccades: s.saccades, blink: s.blink, time: s.now, gaze: { yaw: s.yaw, pitch: s.pitch } };
+  }
+
+  /** Stops following frames and puts eyes and lids back. */
+  dispose(): void {
+    this.stopFrames();
+    if (this.on) this.putBack();
+    this.on = false;
+  }
+
+  private frame(now: number): void {
+    if (!this.on) return;
+    if (Number.isNaN(this.startedAt)) this.startedAt = now;
+    const s = this.simulation;
+    s.advance(now - this.startedAt);
+    // Both eyes turn alike (no vergence): yaw about the head's up axis, then pitch about the turned eye's x axis.
+    this.euler.set(-s.pitch * DEGREES, s.yaw * DEGREES, 0);
+    this.turn.setFromEuler(this.euler);
+    for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.multiplyQuaternions(this.turn, this.rest[i]);
+    if (!this.o.lids) return;
+    this.lidValues[0] = s.lidClose();
+    this.lidValues[1] = s.lidRaise();
+    this.face.setOverlay(LID_IDS, this.lidValues);
+  }
+
+  private putBack(): void {
+    for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.copy(this.rest[i]);
+    if (this.o.lids) this.face.clearOverlay();
+  }
+}

@@ -1,0 +1,86 @@
+import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import { decodeExpression, encodeExpression } from './expression-hash';
+
+/** Options of the URL hash sync. */
+export interface HashSyncOptions {
+  /** Shortest time between two writes of the hash, in ms (dragging a slider changes the face every frame). */
+  intervalMs?: number;
+}
+
+export const HASH_SYNC_DEFAULTS: Required<HashSyncOptions> = { intervalMs: 250 };
+
+/**
+ * Keeps the current expression (Action Unit sliders and preset weights) in the URL hash, so that a copied link
+ * reopens the same face: applies the hash the page opened with (and any the user types later), and rewrites it with
+ * `history.replaceState` after changes, at most every `intervalMs` and always after the last one. Replacing, not
+ * pushing, keeps slider moves out of the back button's history.
+ */
+export class HashSync {
+  private readonly o: Required<HashSyncOptions>;
+  private readonly unsubscribe: () => void;
+  private readonly onHashChange = (): void => this.applyHash(location.hash, true);
+  private timer: ReturnType<typeof setTimeout> | undefined;
+  private lastWrite = -Infinity;
+
+  constructor(
+    private readonly face: FaceHandle,
+    options: HashSyncOptions = {},
+  ) {
+    this.o = { ...HASH_SYNC_DEFAULTS, ...options };
+    this.unsubscribe = face.onChange((change) => this.changed(change));
+    this.applyHash(location.hash, false);
+    window.addEventListener('hashchange', this.onHashChange);
+  }
+
+  /**
+   * Applies an expression hash (see expression-hash.ts); with `replace`, on a neutral face rather than on top of the
+   * current one. Entries the face rejects are reported as warnings and skipped; the hash is then rewritten without them.
+   */
+  applyHash(hash: string, replace: boolean): void {
+    if (!hash || hash === '#') {
+      if (replace) this.face.reset();
+      return;
+    }
+    const { actionUnits, presets } = decodeExpression(hash);
+    const attempt = (apply: () => void): void => {
+      try {
+        apply();
+      } catch (error) {
+        console.warn(`URL hash: ${(error as Error).message}`);
+      }
+    };
+    if (replace) this.face.reset();
+    for (const [id, value] of Object.entries(actionUnits)) attempt(() => this.face.setActionUnit(id, value));
+    for (const [name, weight] of Object.entries(presets)) attempt(() => this.face.applyPreset(name, weight));
+  }
+
+  /** The hash (with its `#`, or empty for the neutral face) of the current expression. */
+  currentHash(): string {
+    const presets: Record<string, number> = {};
+    for (const p of this.face.listPresets()) presets[p.name] = p.weight;
+    return encodeExpression({ actionUnits: this.face.getActionUnits(), presets });
+  }
+
+  /** Writes the hash now, dropping any write that was waiting. */
+  flush(): void {
+    if (this.timer !== undefined) clearTimeout(this.timer);
+    this.timer = undefined;
+    this.lastWrite = performance.now();
+    const url = `${location.pathname}${location.search}${this.currentHash()}`;
+    if (url !== `${location.pathname}${location.search}${location.hash}`) history.replaceState(history.state, '', url);
+  }
+
+  /** Stops following the face and the address bar; a write still waiting is made now. */
+  destroy(): void {
+    this.unsubscribe();
+    window.removeEventListener('hashchange', this.onHashChange);
+    if (this.timer !== undefined) this.flush();
+  }
+
+  private changed(change: FaceChange): void {
+    if (change !== 'expression' || this.timer !== undefined) return;
+    const wait = this.lastWrite + this.o.intervalMs - performance.now();
+    if (wait <= 0) this.flush();
+    else this.timer = setTimeout(() => this.flush(), wait);
+  }
+}
