@@ -1,6 +1,7 @@
 import { ExpressionState, type ActionUnitListing, type PresetListing } from '../core/facs';
 import type { Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
+import type { RenderTiming } from '../render/head-view';
 import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
 
@@ -29,6 +30,7 @@ export interface FaceView {
   lightOptions(): LightOptions;
   setRenderOptions(partial: Partial<RenderOptions>): void;
   renderOptions(): RenderOptions;
+  measureRender(frames?: number): RenderTiming;
 }
 
 /**
@@ -152,6 +154,12 @@ export class FaceHandle {
 
   getRenderOptions(): RenderOptions {
     return this.shown().renderOptions();
+  }
+
+  /** Renders `frames` frames (default 100) back to back and reports their main-thread time (a benchmark: it blocks the page). */
+  measureRender(frames = 100): RenderTiming {
+    if (!Number.isInteger(frames) || frames < 1 || frames > 10_000) throw new Error(`measureRender: frames must be an integer within 1..10000, got ${String(frames)}`);
+    return this.shown().measureRender(frames);
   }
 
   /**
