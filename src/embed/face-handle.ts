@@ -2,6 +2,7 @@ import { ExpressionState, type ActionUnitListing, type PresetListing } from '../
 import type { Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
 import type { RenderTiming } from '../render/head-view';
+import type { MaterialDescription } from '../render/materials';
 import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
 
@@ -31,6 +32,7 @@ export interface FaceView {
   setRenderOptions(partial: Partial<RenderOptions>): void;
   renderOptions(): RenderOptions;
   measureRender(frames?: number): RenderTiming;
+  describeMaterials(): MaterialDescription[];
 }
 
 /**
@@ -154,6 +156,11 @@ export class FaceHandle {
 
   getRenderOptions(): RenderOptions {
     return this.shown().renderOptions();
+  }
+
+  /** The head's materials as plain data: colours, roughness, sheen, textures, the subsurface look (read-only). */
+  describeMaterials(): MaterialDescription[] {
+    return this.shown().describeMaterials();
   }
 
   /** Renders `frames` frames (default 100) back to back and reports their main-thread time (a benchmark: it blocks the page). */

@@ -10,10 +10,12 @@ import {
   SRGBColorSpace,
   Vector3,
   WebGLRenderer,
+  type Material,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { boxCentre, type HeadModel } from './head-model';
+import { describeMaterial, type MaterialDescription } from './materials';
 import {
   LIGHT_DEFAULTS,
   LIGHT_RANGES,
@@ -158,6 +160,15 @@ export class HeadView {
       this.renderer.render(this.scene, this.camera);
     };
     if (!this.frame) loop(performance.now());
+  }
+
+  /** The shown head's materials as plain data, each once (read-only: for tests and debugging). */
+  describeMaterials(): MaterialDescription[] {
+    const seen = new Set<Material>();
+    this.head?.root.traverse((o) => {
+      if (o instanceof Mesh) for (const m of Array.isArray(o.material) ? o.material : [o.material]) seen.add(m as Material);
+    });
+    return [...seen].map(describeMaterial);
   }
 
   /**
