@@ -1,6 +1,8 @@
 import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
 import type { Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
+import type { RenderTiming } from '../render/head-view';
+import type { MaterialDescription } from '../render/materials';
 import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
 
@@ -56,6 +58,8 @@ export interface FaceView {
   renderOptions(): RenderOptions;
   /** Renders a frame and encodes the canvas as a PNG. */
   snapshot(): Promise<Blob>;
+  measureRender(frames?: number): RenderTiming;
+  describeMaterials(): MaterialDescription[];
 }
 
 /**
@@ -185,6 +189,17 @@ export class FaceHandle {
 
   getRenderOptions(): RenderOptions {
     return this.shown().renderOptions();
+  }
+
+  /** The head's materials as plain data: colours, roughness, sheen, textures, the subsurface look (read-only). */
+  describeMaterials(): MaterialDescription[] {
+    return this.shown().describeMaterials();
+  }
+
+  /** Renders `frames` frames (default 100) back to back and reports their main-thread time (a benchmark: it blocks the page). */
+  measureRender(frames = 100): RenderTiming {
+    if (!Number.isInteger(frames) || frames < 1 || frames > 10_000) throw new Error(`measureRender: frames must be an integer within 1..10000, got ${String(frames)}`);
+    return this.shown().measureRender(frames);
   }
 
   /**

@@ -1,6 +1,7 @@
-import { Box3, Mesh, Object3D, Vector3, type Material } from 'three';
+import { Box3, BufferAttribute, Mesh, Object3D, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { createCorneaMaterial, createSkinMaterial, createTeethMaterial } from './materials';
+import { createHeadMaterials } from './materials';
+import { skinTint } from './skin-tint';
 
 /** What the model file's scene extras say about it (written by scripts/build-head-model.ts). */
 export interface HeadModelInfo {
@@ -36,17 +37,31 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
   });
   const skin = root.getObjectByName('skin');
   if (!(skin instanceof Mesh)) throw new Error(`${url} has no mesh named "skin"`);
-  skin.material = createSkinMaterial();
+  const materials = createHeadMaterials();
+  replaceMaterial(skin, materials.skin);
+  // Lips, inner mouth and cheeks: per-vertex albedo multipliers, computed once at rest.
+  const uv = skin.geometry.getAttribute('uv');
+  if (uv) {
+    // Through the getters: the model's attributes are interleaved, so their arrays hold more than one attribute.
+    const position = skin.geometry.getAttribute('position');
+    const positions = Float32Array.from({ length: 3 * position.count }, (_, i) => position.getComponent(Math.floor(i / 3), i % 3));
+    const uvs = Float32Array.from({ length: 2 * uv.count }, (_, i) => uv.getComponent(Math.floor(i / 2), i % 2));
+    skin.geometry.setAttribute('color', new BufferAttribute(skinTint(positions, uvs), 3));
+    materials.skin.vertexColors = true;
+  }
 
-  const teethMaterial = createTeethMaterial();
   const teeth = ['teeth-upper', 'teeth-lower'].map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
-  for (const t of teeth) forEachMesh(t, (m) => replaceMaterial(m, teethMaterial));
+  for (const t of teeth) forEachMesh(t, (m) => replaceMaterial(m, materials.teeth));
+  const tongue = root.getObjectByName('tongue');
+  if (tongue) forEachMesh(tongue, (m) => replaceMaterial(m, materials.tongue));
 
   const eyes = ['eye-l', 'eye-r'].map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
-  const cornea = createCorneaMaterial();
+  const byName: Partial<Record<string, Material>> = { sclera: materials.sclera, iris: materials.iris, cornea: materials.cornea };
   for (const eye of eyes) {
     forEachMesh(eye, (m) => {
-      if ((m.material as Material).name === 'cornea') replaceMaterial(m, cornea);
+      const replacement = byName[(m.material as Material).name];
+      if (replacement) replaceMaterial(m, replacement);
+      // The cornea blends over the iris, so it is drawn after the opaque parts.
       m.renderOrder = (m.material as Material).transparent ? 2 : 0;
     });
   }
@@ -56,7 +71,7 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
     skin,
     eyes,
     teeth,
-    tongue: root.getObjectByName('tongue'),
+    tongue,
     jaw: root.getObjectByName('jaw'),
     info,
     bounds: skin.geometry.boundingBox!.clone(),

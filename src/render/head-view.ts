@@ -10,10 +10,12 @@ import {
   SRGBColorSpace,
   Vector3,
   WebGLRenderer,
+  type Material,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { boxCentre, type HeadModel } from './head-model';
+import { describeMaterial, type MaterialDescription } from './materials';
 import {
   LIGHT_DEFAULTS,
   LIGHT_RANGES,
@@ -35,6 +37,21 @@ export interface HeadViewOptions {
 
 /** Work done before each rendered frame; `now` is the frame's timestamp in ms. */
 export type FrameHook = (now: number) => void;
+
+/** What `measureRender` reports: main-thread time of `renderer.render` and what the last frame drew. */
+export interface RenderTiming {
+  frames: number;
+  /** Main-thread milliseconds spent in `renderer.render` per frame: mean and median. */
+  meanMs: number;
+  medianMs: number;
+  /** Wall milliseconds per frame over the whole run, waiting at the end for the GPU to finish (pixel cost included). */
+  finishedMs: number;
+  /** From `renderer.info` after the last frame. */
+  calls: number;
+  triangles: number;
+  programs: number;
+  textures: number;
+}
 
 /** How far the key light sits from the head's centre, in metres (a directional light: only its direction counts). */
 const KEY_DISTANCE = 1.3;
@@ -153,6 +170,48 @@ export class HeadView {
       this.renderer.render(this.scene, this.camera);
     };
     if (!this.frame) loop(performance.now());
+  }
+
+  /** The shown head's materials as plain data, each once (read-only: for tests and debugging). */
+  describeMaterials(): MaterialDescription[] {
+    const seen = new Set<Material>();
+    this.head?.root.traverse((o) => {
+      if (o instanceof Mesh) for (const m of Array.isArray(o.material) ? o.material : [o.material]) seen.add(m as Material);
+    });
+    return [...seen].map(describeMaterial);
+  }
+
+  /**
+   * Renders `frames` frames back to back, timing each `renderer.render` call with `performance.now()` (a benchmark:
+   * it blocks the page while it runs).
+   */
+  measureRender(frames = 100): RenderTiming {
+    const times: number[] = [];
+    const gl = this.renderer.getContext();
+    const pixel = new Uint8Array(4);
+    // One frame first, so that shader compilation and texture upload are not counted.
+    this.renderer.render(this.scene, this.camera);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    const start = performance.now();
+    for (let i = 0; i < frames; i++) {
+      const t0 = performance.now();
+      this.renderer.render(this.scene, this.camera);
+      times.push(performance.now() - t0);
+    }
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    const finishedMs = (performance.now() - start) / frames;
+    times.sort((a, b) => a - b);
+    const info = this.renderer.info;
+    return {
+      frames,
+      meanMs: times.reduce((s, t) => s + t, 0) / frames,
+      medianMs: times[Math.floor(frames / 2)],
+      finishedMs,
+      calls: info.render.calls,
+      triangles: info.render.triangles,
+      programs: info.programs?.length ?? 0,
+      textures: info.memory.textures,
+    };
   }
 
   /** Stops rendering and frees the GPU resources and listeners. */

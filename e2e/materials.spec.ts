@@ -1,0 +1,50 @@
+import { openFace } from './face';
+import { expect, test } from './fixtures';
+
+test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth and tongue have their own materials', async ({ page }) => {
+  await openFace(page, '/?resolution=low');
+  const materials = await page.evaluate(() => window.face.describeMaterials());
+  const byName = Object.fromEntries(materials.map((m) => [m.name, m]));
+  expect(Object.keys(byName).sort()).toEqual(['cornea', 'iris', 'sclera', 'skin', 'teeth', 'tongue']);
+
+  const skin = byName.skin;
+  expect(skin.type).toBe('MeshPhysicalMaterial');
+  expect(skin.normalMap).not.toBeNull();
+  const pores = skin.normalMap!;
+  expect(pores.width).toBeGreaterThanOrEqual(256);
+  expect(pores.seed).not.toBeNull();
+  // Pore detail: a share of texels lean away from flat, and the map averages out flat (no tilt of the whole skin).
+  expect(pores.detail).toBeGreaterThan(0.05);
+  expect(Math.abs(pores.mean[0])).toBeLessThan(0.02);
+  expect(Math.abs(pores.mean[1])).toBeLessThan(0.02);
+  expect(pores.normalScale[0]).toBeGreaterThan(0);
+  // Tiled finely: pores are millimetres on a head whose uvs span about a metre.
+  expect(pores.repeat[0]).toBeGreaterThanOrEqual(4);
+  expect(skin.sheen).toBeGreaterThan(0);
+  // The subsurface look: diffuse light wraps past the terminator, red furthest.
+  expect(skin.subsurface).not.toBeNull();
+  const [r, g, b] = skin.subsurface!.wrap;
+  expect(r).toBeGreaterThan(g);
+  expect(g).toBeGreaterThanOrEqual(b);
+  expect(b).toBeGreaterThan(0);
+
+  expect(byName.iris.map).not.toBeNull();
+  expect(byName.sclera.map).not.toBeNull();
+  expect(byName.cornea.transparent).toBe(true);
+  expect(byName.cornea.clearcoat).toBeGreaterThan(0.5);
+  expect(byName.cornea.roughness).toBeLessThan(0.1);
+  // Teeth: not pure white, warm (ivory).
+  const teeth = [1, 3, 5].map((i) => parseInt(byName.teeth.color.slice(i, i + 2), 16));
+  expect(Math.max(...teeth)).toBeLessThan(0xf0);
+  expect(teeth[0]).toBeGreaterThan(teeth[2]);
+  // Tongue: pinkish red and rough.
+  const tongue = [1, 3, 5].map((i) => parseInt(byName.tongue.color.slice(i, i + 2), 16));
+  expect(tongue[0]).toBeGreaterThan(1.5 * tongue[1]);
+  expect(byName.tongue.roughness).toBeGreaterThan(0.3);
+
+  // Wireframe still reaches every one of the new materials, and comes back.
+  await page.evaluate(() => window.face.setRenderOptions({ wireframe: true }));
+  expect((await page.evaluate(() => window.face.describeMaterials())).every((m) => m.wireframe)).toBe(true);
+  await page.evaluate(() => window.face.setRenderOptions({ wireframe: false }));
+  expect((await page.evaluate(() => window.face.describeMaterials())).some((m) => m.wireframe)).toBe(false);
+});

@@ -1,0 +1,79 @@
+/**
+ * Pictures and render timing of the skin, eyes and teeth: `node scripts/look.mjs [--bench] [--shots] [--no-build] [--port N]`.
+ * Builds the app, serves it and, in headless Chromium at 1024 x 768 with the medium head:
+ *   --shots  writes docs/images/neutral.png (the neutral face) and docs/images/closeup-wrinkles.png (forehead and
+ *            eyes at twice the pixel density, brows raised by AU1 + AU2 so the solver folds the forehead);
+ *   --bench  prints `face.measureRender(100)` three times: main-thread ms per `renderer.render` and `renderer.info`.
+ */
+import { execSync, spawn } from 'node:child_process';
+import { chromium } from '@playwright/test';
+import { chromiumPath } from './chromium-path.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const i = args.indexOf(`--${name}`);
+  return i >= 0 && i + 1 < args.length ? args[i + 1] : fallback;
+};
+const PORT = Number(option('port', '4375'));
+const VIEWPORT = { width: 1024, height: 768 };
+/** CSS pixels of the close-up: forehead and eyes, shot at 2x so the picture is 1024 x 768. */
+const CLOSEUP = { x: 256, y: 150, width: 512, height: 384 };
+
+if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
+const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
+const browser = await chromium.launch({
+  executablePath: chromiumPath(),
+  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--no-first-run'],
+});
+
+/** Opens the page (retrying while the server starts) and waits for the head. */
+async function open(deviceScaleFactor) {
+  const page = await browser.newPage({ viewport: VIEWPORT, deviceScaleFactor });
+  page.on('pageerror', (e) => console.error(`page error: ${e.message}`));
+  page.on('console', (m) => m.type() === 'error' && console.error(`console error: ${m.text()}`));
+  for (let i = 0; ; i++) {
+    try {
+      await page.goto(`http://127.0.0.1:${PORT}/?resolution=medium`);
+      break;
+    } catch (error) {
+      if (i > 50) throw error;
+      await new Promise((r) => setTimeout(r, 300));
+    }
+  }
+  await page.waitForFunction(() => document.documentElement.dataset.state, null, { timeout: 60_000 });
+  await page.evaluate(() => window.face.ready);
+  // The panels would cover part of the face in close-ups; pictures show the head alone.
+  await page.addStyleTag({ content: '.lil-gui { display: none !important; }' });
+  return page;
+}
+
+try {
+  if (args.includes('--shots')) {
+    const page = await open(1);
+    await page.evaluate(() => window.face.settle(60_000));
+    await page.waitForTimeout(500);
+    await page.screenshot({ path: 'docs/images/neutral.png' });
+    console.log('wrote docs/images/neutral.png');
+    await page.close();
+
+    const close = await open(2);
+    await close.evaluate(async () => {
+      window.face.setActionUnit('AU1', 1);
+      window.face.setActionUnit('AU2', 1);
+      await window.face.settle(60_000);
+    });
+    await close.waitForTimeout(500);
+    await close.screenshot({ path: 'docs/images/closeup-wrinkles.png', clip: CLOSEUP });
+    console.log('wrote docs/images/closeup-wrinkles.png');
+    await close.close();
+  }
+  if (args.includes('--bench')) {
+    const page = await open(1);
+    await page.evaluate(() => window.face.settle(60_000));
+    for (let run = 0; run < 3; run++) console.log(JSON.stringify(await page.evaluate(() => window.face.measureRender(100))));
+    await page.close();
+  }
+} finally {
+  await browser.close();
+  process.kill(-server.pid);
+}
