@@ -1,7 +1,7 @@
 /**
  * Solver benchmark: `npm run bench`. For each head resolution and two length-iteration counts, solves frames of a
  * held expression (brows raised, one mouth corner pulled) and reports the median and 90th-percentile frame time, the
- * nanoseconds per edge projection and the milliseconds for normals. Prints a table and writes bench-results/solver.json.
+ * nanoseconds per edge projection and the milliseconds for normals, bending and orientation. Prints a table and writes bench-results/solver.json.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, platform } from 'node:os';
@@ -55,6 +55,7 @@ interface Row {
   nsPerEdgeProjection: number;
   medianNormalsMs: number;
   medianBendingMs: number;
+  medianOrientationMs: number;
 }
 
 const rows: Row[] = [];
@@ -68,6 +69,7 @@ for (const { name, frames } of RESOLUTIONS) {
     const lengths: number[] = [];
     const normals: number[] = [];
     const bending: number[] = [];
+    const orientation: number[] = [];
     for (let f = 0; f < WARMUP_FRAMES + frames; f++) {
       solver.wake(); // keep solving: measure the cost of a frame, not of a sleeping solver
       solver.step();
@@ -76,6 +78,7 @@ for (const { name, frames } of RESOLUTIONS) {
       lengths.push(solver.timings.lengths);
       normals.push(solver.timings.normals);
       bending.push(solver.timings.bending);
+      orientation.push(solver.timings.orientation);
     }
     const p = solver.parameters();
     const sorted = [...total].sort((a, b) => a - b);
@@ -92,15 +95,16 @@ for (const { name, frames } of RESOLUTIONS) {
       nsPerEdgeProjection: (median(lengths) * 1e6) / projections,
       medianNormalsMs: median(normals),
       medianBendingMs: median(bending),
+      medianOrientationMs: median(orientation),
     });
   }
 }
 
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, platform: platform(), node: process.version };
-const header = '| head | vertices | edges | length iterations | median ms/frame | p90 ms/frame | ns/edge projection | normals ms | bending ms |';
+const header = '| head | vertices | edges | length iterations | median ms/frame | p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
 const lines = rows.map(
   (r) =>
-    `| ${r.resolution} | ${r.vertices.toLocaleString('en-US')} | ${r.edges.toLocaleString('en-US')} | ${r.lengthIterations} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.medianNormalsMs.toFixed(2)} | ${r.medianBendingMs.toFixed(2)} |`,
+    `| ${r.resolution} | ${r.vertices.toLocaleString('en-US')} | ${r.edges.toLocaleString('en-US')} | ${r.lengthIterations} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.medianNormalsMs.toFixed(2)} | ${r.medianBendingMs.toFixed(2)} | ${r.medianOrientationMs.toFixed(2)} |`,
 );
 console.log(`Solver benchmark on ${machine.cpu}, ${machine.cores} cores, Node ${machine.node} (one thread; ${rows[0].positionIterations} position iterations)\n`);
 console.log([header, header.replace(/[^|]+/g, ' --- '), ...lines].join('\n'));

@@ -98,6 +98,8 @@ export interface FrameTimings {
   lengths: number;
   bending: number;
   collisions: number;
+  /** Orientation passes, within the outer iterations and at the frame's end. */
+  orientation: number;
   normals: number;
   total: number;
 }
@@ -143,7 +145,7 @@ export class SkinSolver {
   /** Frames solved since creation. */
   frames = 0;
   /** Where the last frame's time went (reused, never reallocated). */
-  readonly timings: FrameTimings = { positions: 0, muscles: 0, lengths: 0, bending: 0, collisions: 0, normals: 0, total: 0 };
+  readonly timings: FrameTimings = { positions: 0, muscles: 0, lengths: 0, bending: 0, collisions: 0, orientation: 0, normals: 0, total: 0 };
 
   constructor(topology: SkinTopology, options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[] } = {}) {
     this.topology = topology;
@@ -254,7 +256,7 @@ export class SkinSolver {
     const x = this.buffers.positions;
     const time = this.timings;
     const start = now();
-    time.positions = time.muscles = time.lengths = time.bending = time.collisions = 0;
+    time.positions = time.muscles = time.lengths = time.bending = time.collisions = time.orientation = 0;
     this.previous.set(x);
     const p = this.params;
     for (let it = 0; it < p.positionIterations; it++) {
@@ -267,7 +269,9 @@ export class SkinSolver {
       time.muscles += t0 - t1;
       for (let l = 0; l < p.lengthIterations; l++) {
         this.projectLengths();
+        const o = now();
         this.projectOrientation();
+        time.orientation += now() - o;
       }
       t1 = now();
       time.lengths += t1 - t0;
@@ -277,13 +281,14 @@ export class SkinSolver {
       this.projectCollisions();
       time.collisions += now() - t0;
     }
+    time.lengths -= time.orientation; // the orientation passes inside the length loop are counted on their own
     // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle; and
     // again after the damping, which blends two shapes and so could turn a sliver over.
     const untangle = now();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
     this.lastMove = this.damp();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
-    time.lengths += now() - untangle;
+    time.orientation += now() - untangle;
     this.frames++;
     const beforeNormals = now();
     computeNormals(x, this.topology.triangles, this.buffers.normals);
@@ -472,7 +477,8 @@ export class SkinSolver {
       // Twice the area along n: n . (u x v).
       const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - F[4 * t + 3];
       if (C >= 0) continue;
-      corrected = true;
+      // A triangle a hair under its bound (the damping's blend) is corrected but does not ask for another pass.
+      if (C < -0.01 * F[4 * t + 3]) corrected = true;
       // Gradients: b gets v x n, c gets n x u, a gets minus their sum, (u - v) x n.
       const gbx = vy * nz - vz * ny;
       const gby = vz * nx - vx * nz;
@@ -675,9 +681,9 @@ const now = (): number => performance.now();
 /** The least share of its solved move a circling vertex takes in a frame (see SkinSolver.damp). */
 export const MIN_RELAXATION = 1 / 4096;
 /** Frames after an input change when creeping skin starts being slowed down for good (see SkinSolver.damp). */
-export const COOLING_START = 200;
+export const COOLING_START = 400;
 /** Per frame after COOLING_START, the cap on every vertex's share shrinks by this factor. */
-const COOLING = 0.97;
+const COOLING = 0.98;
 /** Weight of the past in the running means of each vertex's moves: about the last five frames count. */
 const STEP_MEMORY = 0.8;
 
