@@ -6,6 +6,7 @@ import { FaceHandle } from '../embed/face-handle';
 import { headColliders } from '../render/head-colliders';
 import { loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView } from '../render/head-view';
+import { MuscleView } from '../render/muscle-view';
 import { SkinView } from '../render/skin-view';
 import { Panels } from '../ui/panels';
 import { SkinSimulation } from '../worker/skin-simulation';
@@ -130,7 +131,18 @@ try {
   failure = 'The skin solver could not start';
   const rig = await rigLoading;
   face.attach(await startSkin(head, skinView, rig), rig);
-  if (rig) face.onContractions = jawFollower(head, rig);
+  if (rig) {
+    const jaw = jawFollower(head, rig);
+    // The rig is in the model's frame, which the solver treats as the skin's own: the glyphs take the skin's transform.
+    head.root.updateMatrixWorld(true);
+    const muscles = new MuscleView(rig.muscles, head.skin.matrixWorld);
+    view.scene.add(muscles.group);
+    face.attachMuscles(muscles);
+    face.onContractions = (contractions) => {
+      jaw?.(contractions);
+      muscles.setContractions(contractions);
+    };
+  }
   // Seeded from the clock: every page load blinks differently; the state machine is seeded for its tests.
   face.attachEyes(new EyeDriver(face, view, head.eyes, { lids: !!rig, simulation: { seed: Date.now() >>> 0 } }));
   // The expression lives in the URL hash from here on: a copied link reopens the same face.

@@ -1,4 +1,5 @@
 import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
+import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../core/muscle-display';
 import type { Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
 import type { RenderTiming } from '../render/head-view';
@@ -20,10 +21,19 @@ export interface SkinSnapshot {
 export type FaceStats = SkinSimulationStats;
 
 /**
- * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters, or
- * whether the eye simulation runs.
+ * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters,
+ * whether the eye simulation runs, or which muscles are shown.
  */
-export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes';
+export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles';
+
+export type { MuscleDisplay };
+
+/** The muscle glyphs the handle shows and hides (MuscleView). */
+export interface FaceMuscles {
+  setVisible(names: ReadonlySet<string> | 'all' | 'none'): void;
+  /** The names of the muscles drawn now. */
+  shown(): string[];
+}
 
 /** What the eye simulation has done since the page started it first: counts, and the gaze now in degrees. */
 export interface EyeStats {
@@ -72,6 +82,8 @@ export class FaceHandle {
   private simulation: SkinSimulation | undefined;
   private view: FaceView | undefined;
   private eyes: FaceEyes | undefined;
+  private muscles: FaceMuscles | undefined;
+  private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
   private readonly listeners: FaceChangeListener[] = [];
   private rig: Rig | undefined;
   private expression = new ExpressionState();
@@ -110,6 +122,12 @@ export class FaceHandle {
   /** Connects the eye simulation that `setEyeSimulation` switches. */
   attachEyes(eyes: FaceEyes): void {
     this.eyes = eyes;
+  }
+
+  /** Connects the muscle glyphs that `setMuscleDisplay` shows, and shows what was asked for so far. */
+  attachMuscles(muscles: FaceMuscles): void {
+    this.muscles = muscles;
+    this.showMuscles();
   }
 
   /** Calls `listener` after every change made through the handle; returns the function that stops it. */
@@ -189,6 +207,27 @@ export class FaceHandle {
 
   getRenderOptions(): RenderOptions {
     return this.shown().renderOptions();
+  }
+
+  /**
+   * Shows the rig's muscles over the skin: `all` of them, and/or those of some Action Units (`["AU12", "AU6"]`, ids
+   * without a side: both sides are shown; the list replaces the previous one). Either key may be left out to keep it.
+   * An unknown key, a non-boolean `all` or an unknown id throws naming it and changes nothing.
+   */
+  setMuscleDisplay(partial: Partial<MuscleDisplay>): void {
+    this.muscleDisplay = nextMuscleDisplay(this.muscleDisplay, partial);
+    this.showMuscles();
+    this.emit('muscles');
+  }
+
+  /** Which muscles are asked for (a copy): `{ all, actionUnits }`. */
+  getMuscleDisplay(): MuscleDisplay {
+    return { all: this.muscleDisplay.all, actionUnits: [...this.muscleDisplay.actionUnits] };
+  }
+
+  /** The names of the muscles the scene draws now, in rig order (read-only: what the glyphs show, for tests). */
+  describeMuscleDisplay(): string[] {
+    return this.muscles?.shown() ?? [];
   }
 
   /** The head's materials as plain data: colours, roughness, sheen, textures, the subsurface look (read-only). */
@@ -315,6 +354,15 @@ export class FaceHandle {
     if (!this.rig) throw new Error('the face has no muscle rig: Action Units cannot move it');
     simulation.setContractions(this.expression.muscleContractions(this.rig, this.contractions));
     this.onContractions?.(this.contractions);
+  }
+
+  /** Makes the glyphs show the muscles the display asks for (none until a rig and its glyphs are attached). */
+  private showMuscles(): void {
+    if (!this.muscles) return;
+    const d = this.muscleDisplay;
+    if (d.all) this.muscles.setVisible('all');
+    else if (!this.rig || d.actionUnits.length === 0) this.muscles.setVisible('none');
+    else this.muscles.setVisible(new Set(shownMuscleNames(this.rig, d)));
   }
 
   private eyeSimulation(): FaceEyes {

@@ -15,8 +15,8 @@ interface SideSlider {
 
 /**
  * The Action Units folder: a folder per unit titled with its number and name, a 0..1 slider per side whose label
- * shows the FACS grade (A trace .. E maximum), and for bilateral units a link checkbox (on by default) that makes
- * either side's slider drive both.
+ * shows the FACS grade (A trace .. E maximum), for bilateral units a link checkbox (on by default) that makes
+ * either side's slider drive both, and a "show muscles" checkbox that draws the unit's muscles over the skin.
  */
 export class ActionUnitsPanel {
   readonly folder: GUI;
@@ -25,6 +25,9 @@ export class ActionUnitsPanel {
   /** Link state by Action Unit id (bilateral units only). */
   private readonly links: Record<string, boolean> = {};
   private readonly sliders: SideSlider[] = [];
+  /** Whether each unit's muscles are shown, by Action Unit id, as the handle's muscle display says. */
+  private readonly showMuscles: Record<string, boolean> = {};
+  private readonly muscleControllers: Controller[] = [];
   private readonly unsubscribe: () => void;
 
   constructor(parent: GUI, private readonly face: FaceHandle) {
@@ -49,6 +52,17 @@ export class ActionUnitsPanel {
         this.links[au.id] = true;
         unit.add(this.links, au.id).name('link sides').domElement.dataset.control = `${au.id}-link`;
       }
+      this.showMuscles[au.id] = face.getMuscleDisplay().actionUnits.includes(au.id);
+      const muscles = unit
+        .add(this.showMuscles, au.id)
+        .name('show muscles')
+        .onChange((on: boolean) => {
+          // The whole list goes to the handle, which keeps it; the checkboxes only mirror it.
+          const ids = face.getMuscleDisplay().actionUnits.filter((id) => id !== au.id);
+          face.setMuscleDisplay({ actionUnits: on ? [...ids, au.id] : ids });
+        });
+      muscles.domElement.dataset.control = `${au.id}-muscles`;
+      this.muscleControllers.push(muscles);
     }
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }
@@ -65,6 +79,12 @@ export class ActionUnitsPanel {
   }
 
   private changed(change: FaceChange): void {
+    if (change === 'muscles') {
+      const shown = this.face.getMuscleDisplay().actionUnits;
+      for (const id of Object.keys(this.showMuscles)) this.showMuscles[id] = shown.includes(id);
+      for (const c of this.muscleControllers) c.updateDisplay();
+      return;
+    }
     if (change !== 'expression') return;
     Object.assign(this.values, this.face.getActionUnits());
     for (const slider of this.sliders) {

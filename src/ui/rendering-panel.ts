@@ -20,7 +20,7 @@ const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterati
 
 /**
  * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, the solver's length and position
- * iteration counts, the eye simulation, and a button that saves the picture as a PNG.
+ * iteration counts, the eye simulation, every muscle shown over the skin, and a button that saves the picture as a PNG.
  */
 export class RenderingPanel {
   readonly folder: GUI;
@@ -32,6 +32,7 @@ export class RenderingPanel {
     lengthIterations: number;
     positionIterations: number;
     eyeSimulation: boolean;
+    showAllMuscles: boolean;
     savePNG: () => void;
   };
   private readonly controllers: Controller[] = [];
@@ -46,6 +47,7 @@ export class RenderingPanel {
       lengthIterations: skin.lengthIterations,
       positionIterations: skin.positionIterations,
       eyeSimulation: face.getEyeSimulation(),
+      showAllMuscles: face.getMuscleDisplay().all,
       savePNG: () => void this.savePNG(),
     };
     this.folder = parent.addFolder('Rendering');
@@ -63,6 +65,7 @@ export class RenderingPanel {
       'position-iterations',
     );
     this.add(this.folder.add(s, 'eyeSimulation').name('eye simulation').onChange((v: boolean) => face.setEyeSimulation(v)), 'eye-simulation');
+    this.add(this.folder.add(s, 'showAllMuscles').name('show all muscles').onChange((v: boolean) => face.setMuscleDisplay({ all: v })), 'show-all-muscles');
     this.add(this.folder.add(s, 'savePNG').name('save PNG'), 'save-png');
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }
@@ -90,6 +93,7 @@ export class RenderingPanel {
   private changed(change: FaceChange): void {
     if (change === 'render') Object.assign(this.state, this.face.getRenderOptions());
     else if (change === 'eyes') this.state.eyeSimulation = this.face.getEyeSimulation();
+    else if (change === 'muscles') this.state.showAllMuscles = this.face.getMuscleDisplay().all;
     else if (change === 'skin') {
       const skin = this.face.getSkinParameters();
       this.state.lengthIterations = skin.lengthIterations;

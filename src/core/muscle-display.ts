@@ -1,0 +1,52 @@
+/**
+ * Which muscles the scene shows: every muscle, or those of some Action Units. Pure: the handle checks and keeps the
+ * state, the muscle view draws it.
+ */
+
+import { ACTION_UNITS } from './facs';
+import type { Rig } from './rig-types';
+
+/** What is shown: all muscles, and (independently, so that switching `all` off restores them) some Action Units. */
+export interface MuscleDisplay {
+  all: boolean;
+  /** Action Unit ids without a side (`AU12`), in catalogue order. */
+  actionUnits: string[];
+}
+
+const CATALOGUE_ORDER: ReadonlyMap<string, number> = new Map(ACTION_UNITS.map((au, i) => [au.id, i]));
+
+/**
+ * Checks a partial display for `setMuscleDisplay` and returns the whole display it makes of `current`; throws,
+ * naming the culprit, on an unknown key, a non-boolean `all`, or an id that is not a catalogue Action Unit (sides
+ * like `AU12L` are refused: both sides of a unit are shown together).
+ */
+export function nextMuscleDisplay(current: MuscleDisplay, partial: unknown): MuscleDisplay {
+  const where = 'setMuscleDisplay';
+  if (typeof partial !== 'object' || partial === null || Array.isArray(partial)) throw new Error(`${where}: needs an object like { all: true } or { actionUnits: ["AU12"] }, got ${String(partial)}`);
+  const p = partial as Record<string, unknown>;
+  for (const key of Object.keys(p)) if (key !== 'all' && key !== 'actionUnits') throw new Error(`${where}: unknown option ${JSON.stringify(key)} (expected "all" or "actionUnits")`);
+  let all = current.all;
+  if (p.all !== undefined) {
+    if (typeof p.all !== 'boolean') throw new Error(`${where}: all needs a boolean, got ${String(p.all)}`);
+    all = p.all;
+  }
+  let actionUnits = current.actionUnits;
+  if (p.actionUnits !== undefined) {
+    if (!Array.isArray(p.actionUnits)) throw new Error(`${where}: actionUnits needs an array of Action Unit ids, got ${String(p.actionUnits)}`);
+    for (const id of p.actionUnits as unknown[]) {
+      if (typeof id !== 'string' || !CATALOGUE_ORDER.has(id)) {
+        throw new Error(`${where}: unknown Action Unit id ${typeof id === 'string' ? JSON.stringify(id) : String(id)} (expected one like "AU12", without a side)`);
+      }
+    }
+    actionUnits = [...new Set(p.actionUnits as string[])].sort((a, b) => CATALOGUE_ORDER.get(a)! - CATALOGUE_ORDER.get(b)!);
+  }
+  return { all, actionUnits: [...actionUnits] };
+}
+
+/** The names of the muscles `display` shows in `rig`, in the rig's muscle order (each once). */
+export function shownMuscleNames(rig: Rig, display: MuscleDisplay): string[] {
+  if (display.all) return rig.muscles.map((m) => m.name);
+  const wanted = new Set<string>();
+  for (const au of rig.actionUnits) if (display.actionUnits.includes(au.id)) for (const link of au.muscles) wanted.add(link.muscle);
+  return rig.muscles.filter((m) => wanted.has(m.name)).map((m) => m.name);
+}
