@@ -267,26 +267,26 @@ export class SkinSolver {
       this.projectMuscles();
       t0 = now();
       time.muscles += t0 - t1;
-      for (let l = 0; l < p.lengthIterations; l++) {
-        this.projectLengths();
-        const o = now();
-        this.projectOrientation();
-        time.orientation += now() - o;
-      }
+      for (let l = 0; l < p.lengthIterations; l++) this.projectLengths();
       t1 = now();
       time.lengths += t1 - t0;
+      this.projectOrientation();
+      t0 = now();
+      time.orientation += t0 - t1;
+      t1 = t0;
       this.projectBending();
       t0 = now();
       time.bending += t0 - t1;
       this.projectCollisions();
       time.collisions += now() - t0;
     }
-    time.lengths -= time.orientation; // the orientation passes inside the length loop are counted on their own
     // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle; and
     // again after the damping, which blends two shapes and so could turn a sliver over.
-    const untangle = now();
+    let untangle = now();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
+    time.orientation += now() - untangle;
     this.lastMove = this.damp();
+    untangle = now();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
     time.orientation += now() - untangle;
     this.frames++;
@@ -693,7 +693,7 @@ const STEP_MEMORY = 0.8;
  */
 export const MIN_PROJECTED_AREA = 0.25;
 /** At most this many orientation passes end a frame (they stop once a pass corrects nothing). */
-const ORIENTATION_PASSES = 16;
+const ORIENTATION_PASSES = 6;
 
 /** Each triangle's rest unit normal and twice its least projected area (MIN_PROJECTED_AREA of the rest), xyzA. */
 function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Array {
