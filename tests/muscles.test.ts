@@ -1,6 +1,6 @@
 import { Euler, Matrix4 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { mulberry32 } from '../scripts/model/eye';
+import { mulberry32 } from '../src/core/random';
 import { DEGREES, eulerMatrix, rotateAboutAxis } from '../src/core/math3';
 import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle, type MuscleOutputs } from '../src/core/muscles';
 import type { JawMuscle, LidMuscle, LinearMuscle, Muscle, SphincterMuscle, Vec3 } from '../src/core/rig-types';

@@ -1,3 +1,5 @@
+import { mulberry32 } from '../../src/core/random';
+
 /** An indexed triangle geometry with optional vertex colours. */
 export interface TriGeometry {
   positions: Float32Array;
@@ -158,14 +160,3 @@ function revolve(
 /** n + 1 evenly spaced values from 0 to 1. */
 const steps = (n: number): number[] => Array.from({ length: n + 1 }, (_, i) => i / n);
 
-/** Small seeded generator (mulberry32), so the iris pattern is the same on every run. */
-export function mulberry32(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}

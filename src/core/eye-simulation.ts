@@ -3,6 +3,7 @@
  * still for a while and then moved quickly (a saccade) to a random target, and the lid Action Unit shares that
  * follow from both. No DOM, no three.js, no allocation once constructed: a driver calls `advance` every frame.
  */
+import { mulberry32 } from './random';
 
 /** Timing, range and lid options of the eye simulation; times in ms, angles in degrees. */
 export interface EyeSimulationOptions {
@@ -58,19 +59,15 @@ export const EYE_SIMULATION_DEFAULTS: Readonly<Required<EyeSimulationOptions>> =
 
 /** A small seeded generator (mulberry32): uniform numbers in [0, 1), the same sequence for the same seed. */
 export class SeededRandom {
-  private state: number;
+  private readonly draw: () => number;
 
   constructor(seed: number) {
-    this.state = seed >>> 0;
+    this.draw = mulberry32(seed);
   }
 
   /** The next number in [0, 1). */
   next(): number {
-    this.state = (this.state + 0x6d2b79f5) >>> 0;
-    let t = this.state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    return this.draw();
   }
 
   /** A uniform number in [min, max). */

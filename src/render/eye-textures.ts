@@ -3,7 +3,7 @@
  * v runs outward on the iris (0 at the centre, 1 at the limbus) and backward on the sclera (0 at the limbus, 1 at the
  * back pole). Seeded, so every load looks the same. Pure data (RGBA8, sRGB-encoded colour), no DOM.
  */
-import { mulberry32 } from './pore-map';
+import { mulberry32 } from '../core/random';
 
 /** An RGBA8 image, rows from v = 0 upward, colour sRGB-encoded. */
 export interface EyeImage {

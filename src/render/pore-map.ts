@@ -3,6 +3,7 @@
  * skin's surface and a faint grain, from a seeded generator, so every load (and every test) gives the same bytes.
  * Pure data (no DOM), so it runs in tests; materials.ts turns it into a texture.
  */
+import { mulberry32 } from '../core/random';
 
 /** Options of the pore map. Sizes are in texels; the map tiles, so all patterns wrap around its edges. */
 export interface PoreMapOptions {
@@ -154,14 +155,3 @@ export function valueNoise(n: number, period: number, random: () => number): Flo
 
 const smooth = (t: number): number => t * t * (3 - 2 * t);
 
-/** Small seeded generator (mulberry32): the same seed gives the same sequence on every run. */
-export function mulberry32(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
