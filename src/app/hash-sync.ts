@@ -21,6 +21,8 @@ export class HashSync {
   private readonly onHashChange = (): void => this.applyHash(location.hash, true);
   private timer: ReturnType<typeof setTimeout> | undefined;
   private lastWrite = -Infinity;
+  /** True while a hash is being applied: its entries arrive one by one, and the half-applied face is no link. */
+  private applying = false;
 
   constructor(
     private readonly face: FaceHandle,
@@ -49,9 +51,15 @@ export class HashSync {
         console.warn(`URL hash: ${(error as Error).message}`);
       }
     };
-    if (replace) this.face.reset();
-    for (const [id, value] of Object.entries(actionUnits)) attempt(() => this.face.setActionUnit(id, value));
-    for (const [name, weight] of Object.entries(presets)) attempt(() => this.face.applyPreset(name, weight));
+    this.applying = true;
+    try {
+      if (replace) this.face.reset();
+      for (const [id, value] of Object.entries(actionUnits)) attempt(() => this.face.setActionUnit(id, value));
+      for (const [name, weight] of Object.entries(presets)) attempt(() => this.face.applyPreset(name, weight));
+    } finally {
+      this.applying = false;
+    }
+    this.flush();
   }
 
   /** The hash (with its `#`, or empty for the neutral face) of the current expression. */
@@ -78,7 +86,7 @@ export class HashSync {
   }
 
   private changed(change: FaceChange): void {
-    if (change !== 'expression' || this.timer !== undefined) return;
+    if (change !== 'expression' || this.applying || this.timer !== undefined) return;
     const wait = this.lastWrite + this.o.intervalMs - performance.now();
     if (wait <= 0) this.flush();
     else this.timer = setTimeout(() => this.flush(), wait);
