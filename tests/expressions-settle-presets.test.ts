@@ -1,5 +1,5 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { loadDefaultRig, loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression } from './fixtures/head-simulation';
+import { loadDefaultRig, loadHeadSimulation, MAX_SETTLE_FRAMES, returnToRest, settleExpression } from './fixtures/head-simulation';
 
 // Each preset at full weight on the medium head, solved as the worker solves it (SolverHost, colliders, rig).
 describe('every preset at full weight on the medium head', () => {
@@ -8,8 +8,11 @@ describe('every preset at full weight on the medium head', () => {
     sim = await loadHeadSimulation('medium');
   });
 
-  it.each(loadDefaultRig().presets.map((p) => p.name))('%s comes to rest with no NaN and no triangle turned over', (name) => {
+  it.each(loadDefaultRig().presets.map((p) => p.name))('%s comes to rest with no NaN and no triangle turned over, and back to rest after a reset', (name) => {
     const r = settleExpression(sim, name, MAX_SETTLE_FRAMES);
     expect(r).toMatchObject({ sleeping: true, nonFinite: 0, inverted: 0 });
+    const back = returnToRest(sim);
+    expect(back.sleeping).toBe(true);
+    expect(back.farthest).toBeLessThan(1e-5);
   });
 });

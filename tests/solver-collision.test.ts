@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { archSlabs, colliderDistance, type Collider } from '../src/core/colliders';
+import { archSlabs, colliderDistance, slabSide, type Collider } from '../src/core/colliders';
 import { SkinSolver } from '../src/core/solver';
 import { buildTopology } from '../src/core/topology';
 import { loadHeadSkin } from './fixtures/head';
@@ -53,6 +53,36 @@ describe('collisions', () => {
     expect(distance(0, 0, 0.024)).toBeGreaterThan(0.0005);
     expect(distance(0, 0, 0)).toBeGreaterThan(0.01);
     expect(Math.max(...slabs.map((s) => s.radius))).toBeLessThan(0.004);
+  });
+
+  it('pushes a point that went through a slab back to the side it started on, not out the far side', () => {
+    // A 2 cm x 1 cm wall in the x-y plane, 1 mm thick; the point starts in front (+z) and ends 0.8 mm behind its middle.
+    const wall: Collider = { name: 'wall', a: [-0.01, 0, 0], b: [0.01, 0, 0], up: [0, 0.01, 0], radius: 0.0005 };
+    const dir = [0, 0, 0];
+    const side = slabSide(wall, 0, 0.005, 0.003);
+    expect(side).toBe(1);
+    // Measured to the nearest surface it is outside behind the wall; measured from its side it is 1.3 mm inside.
+    expect(colliderDistance(wall, 0, 0.005, -0.0008, dir)).toBeCloseTo(0.0003, 9);
+    expect(colliderDistance(wall, 0, 0.005, -0.0008, dir, side)).toBeCloseTo(-0.0013, 9);
+    expect(dir).toEqual([0, 0, 1]);
+    // Beyond the wall's edge there is no wrong side: the nearest surface counts.
+    expect(colliderDistance(wall, 0, 0.012, -0.003, dir, side)).toBeCloseTo(colliderDistance(wall, 0, 0.012, -0.003, dir), 12);
+  });
+
+  it('lets skin pushed through the teeth come home: a lip behind its slab returns to rest in front of it', () => {
+    // A 2 cm sheet 1 mm in front of a wider wall is put 3 mm behind the wall, as a jaw opening once left the lips,
+    // then left to return. The wall must bring it back to the front, where it started, not hold it behind.
+    const g = triangleGrid(0.02, 0.02, 0.001);
+    const t = buildTopology(g.positions, g.indices);
+    const wall: Collider = { name: 'teeth', a: [-0.015, -0.015, -0.0015], b: [0.015, -0.015, -0.0015], up: [0, 0.03, 0], radius: 0.0005 };
+    const s = new SkinSolver(t, { colliders: [wall] });
+    for (let i = 2; i < t.rest.length; i += 3) s.buffers.positions[i] = -0.0045;
+    s.wake();
+    for (let f = 0; f < 400 && s.step(); f++);
+    let farthest = 0;
+    for (let i = 0; i < t.rest.length; i += 3) farthest = Math.max(farthest, Math.abs(s.buffers.positions[i + 2] - t.rest[i + 2]));
+    expect(s.sleeping).toBe(true);
+    expect(farthest).toBeLessThan(1e-5);
   });
 
   it('on the head, finds the eyelid skin around each eye as collision candidates', async () => {

@@ -15,8 +15,19 @@ export interface Collider {
   radius: number;
 }
 
-/** Signed distance from a point to a collider's surface (negative inside) and the outward direction. */
-export function colliderDistance(c: Collider, x: number, y: number, z: number, out: Float32Array | number[]): number {
+/**
+ * Signed distance from a point to a collider's surface (negative inside) and the outward direction.
+ *
+ * `side` (+1 or -1, see `slabSide`) makes a slab one-sided where the point lies over its face: the distance is
+ * measured along the slab's normal toward that side, so a point that went through the wall (or around its edge and
+ * down behind it) is pushed back to the side it started on instead of being held on the wrong one. 0 (the default)
+ * measures to the nearest surface point, as for spheres and capsules.
+ */
+export function colliderDistance(c: Collider, x: number, y: number, z: number, out: Float32Array | number[], side = 0): number {
+  if (side !== 0 && c.b && c.up) {
+    const d = slabFaceDistance(c, x, y, z, side, out);
+    if (d !== null) return d;
+  }
   let px = c.a[0];
   let py = c.a[1];
   let pz = c.a[2];
@@ -56,6 +67,48 @@ export function colliderDistance(c: Collider, x: number, y: number, z: number, o
     out[2] = 1;
   }
   return d - c.radius;
+}
+
+/** The side (+1 or -1) of a slab's plane a point lies on; 0 for colliders that are not slabs. */
+export function slabSide(c: Collider, x: number, y: number, z: number): number {
+  if (!c.b || !c.up) return 0;
+  const [nx, ny, nz] = slabNormal(c);
+  return (x - c.a[0]) * nx + (y - c.a[1]) * ny + (z - c.a[2]) * nz >= 0 ? 1 : -1;
+}
+
+/** Unit normal of a slab's rectangle, (b - a) x up. */
+function slabNormal(c: Collider): [number, number, number] {
+  const b = c.b!;
+  const up = c.up!;
+  const sx = b[0] - c.a[0], sy = b[1] - c.a[1], sz = b[2] - c.a[2];
+  const nx = sy * up[2] - sz * up[1], ny = sz * up[0] - sx * up[2], nz = sx * up[1] - sy * up[0];
+  const length = Math.sqrt(nx * nx + ny * ny + nz * nz) || 1;
+  return [nx / length, ny / length, nz / length];
+}
+
+/** Distance along the slab's normal toward `side` when the point lies over the slab's face, else null. */
+function slabFaceDistance(c: Collider, x: number, y: number, z: number, side: number, out: Float32Array | number[]): number | null {
+  const b = c.b!;
+  const up = c.up!;
+  const rx = x - c.a[0], ry = y - c.a[1], rz = z - c.a[2];
+  const sx = b[0] - c.a[0], sy = b[1] - c.a[1], sz = b[2] - c.a[2];
+  const t = (rx * sx + ry * sy + rz * sz) / (sx * sx + sy * sy + sz * sz || 1);
+  const u = (rx * up[0] + ry * up[1] + rz * up[2]) / (up[0] * up[0] + up[1] * up[1] + up[2] * up[2] || 1);
+  if (t < 0 || t > 1 || u < 0 || u > 1) return null;
+  // The face's normal, without allocating: (b - a) x up.
+  let nx = sy * up[2] - sz * up[1];
+  let ny = sz * up[0] - sx * up[2];
+  let nz = sx * up[1] - sy * up[0];
+  const length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+  if (length === 0) return null;
+  const k = side / length;
+  nx *= k;
+  ny *= k;
+  nz *= k;
+  out[0] = nx;
+  out[1] = ny;
+  out[2] = nz;
+  return rx * nx + ry * ny + rz * nz - c.radius;
 }
 
 /**
