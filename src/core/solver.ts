@@ -4,6 +4,7 @@
  * wrinkle spacing in millimetres, and collisions with rigid shapes (eyes, teeth).
  */
 import { colliderDistance, type Collider } from './colliders';
+import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets, type EdgeLists, type TriangleLists } from './constraint-lists';
 import { computeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
@@ -130,6 +131,12 @@ export class SkinSolver {
   private readonly bendStiffness: Float32Array;
   /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
   private readonly triangleFrames: Float32Array;
+  /** The lists the per-frame loops walk (see constraint-lists.ts). */
+  private readonly edgeLists: EdgeLists;
+  private readonly triangleLists: TriangleLists;
+  private triangleCount = 0;
+  /** The topology's neighbours as xyz offsets (3 * vertex). */
+  private readonly neighbourOffsets: Uint32Array;
   private readonly seed: Float32Array;
   private readonly colliders: Collider[];
   private readonly colliderStart: Uint32Array;
@@ -164,6 +171,10 @@ export class SkinSolver {
     this.seed = new Float32Array(n);
     for (let v = 0; v < n; v++) this.seed[v] = hash01(v) - 0.25;
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
+    this.edgeLists = createEdgeLists(topology);
+    this.triangleLists = createTriangleLists(topology);
+    this.triangleCount = fillTriangleLists(this.triangleLists, topology.triangles, this.triangleFrames, null);
+    this.neighbourOffsets = neighbourOffsets(topology);
     this.colliders = options.colliders ?? [];
     const c = this.collisionCandidates(this.colliders);
     this.colliderStart = c.start;
@@ -219,6 +230,7 @@ export class SkinSolver {
     let count = 0;
     for (let v = 0; v < W.length; v++) if (W[v] > 0 || WN[v] > 0) this.held[count++] = v;
     this.heldCount = count;
+    fillEdgeLists(this.edgeLists, this.topology, W, this.seed, null);
     // New inputs start a new motion: every vertex may take whole steps again.
     this.relaxation.fill(1);
     this.framesSinceInput = 0;
@@ -403,49 +415,18 @@ export class SkinSolver {
   /**
    * Length constraints (thesis 4.3.3): restore each edge to its rest length, half the correction to each end. (As
    * printed, the correction's sign moves the ends the wrong way.) Edges go colour by colour, so within a colour no
-   * two projections touch the same vertex. A compressed edge also nudges its ends out along their rest normals.
+   * two projections touch the same vertex and their order does not matter: the free edges go first, then those under
+   * a muscle, where a compressed edge also nudges its ends out along their rest normals.
    */
   private projectLengths(): void {
     const x = this.buffers.positions;
-    const E = this.topology.edges;
-    const L = this.topology.restLength;
+    const lists = this.edgeLists;
+    const runs = lists.runs;
+    const { lengthStiffness, bulge } = this.params;
     const N = this.topology.restNormals;
-    const seed = this.seed;
-    const s = 0.5 * this.params.lengthStiffness;
-    const bulge = this.params.bulge;
-    const W = this.buffers.weights;
-    const count = L.length;
-    for (let e = 0; e < count; e++) {
-      const a = E[2 * e];
-      const b = E[2 * e + 1];
-      const ia = 3 * a;
-      const ib = 3 * b;
-      const dx = x[ib] - x[ia];
-      const dy = x[ib + 1] - x[ia + 1];
-      const dz = x[ib + 2] - x[ia + 2];
-      const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      if (len === 0) continue;
-      const error = len - L[e];
-      if (error === 0) continue;
-      const k = (s * error) / len;
-      x[ia] += k * dx;
-      x[ia + 1] += k * dy;
-      x[ia + 2] += k * dz;
-      x[ib] -= k * dx;
-      x[ib + 1] -= k * dy;
-      x[ib + 2] -= k * dz;
-      const held = W[a] > W[b] ? W[a] : W[b];
-      if (error < 0 && held > 0) {
-        const push = -bulge * held * error;
-        const pa = push * seed[a];
-        const pb = push * seed[b];
-        x[ia] += pa * N[ia];
-        x[ia + 1] += pa * N[ia + 1];
-        x[ia + 2] += pa * N[ia + 2];
-        x[ib] += pb * N[ib];
-        x[ib + 1] += pb * N[ib + 1];
-        x[ib + 2] += pb * N[ib + 2];
-      }
+    for (let c = 0; 2 * c + 2 < runs.length; c++) {
+      projectFreeEdges(x, lists.ends, lists.rest, lengthStiffness, runs[2 * c], runs[2 * c + 1]);
+      projectHeldEdges(x, lists, N, lengthStiffness, bulge, runs[2 * c + 1], runs[2 * c + 2]);
     }
   }
 
@@ -457,28 +438,30 @@ export class SkinSolver {
    */
   private projectOrientation(): boolean {
     const x = this.buffers.positions;
-    const T = this.topology.triangles;
-    const F = this.triangleFrames;
-    const count = T.length / 3;
+    const T = this.triangleLists.corners;
+    const F = this.triangleLists.frames;
+    const count = this.triangleCount;
     let corrected = false;
     for (let t = 0; t < count; t++) {
-      const ia = 3 * T[3 * t];
-      const ib = 3 * T[3 * t + 1];
-      const ic = 3 * T[3 * t + 2];
+      const ia = T[3 * t];
+      const ib = T[3 * t + 1];
+      const ic = T[3 * t + 2];
+      const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+      const ux = x[ib] - ax;
+      const uy = x[ib + 1] - ay;
+      const uz = x[ib + 2] - az;
+      const vx = x[ic] - ax;
+      const vy = x[ic + 1] - ay;
+      const vz = x[ic + 2] - az;
       const nx = F[4 * t];
       const ny = F[4 * t + 1];
       const nz = F[4 * t + 2];
-      const ux = x[ib] - x[ia];
-      const uy = x[ib + 1] - x[ia + 1];
-      const uz = x[ib + 2] - x[ia + 2];
-      const vx = x[ic] - x[ia];
-      const vy = x[ic + 1] - x[ia + 1];
-      const vz = x[ic + 2] - x[ia + 2];
+      const least = F[4 * t + 3];
       // Twice the area along n: n . (u x v).
-      const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - F[4 * t + 3];
+      const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - least;
       if (C >= 0) continue;
       // A triangle a hair under its bound (the damping's blend) is corrected but does not ask for another pass.
-      if (C < -0.01 * F[4 * t + 3]) corrected = true;
+      if (C < -0.01 * least) corrected = true;
       // Gradients: b gets v x n, c gets n x u, a gets minus their sum, (u - v) x n.
       const gbx = vy * nz - vz * ny;
       const gby = vz * nx - vx * nz;
@@ -516,7 +499,7 @@ export class SkinSolver {
     const X = this.topology.rest;
     const N = this.topology.restNormals;
     const start = this.topology.neighbourStart;
-    const nb = this.topology.neighbours;
+    const nb = this.neighbourOffsets;
     const stiffness = this.bendStiffness;
     const n = this.topology.vertexCount;
     for (let v = 0; v < n; v++) {
@@ -532,7 +515,7 @@ export class SkinSolver {
       // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal.
       let mean = 0;
       for (let j = j0; j < j1; j++) {
-        const k = 3 * nb[j];
+        const k = nb[j];
         mean += (x[k] - X[k]) * nx + (x[k + 1] - X[k + 1]) * ny + (x[k + 2] - X[k + 2]) * nz;
       }
       mean /= degree;
@@ -545,7 +528,7 @@ export class SkinSolver {
       x[i + 2] += lambda * nz;
       const q = lambda / degree;
       for (let j = j0; j < j1; j++) {
-        const k = 3 * nb[j];
+        const k = nb[j];
         x[k] -= q * nx;
         x[k + 1] -= q * ny;
         x[k + 2] -= q * nz;
@@ -602,6 +585,70 @@ export class SkinSolver {
       start[ci + 1] = vertices.length;
     }
     return { start, vertices: Uint32Array.from(vertices), clearance: Float32Array.from(clearance) };
+  }
+}
+
+/**
+ * Length projections of the edges `e0..e1` of an edge list (see SkinSolver.projectLengths and EdgeLists) that no
+ * muscle holds: each end moves half the length error times `stiffness` along the edge.
+ */
+function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
+  const s = 0.5 * stiffness;
+  for (let j = 3 * e0; j < 3 * e1; j += 3) {
+    const ia = ends[j];
+    const ib = ends[j + 1];
+    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    const k = len > 0 ? (s * (len - rest[j + 2])) / len : 0;
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+  }
+}
+
+/**
+ * Length projections of held edges `e0..e1`: as projectFreeEdges, and a compressed edge nudges its ends out along
+ * their rest normals `N` by `bulge` times its muscle weight, times each end's seed.
+ */
+function projectHeldEdges(x: Float32Array, lists: EdgeLists, N: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
+  const { ends, rest, held } = lists;
+  const s = 0.5 * stiffness;
+  for (let e = e0; e < e1; e++) {
+    const ia = ends[3 * e];
+    const ib = ends[3 * e + 1];
+    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    if (len === 0) continue;
+    const error = len - rest[3 * e + 2];
+    const k = (s * error) / len;
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+    if (error < 0) {
+      const push = -bulge * held[3 * e] * error;
+      const pa = push * held[3 * e + 1];
+      const pb = push * held[3 * e + 2];
+      x[ia] += pa * N[ia];
+      x[ia + 1] += pa * N[ia + 1];
+      x[ia + 2] += pa * N[ia + 2];
+      x[ib] += pb * N[ib];
+      x[ib + 1] += pb * N[ib + 1];
+      x[ib + 2] += pb * N[ib + 2];
+    }
   }
 }
 
