@@ -3,9 +3,10 @@
  * that order, a number of times, over flat Float32Arrays. Added to the thesis: a bending constraint that sets the
  * wrinkle spacing in millimetres, and collisions with rigid shapes (eyes, teeth).
  */
+import { ActiveRegion } from './active-region';
 import { colliderDistance, type Collider } from './colliders';
 import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets, type EdgeLists, type TriangleLists } from './constraint-lists';
-import { computeNormals, type SkinTopology } from './topology';
+import { computeNormals, computeVertexNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
 export interface SkinParameters {
@@ -137,6 +138,9 @@ export class SkinSolver {
   private triangleCount = 0;
   /** The topology's neighbours as xyz offsets (3 * vertex). */
   private readonly neighbourOffsets: Uint32Array;
+  /** The skin a frame solves (see active-region.ts); the lists above hold its constraints as of `listedRevision`. */
+  private readonly region: ActiveRegion;
+  private listedRevision = -1;
   private readonly seed: Float32Array;
   private readonly colliders: Collider[];
   private readonly colliderStart: Uint32Array;
@@ -154,7 +158,14 @@ export class SkinSolver {
   /** Where the last frame's time went (reused, never reallocated). */
   readonly timings: FrameTimings = { positions: 0, muscles: 0, lengths: 0, bending: 0, collisions: 0, orientation: 0, normals: 0, total: 0 };
 
-  constructor(topology: SkinTopology, options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[] } = {}) {
+  /**
+   * `activeRegion` (default true) solves only the skin that moves (see active-region.ts); false solves the whole mesh
+   * every frame.
+   */
+  constructor(
+    topology: SkinTopology,
+    options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[]; activeRegion?: boolean } = {},
+  ) {
     this.topology = topology;
     const n = topology.vertexCount;
     this.buffers = options.buffers ?? createSolverBuffers(topology);
@@ -173,8 +184,8 @@ export class SkinSolver {
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.edgeLists = createEdgeLists(topology);
     this.triangleLists = createTriangleLists(topology);
-    this.triangleCount = fillTriangleLists(this.triangleLists, topology.triangles, this.triangleFrames, null);
     this.neighbourOffsets = neighbourOffsets(topology);
+    this.region = new ActiveRegion(topology, options.activeRegion ?? true);
     this.colliders = options.colliders ?? [];
     const c = this.collisionCandidates(this.colliders);
     this.colliderStart = c.start;
@@ -230,7 +241,8 @@ export class SkinSolver {
     let count = 0;
     for (let v = 0; v < W.length; v++) if (W[v] > 0 || WN[v] > 0) this.held[count++] = v;
     this.heldCount = count;
-    fillEdgeLists(this.edgeLists, this.topology, W, this.seed, null);
+    this.region.seed(this.held, count);
+    this.refreshLists();
     // New inputs start a new motion: every vertex may take whole steps again.
     this.relaxation.fill(1);
     this.framesSinceInput = 0;
@@ -244,6 +256,11 @@ export class SkinSolver {
   /** Wakes the solver so the next step() solves a frame. */
   wake(): void {
     this.asleep = false;
+  }
+
+  /** Vertices in the active region: those the solver solves (all of them without the active region). */
+  get activeVertexCount(): number {
+    return this.region.count;
   }
 
   /** True once the shape has converged for the current inputs; step() then does nothing until an input changes. */
@@ -297,13 +314,15 @@ export class SkinSolver {
     let untangle = now();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
     time.orientation += now() - untangle;
+    this.settleRegion();
     this.lastMove = this.damp();
     untangle = now();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
     time.orientation += now() - untangle;
     this.frames++;
+    this.restRegionRing();
     const beforeNormals = now();
-    computeNormals(x, this.topology.triangles, this.buffers.normals);
+    this.computeNormals();
     const end = now();
     time.normals = end - beforeNormals;
     time.total = end - start;
@@ -311,6 +330,45 @@ export class SkinSolver {
     this.inputsChanged = false;
     if (!changed && this.lastMove <= p.sleepTolerance * this.topology.size) this.asleep = true;
     return true;
+  }
+
+  /**
+   * The active region's part of a frame before the damping: it grows where the motion spreads, and the skin just
+   * outside it goes back to rest (so that this does not count as a move).
+   */
+  private settleRegion(): void {
+    const b = this.buffers;
+    if (this.region.grow(b.positions, this.colliderVertices)) this.refreshLists();
+  }
+
+  /**
+   * At the frame's end, skin outside the region goes back exactly to rest (the last orientation passes may have nudged
+   * it), and skin back at rest leaves the region. Once no muscle holds the skin and the solver is about to sleep, the
+   * skin is back at rest within the sleep tolerance: the region empties, its vertices going exactly to rest.
+   */
+  private restRegionRing(): void {
+    const b = this.buffers;
+    const asleepNext = !this.inputsChanged && this.lastMove <= this.params.sleepTolerance * this.topology.size;
+    if (this.heldCount === 0 && asleepNext) this.region.clear(b.positions, b.normals);
+    else this.region.finish(b.positions, b.weights, b.normalWeights, b.normals, this.colliderVertices);
+    if (this.region.revision !== this.listedRevision) this.refreshLists();
+  }
+
+  /** Rebuilds the constraint lists for the current region and muscle weights. */
+  private refreshLists(): void {
+    const included = this.region.enabled ? this.region.inside : null;
+    fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
+    this.triangleCount = fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included);
+    this.listedRevision = this.region.revision;
+  }
+
+  /** Normals of the skin that may have moved: the region and its ring (all of it without the active region). */
+  private computeNormals(): void {
+    const x = this.buffers.positions;
+    const r = this.region;
+    if (!r.enabled) return computeNormals(x, this.topology.triangles, this.buffers.normals);
+    computeVertexNormals(x, this.topology, r.vertices, r.count, this.buffers.normals);
+    computeVertexNormals(x, this.topology, r.ring, r.ringCount, this.buffers.normals);
   }
 
   /**
@@ -372,7 +430,10 @@ export class SkinSolver {
     const N = this.topology.restNormals;
     const s = this.params.positionStiffness;
     const extra = s * (this.params.inwardResistance - 1);
-    for (let i = 0; i < x.length; i += 3) {
+    const V = this.region.vertices;
+    const count = this.region.count;
+    for (let j = 0; j < count; j++) {
+      const i = 3 * V[j];
       const ux = X[i] - x[i];
       const uy = X[i + 1] - x[i + 1];
       const uz = X[i + 2] - x[i + 2];
@@ -501,8 +562,10 @@ export class SkinSolver {
     const start = this.topology.neighbourStart;
     const nb = this.neighbourOffsets;
     const stiffness = this.bendStiffness;
-    const n = this.topology.vertexCount;
-    for (let v = 0; v < n; v++) {
+    const V = this.region.vertices;
+    const count = this.region.count;
+    for (let k = 0; k < count; k++) {
+      const v = V[k];
       const s = stiffness[v];
       const j0 = start[v];
       const j1 = start[v + 1];

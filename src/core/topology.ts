@@ -233,6 +233,48 @@ export function computeNormals(positions: Float32Array, triangles: Uint32Array, 
   }
 }
 
+/**
+ * Area-weighted normals, as computeNormals, of the `count` vertices `vertices[0..count]` only, each from its own
+ * triangles (`vertexTriangleStart`/`vertexTriangles`); other normals in `out` are left as they are. Allocates nothing.
+ */
+export function computeVertexNormals(positions: Float32Array, topology: SkinTopology, vertices: Uint32Array, count: number, out: Float32Array): void {
+  const T = topology.triangles;
+  const start = topology.vertexTriangleStart;
+  const list = topology.vertexTriangles;
+  for (let k = 0; k < count; k++) {
+    const v = vertices[k];
+    let sx = 0;
+    let sy = 0;
+    let sz = 0;
+    for (let j = start[v]; j < start[v + 1]; j++) {
+      const t = 3 * list[j];
+      const a = 3 * T[t];
+      const b = 3 * T[t + 1];
+      const c = 3 * T[t + 2];
+      const ux = positions[b] - positions[a];
+      const uy = positions[b + 1] - positions[a + 1];
+      const uz = positions[b + 2] - positions[a + 2];
+      const vx = positions[c] - positions[a];
+      const vy = positions[c + 1] - positions[a + 1];
+      const vz = positions[c + 2] - positions[a + 2];
+      sx += uy * vz - uz * vy;
+      sy += uz * vx - ux * vz;
+      sz += ux * vy - uy * vx;
+    }
+    const i = 3 * v;
+    const len = Math.sqrt(sx * sx + sy * sy + sz * sz);
+    if (len > 0) {
+      out[i] = sx / len;
+      out[i + 1] = sy / len;
+      out[i + 2] = sz / len;
+    } else {
+      out[i] = 0;
+      out[i + 1] = 0;
+      out[i + 2] = 1;
+    }
+  }
+}
+
 const pairKey = (a: number, b: number): number => (a < b ? a * 0x4000000 + b : b * 0x4000000 + a);
 
 function triangleArea2(P: number[], a: number, b: number, c: number): number {
