@@ -263,6 +263,11 @@ export class SkinSolver {
     return this.region.count;
   }
 
+  /** Edges a length pass projects: those touching the active region. */
+  get activeEdgeCount(): number {
+    return this.edgeLists.runs[this.edgeLists.runs.length - 1];
+  }
+
   /** True once the shape has converged for the current inputs; step() then does nothing until an input changes. */
   get sleeping(): boolean {
     return this.asleep;
