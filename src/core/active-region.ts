@@ -49,8 +49,15 @@ export class ActiveRegion {
   revision = 0;
   private readonly topology: SkinTopology;
   private readonly onRing: Uint8Array;
-  /** Per vertex: 1 if its normal was last computed (in or next to the region), so it must be reset when it leaves. */
-  private readonly shaded: Uint8Array;
+  /** 1 for each vertex whose normal the solver computes: those in the region and on its ring. */
+  readonly shaded: Uint8Array;
+  /** Those vertices, ascending: `shadedVertices[0..shadedCount]`. */
+  readonly shadedVertices: Uint32Array;
+  shadedCount = 0;
+  /** The other corners of their triangles (the ring's neighbours outside it): `outer[0..outerCount]`. */
+  readonly outer: Uint32Array;
+  outerCount = 0;
+  private readonly onOuter: Uint8Array;
   /** Scratch: a vertex list and flags for the growing and shrinking passes. */
   private readonly scratch: Uint32Array;
   private readonly quiet: Uint8Array;
@@ -66,6 +73,9 @@ export class ActiveRegion {
     this.border = new Uint32Array(n);
     this.onRing = new Uint8Array(n);
     this.shaded = new Uint8Array(n);
+    this.shadedVertices = new Uint32Array(n);
+    this.outer = new Uint32Array(n);
+    this.onOuter = new Uint8Array(n);
     this.scratch = new Uint32Array(n);
     this.quiet = new Uint8Array(n);
     if (!enabled) {
@@ -245,7 +255,7 @@ export class ActiveRegion {
     return leaves > 0;
   }
 
-  /** Rebuilds the vertex and ring lists from `inside`; normals of vertices no longer shaded go back to rest. */
+  /** Rebuilds the lists from `inside`. */
   private rebuild(normals: Float32Array | null): void {
     const t = this.topology;
     const n = t.vertexCount;
@@ -272,20 +282,33 @@ export class ActiveRegion {
     for (let v = 0; v < n; v++) if (onRing[v] === 1) this.ring[ringCount++] = v;
     this.count = count;
     this.ringCount = ringCount;
-    if (normals) {
-      const N = t.restNormals;
-      for (let v = 0; v < n; v++) {
-        const shaded = inside[v] === 1 || onRing[v] === 1;
-        if (this.shaded[v] === 1 && !shaded) {
-          normals[3 * v] = N[3 * v];
-          normals[3 * v + 1] = N[3 * v + 1];
-          normals[3 * v + 2] = N[3 * v + 2];
-        }
-        this.shaded[v] = shaded ? 1 : 0;
+    // Normals of vertices no longer shaded go back to rest (a vertex only joining needs none: `normals` null).
+    const N = t.restNormals;
+    let shadedCount = 0;
+    for (let v = 0; v < n; v++) {
+      const shaded = inside[v] === 1 || onRing[v] === 1;
+      if (normals && this.shaded[v] === 1 && !shaded) {
+        normals[3 * v] = N[3 * v];
+        normals[3 * v + 1] = N[3 * v + 1];
+        normals[3 * v + 2] = N[3 * v + 2];
       }
-    } else {
-      for (let v = 0; v < n; v++) this.shaded[v] = inside[v] === 1 || onRing[v] === 1 ? 1 : 0;
+      this.shaded[v] = shaded ? 1 : 0;
+      if (shaded) this.shadedVertices[shadedCount++] = v;
     }
+    this.shadedCount = shadedCount;
+    let outerCount = 0;
+    for (let k = 0; k < ringCount; k++) {
+      const v = this.ring[k];
+      for (let j = t.neighbourStart[v]; j < t.neighbourStart[v + 1]; j++) {
+        const u = t.neighbours[j];
+        if (this.shaded[u] === 0 && this.onOuter[u] === 0) {
+          this.onOuter[u] = 1;
+          this.outer[outerCount++] = u;
+        }
+      }
+    }
+    for (let k = 0; k < outerCount; k++) this.onOuter[this.outer[k]] = 0;
+    this.outerCount = outerCount;
     this.revision++;
   }
 }

@@ -6,7 +6,7 @@
 import { ActiveRegion } from './active-region';
 import { colliderDistance, type Collider } from './colliders';
 import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets, type EdgeLists, type TriangleLists } from './constraint-lists';
-import { computeNormals, computeVertexNormals, type SkinTopology } from './topology';
+import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
 export interface SkinParameters {
@@ -136,6 +136,9 @@ export class SkinSolver {
   private readonly edgeLists: EdgeLists;
   private readonly triangleLists: TriangleLists;
   private triangleCount = 0;
+  /** Triangles with a corner whose normal is computed (in or next to the active region). */
+  private readonly shadedTriangles: TriangleLists;
+  private shadedTriangleCount = 0;
   /** The topology's neighbours as xyz offsets (3 * vertex). */
   private readonly neighbourOffsets: Uint32Array;
   /** The skin a frame solves (see active-region.ts); the lists above hold its constraints as of `listedRevision`. */
@@ -184,6 +187,7 @@ export class SkinSolver {
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.edgeLists = createEdgeLists(topology);
     this.triangleLists = createTriangleLists(topology);
+    this.shadedTriangles = createTriangleLists(topology);
     this.neighbourOffsets = neighbourOffsets(topology);
     this.region = new ActiveRegion(topology, options.activeRegion ?? true);
     this.colliders = options.colliders ?? [];
@@ -364,6 +368,7 @@ export class SkinSolver {
     const included = this.region.enabled ? this.region.inside : null;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
     this.triangleCount = fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included);
+    if (this.region.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded);
     this.listedRevision = this.region.revision;
   }
 
@@ -372,8 +377,8 @@ export class SkinSolver {
     const x = this.buffers.positions;
     const r = this.region;
     if (!r.enabled) return computeNormals(x, this.topology.triangles, this.buffers.normals);
-    computeVertexNormals(x, this.topology, r.vertices, r.count, this.buffers.normals);
-    computeVertexNormals(x, this.topology, r.ring, r.ringCount, this.buffers.normals);
+    const T = this.shadedTriangles.corners;
+    computeSomeNormals(x, T, this.shadedTriangleCount, r.shadedVertices, r.shadedCount, r.outer, r.outerCount, this.topology.restNormals, this.buffers.normals);
   }
 
   /**
