@@ -83,8 +83,11 @@ export function createTriangleLists(topology: SkinTopology): TriangleLists {
   return { corners: new Uint32Array(3 * count), frames: new Float32Array(4 * count) };
 }
 
-/** Lists the triangles with at least one corner `included` (all when null), in mesh order; returns how many. */
-export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, frames: Float32Array, included: Uint8Array | null): number {
+/**
+ * Lists the triangles with at least one corner `included` (all when null), in mesh order; returns how many. With
+ * `places`, writes each triangle's place in the list there (-1 if not listed).
+ */
+export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, frames: Float32Array, included: Uint8Array | null, places?: Int32Array): number {
   const count = triangles.length / 3;
   const C = into.corners;
   const F = into.frames;
@@ -93,7 +96,11 @@ export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, f
     const a = triangles[3 * t];
     const b = triangles[3 * t + 1];
     const c = triangles[3 * t + 2];
-    if (included !== null && included[a] === 0 && included[b] === 0 && included[c] === 0) continue;
+    if (included !== null && included[a] === 0 && included[b] === 0 && included[c] === 0) {
+      if (places) places[t] = -1;
+      continue;
+    }
+    if (places) places[t] = o;
     C[3 * o] = 3 * a;
     C[3 * o + 1] = 3 * b;
     C[3 * o + 2] = 3 * c;

@@ -136,6 +136,12 @@ export class SkinSolver {
   private readonly edgeLists: EdgeLists;
   private readonly triangleLists: TriangleLists;
   private triangleCount = 0;
+  /**
+   * For orientation passes that follow one another (see projectOrientation): 1 for each listed triangle with a corner
+   * moved since it was last checked; and each triangle's place in the list (-1 if not listed).
+   */
+  private readonly unchecked: Uint8Array;
+  private readonly listedTriangle: Int32Array;
   /** Triangles with a corner whose normal is computed (in or next to the active region). */
   private readonly shadedTriangles: TriangleLists;
   private shadedTriangleCount = 0;
@@ -188,6 +194,8 @@ export class SkinSolver {
     this.edgeLists = createEdgeLists(topology);
     this.triangleLists = createTriangleLists(topology);
     this.shadedTriangles = createTriangleLists(topology);
+    this.unchecked = new Uint8Array(topology.triangles.length / 3);
+    this.listedTriangle = new Int32Array(topology.triangles.length / 3);
     this.neighbourOffsets = neighbourOffsets(topology);
     this.region = new ActiveRegion(topology, options.activeRegion ?? true);
     this.colliders = options.colliders ?? [];
@@ -321,12 +329,12 @@ export class SkinSolver {
     // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle; and
     // again after the damping, which blends two shapes and so could turn a sliver over.
     let untangle = now();
-    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
+    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0); k++);
     time.orientation += now() - untangle;
     this.settleRegion();
     this.lastMove = this.damp();
     untangle = now();
-    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
+    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0); k++);
     time.orientation += now() - untangle;
     this.frames++;
     this.restRegionRing();
@@ -367,7 +375,7 @@ export class SkinSolver {
   private refreshLists(): void {
     const included = this.region.enabled ? this.region.inside : null;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
-    this.triangleCount = fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included);
+    this.triangleCount = fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, this.listedTriangle);
     if (this.region.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded);
     this.listedRevision = this.region.revision;
   }
@@ -506,14 +514,20 @@ export class SkinSolver {
    * compressed skin folds (the triangle tilts) instead of crumpling flat (the triangle turns over within the
    * surface), which no length constraint can tell from the right shape. The projected area is linear in each corner,
    * so one projection restores the bound exactly; the corrections lie in the rest tangent plane.
+   *
+   * `again` says that nothing but the previous orientation pass moved the skin since: a triangle found within its
+   * bound then, none of whose corners moved since, still is and is skipped, with the same result as checking it.
    */
-  private projectOrientation(): boolean {
+  private projectOrientation(again = false): boolean {
     const x = this.buffers.positions;
     const T = this.triangleLists.corners;
     const F = this.triangleLists.frames;
     const count = this.triangleCount;
+    const unchecked = this.unchecked;
     let corrected = false;
     for (let t = 0; t < count; t++) {
+      if (again && unchecked[t] === 0) continue;
+      unchecked[t] = 0;
       const ia = T[3 * t];
       const ib = T[3 * t + 1];
       const ic = T[3 * t + 2];
@@ -544,7 +558,13 @@ export class SkinSolver {
       const gay = -gby - gcy;
       const gaz = -gbz - gcz;
       const norm = gax * gax + gay * gay + gaz * gaz + gbx * gbx + gby * gby + gbz * gbz + gcx * gcx + gcy * gcy + gcz * gcz;
-      if (norm === 0) continue;
+      if (norm === 0) {
+        unchecked[t] = 1; // not within its bound: check it again next time
+        continue;
+      }
+      this.moved(ia);
+      this.moved(ib);
+      this.moved(ic);
       const lambda = -C / norm;
       x[ia] += lambda * gax;
       x[ia + 1] += lambda * gay;
@@ -557,6 +577,16 @@ export class SkinSolver {
       x[ic + 2] += lambda * gcz;
     }
     return corrected;
+  }
+
+  /** Marks the listed triangles of the vertex at xyz offset `i` for the next orientation check (see above). */
+  private moved(i: number): void {
+    const v = i / 3;
+    const { vertexTriangleStart: start, vertexTriangles } = this.topology;
+    for (let j = start[v]; j < start[v + 1]; j++) {
+      const t = this.listedTriangle[vertexTriangles[j]];
+      if (t >= 0) this.unchecked[t] = 1;
+    }
   }
 
   /**
