@@ -1,13 +1,20 @@
 /**
- * Solver benchmark: `npm run bench`. For each head resolution and two length-iteration counts, solves frames of a
- * held expression (brows raised, one mouth corner pulled) and reports the median and 90th-percentile frame time, the
- * nanoseconds per edge projection and the milliseconds for normals, bending and orientation. Prints a table and writes bench-results/solver.json.
+ * Solver benchmark: `npm run bench`. Prints two tables and writes bench-results/solver.json.
+ *
+ * 1. The loops: for each head resolution and two length-iteration counts, solves frames of a held expression (brows
+ *    raised, one mouth corner pulled) over the whole mesh and reports the median and 90th-percentile frame time, the
+ *    nanoseconds per edge projection and the milliseconds for normals, bending and orientation.
+ * 2. The rig: the head as the page simulates it (solver host, colliders, default rig; see
+ *    tests/fixtures/head-simulation.ts) from rest to a held expression, with the active region: its size, the median
+ *    frame time and nanoseconds per edge projection, and the frames and milliseconds until the shape is within 2 % of
+ *    its final shape and until the solver sleeps.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, platform } from 'node:os';
 import { NodeIO } from '@gltf-transform/core';
 import { SkinSolver } from '../src/core/solver';
 import { buildTopology, type SkinTopology } from '../src/core/topology';
+import { loadHeadSimulation, type Resolution } from '../tests/fixtures/head-simulation';
 
 const RESOLUTIONS = [
   { name: 'low', frames: 120 },
@@ -63,7 +70,8 @@ for (const { name, frames } of RESOLUTIONS) {
   const topology = await loadSkin(name);
   const { vertices, targets } = expression(topology);
   for (const lengthIterations of LENGTH_ITERATIONS) {
-    const solver = new SkinSolver(topology, { parameters: { lengthIterations } });
+    // The whole mesh, as before the active region: these rows measure the loops.
+    const solver = new SkinSolver(topology, { parameters: { lengthIterations }, activeRegion: false });
     solver.setMuscleTargets(vertices, targets, 1, 0);
     const total: number[] = [];
     const lengths: number[] = [];
@@ -100,6 +108,100 @@ for (const { name, frames } of RESOLUTIONS) {
   }
 }
 
+/** The rig rows: an Action Unit or a preset at full intensity, from rest, on a head resolution. */
+const RIG_CASES: { resolution: Resolution; expression: string; maxFrames: number }[] = [
+  { resolution: 'medium', expression: 'AU12', maxFrames: 1500 },
+  { resolution: 'medium', expression: 'happiness', maxFrames: 1500 },
+  { resolution: 'high', expression: 'happiness', maxFrames: 1000 },
+];
+/** "Within 2 % of the final shape": every vertex nearer its final place than this share of the largest final move. */
+const NEAR_FINAL = 0.02;
+
+interface RigRow {
+  resolution: string;
+  expression: string;
+  workers: number;
+  vertices: number;
+  /** Vertices in the active region at the end, and at most during the run. */
+  activeVertices: number;
+  peakActiveVertices: number;
+  framesSolved: number;
+  medianFrameMs: number;
+  p90FrameMs: number;
+  nsPerEdgeProjection: number;
+  framesToNearFinal: number;
+  msToNearFinal: number;
+  /** Frames and milliseconds until the solver slept; null if it still solved after `maxFrames`. */
+  framesToSleep: number | null;
+  msToSleep: number | null;
+  maxFrames: number;
+}
+
+/** Starts `expression` at full intensity from rest on a fresh head simulation. */
+async function startExpression(resolution: Resolution, expression: string) {
+  const sim = await loadHeadSimulation(resolution);
+  if (/^AU\d/.test(expression)) sim.expression.setActionUnit(expression, 1);
+  else sim.expression.applyPreset(expression, 1);
+  sim.apply();
+  return sim;
+}
+
+function largestDistance(a: Float32Array, b: Float32Array): number {
+  let worst = 0;
+  for (let i = 0; i < a.length; i += 3) {
+    const d = (a[i] - b[i]) ** 2 + (a[i + 1] - b[i + 1]) ** 2 + (a[i + 2] - b[i + 2]) ** 2;
+    if (d > worst) worst = d;
+  }
+  return Math.sqrt(worst);
+}
+
+const rigRows: RigRow[] = [];
+for (const { resolution, expression: name, maxFrames } of RIG_CASES) {
+  // First run: until the solver sleeps (or maxFrames), timing every frame.
+  let sim = await startExpression(resolution, name);
+  const solver = sim.host.solver;
+  const start = Float32Array.from(solver.buffers.positions);
+  const p = solver.parameters();
+  const total: number[] = [];
+  const nsPerEdge: number[] = [];
+  let peak = 0;
+  while (total.length < maxFrames && sim.host.step()) {
+    total.push(solver.timings.total);
+    nsPerEdge.push((solver.timings.lengths * 1e6) / (solver.activeEdgeCount * p.lengthIterations * p.positionIterations));
+    peak = Math.max(peak, solver.activeVertexCount);
+  }
+  const slept = solver.sleeping;
+  const final = Float32Array.from(solver.buffers.positions);
+  const activeVertices = solver.activeVertexCount;
+  // Second run (the solver is deterministic): the first frame within NEAR_FINAL of the final shape.
+  const tolerance = NEAR_FINAL * largestDistance(start, final);
+  sim = await startExpression(resolution, name);
+  let near = 0;
+  while (near < total.length && largestDistance(sim.host.solver.buffers.positions, final) > tolerance) {
+    sim.host.step();
+    near++;
+  }
+  const sum = (xs: number[], count: number): number => xs.slice(0, count).reduce((a, b) => a + b, 0);
+  const sorted = [...total].sort((a, b) => a - b);
+  rigRows.push({
+    resolution,
+    expression: name,
+    workers: 1,
+    vertices: sim.host.topology.vertexCount,
+    activeVertices,
+    peakActiveVertices: peak,
+    framesSolved: total.length,
+    medianFrameMs: quantile(sorted, 0.5),
+    p90FrameMs: quantile(sorted, 0.9),
+    nsPerEdgeProjection: median(nsPerEdge),
+    framesToNearFinal: near,
+    msToNearFinal: sum(total, near),
+    framesToSleep: slept ? total.length : null,
+    msToSleep: slept ? sum(total, total.length) : null,
+    maxFrames,
+  });
+}
+
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, platform: platform(), node: process.version };
 const header = '| head | vertices | edges | length iterations | median ms/frame | p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
 const lines = rows.map(
@@ -107,7 +209,17 @@ const lines = rows.map(
     `| ${r.resolution} | ${r.vertices.toLocaleString('en-US')} | ${r.edges.toLocaleString('en-US')} | ${r.lengthIterations} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.medianNormalsMs.toFixed(2)} | ${r.medianBendingMs.toFixed(2)} | ${r.medianOrientationMs.toFixed(2)} |`,
 );
 console.log(`Solver benchmark on ${machine.cpu}, ${machine.cores} cores, Node ${machine.node} (one thread; ${rows[0].positionIterations} position iterations)\n`);
+console.log('Loops (whole mesh, a held expression):\n');
 console.log([header, header.replace(/[^|]+/g, ' --- '), ...lines].join('\n'));
+const rigHeader =
+  '| head | expression | workers | active vertices | median ms/frame | p90 ms/frame | ns/edge projection | frames to 2 % | ms to 2 % | frames to sleep | ms to sleep |';
+const count = (n: number): string => n.toLocaleString('en-US');
+const rigLines = rigRows.map(
+  (r) =>
+    `| ${r.resolution} | ${r.expression} | ${r.workers} | ${count(r.activeVertices)} of ${count(r.vertices)} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.framesToNearFinal} | ${count(Math.round(r.msToNearFinal))} | ${r.framesToSleep ?? `> ${r.maxFrames}`} | ${r.msToSleep === null ? '-' : count(Math.round(r.msToSleep))} |`,
+);
+console.log('\nThe rig (solver host, colliders, default rig, active region), from rest to an expression at full intensity:\n');
+console.log([rigHeader, rigHeader.replace(/[^|]+/g, ' --- '), ...rigLines].join('\n'));
 mkdirSync('bench-results', { recursive: true });
-writeFileSync('bench-results/solver.json', JSON.stringify({ machine, date: new Date().toISOString(), rows }, null, 2) + '\n');
+writeFileSync('bench-results/solver.json', JSON.stringify({ machine, date: new Date().toISOString(), rows, rigRows }, null, 2) + '\n');
 console.log('\nwrote bench-results/solver.json');

@@ -3,8 +3,10 @@
  * that order, a number of times, over flat Float32Arrays. Added to the thesis: a bending constraint that sets the
  * wrinkle spacing in millimetres, and collisions with rigid shapes (eyes, teeth).
  */
+import { ActiveRegion } from './active-region';
 import { colliderDistance, slabSide, type Collider } from './colliders';
-import { computeNormals, type SkinTopology } from './topology';
+import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets, type EdgeLists, type TriangleLists } from './constraint-lists';
+import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
 export interface SkinParameters {
@@ -129,6 +131,24 @@ export class SkinSolver {
   private readonly bendStiffness: Float32Array;
   /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
   private readonly triangleFrames: Float32Array;
+  /** The lists the per-frame loops walk (see constraint-lists.ts). */
+  private readonly edgeLists: EdgeLists;
+  private readonly triangleLists: TriangleLists;
+  private triangleCount = 0;
+  /**
+   * For orientation passes that follow one another (see projectOrientation): 1 for each listed triangle with a corner
+   * moved since it was last checked; and each triangle's place in the list (-1 if not listed).
+   */
+  private readonly unchecked: Uint8Array;
+  private readonly listedTriangle: Int32Array;
+  /** Triangles with a corner whose normal is computed (in or next to the active region). */
+  private readonly shadedTriangles: TriangleLists;
+  private shadedTriangleCount = 0;
+  /** The topology's neighbours as xyz offsets (3 * vertex). */
+  private readonly neighbourOffsets: Uint32Array;
+  /** The skin a frame solves (see active-region.ts); the lists above hold its constraints as of `listedRevision`. */
+  private readonly region: ActiveRegion;
+  private listedRevision = -1;
   private readonly seed: Float32Array;
   private readonly colliders: Collider[];
   private readonly colliderStart: Uint32Array;
@@ -146,7 +166,14 @@ export class SkinSolver {
   /** Where the last frame's time went (reused, never reallocated). */
   readonly timings: FrameTimings = { positions: 0, muscles: 0, lengths: 0, bending: 0, collisions: 0, orientation: 0, normals: 0, total: 0 };
 
-  constructor(topology: SkinTopology, options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[] } = {}) {
+  /**
+   * `activeRegion` (default true) solves only the skin that moves (see active-region.ts); false solves the whole mesh
+   * every frame.
+   */
+  constructor(
+    topology: SkinTopology,
+    options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[]; activeRegion?: boolean } = {},
+  ) {
     this.topology = topology;
     const n = topology.vertexCount;
     this.buffers = options.buffers ?? createSolverBuffers(topology);
@@ -161,6 +188,13 @@ export class SkinSolver {
     this.seed = new Float32Array(n);
     for (let v = 0; v < n; v++) this.seed[v] = hash01(v) - 0.25;
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
+    this.edgeLists = createEdgeLists(topology);
+    this.triangleLists = createTriangleLists(topology);
+    this.shadedTriangles = createTriangleLists(topology);
+    this.unchecked = new Uint8Array(topology.triangles.length / 3);
+    this.listedTriangle = new Int32Array(topology.triangles.length / 3);
+    this.neighbourOffsets = neighbourOffsets(topology);
+    this.region = new ActiveRegion(topology, options.activeRegion ?? true);
     this.colliders = options.colliders ?? [];
     const c = this.collisionCandidates(this.colliders);
     this.colliderStart = c.start;
@@ -225,6 +259,8 @@ export class SkinSolver {
     let count = 0;
     for (let v = 0; v < W.length; v++) if (W[v] > 0 || WN[v] > 0) this.held[count++] = v;
     this.heldCount = count;
+    this.region.seed(this.held, count);
+    this.refreshLists();
     this.inputsChanged = true;
     this.restartMotion();
   }
@@ -240,6 +276,16 @@ export class SkinSolver {
   /** Wakes the solver so the next step() solves a frame. */
   wake(): void {
     this.asleep = false;
+  }
+
+  /** Vertices in the active region: those the solver solves (all of them without the active region). */
+  get activeVertexCount(): number {
+    return this.region.count;
+  }
+
+  /** Edges a length pass projects: those touching the active region. */
+  get activeEdgeCount(): number {
+    return this.edgeLists.runs[this.edgeLists.runs.length - 1];
   }
 
   /** True once the shape has converged for the current inputs; step() then does nothing until an input changes. */
@@ -291,17 +337,19 @@ export class SkinSolver {
     // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle; and
     // again after the relaxation, which blends two shapes and so could turn a sliver over.
     let untangle = now();
-    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
+    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0); k++);
     time.orientation += now() - untangle;
+    this.settleRegion();
     this.relax();
     untangle = now();
-    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(); k++);
+    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0); k++);
     time.orientation += now() - untangle;
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.recordSteps();
     this.frames++;
+    this.restRegionRing();
     const beforeNormals = now();
-    computeNormals(x, this.topology.triangles, this.buffers.normals);
+    this.computeNormals();
     const end = now();
     time.normals = end - beforeNormals;
     time.total = end - start;
@@ -309,6 +357,51 @@ export class SkinSolver {
     this.inputsChanged = false;
     if (!changed && this.lastMove <= p.sleepTolerance * this.topology.size) this.asleep = true;
     return true;
+  }
+
+  /**
+   * The active region's part of a frame before the relaxation: it grows where the motion spreads, and the skin just
+   * outside it goes back to rest (so that this does not count as a move).
+   */
+  private settleRegion(): void {
+    const b = this.buffers;
+    if (this.region.grow(b.positions, this.colliderVertices)) this.refreshLists();
+  }
+
+  /**
+   * At the frame's end, skin outside the region goes back exactly to rest (the last orientation passes may have nudged
+   * it), and skin back at rest leaves the region. Once no muscle holds the skin and the solver is about to sleep, the
+   * skin is back at rest within the sleep tolerance: the region empties, its vertices going exactly to rest.
+   */
+  private restRegionRing(): void {
+    const b = this.buffers;
+    const asleepNext = !this.inputsChanged && this.lastMove <= this.params.sleepTolerance * this.topology.size;
+    if (this.heldCount === 0 && asleepNext) this.region.clear(b.positions, b.normals);
+    else this.region.finish(b.positions, b.weights, b.normalWeights, b.normals, this.colliderVertices);
+    if (this.region.revision !== this.listedRevision) this.refreshLists();
+  }
+
+  /** Rebuilds the constraint lists for the current region and muscle weights. */
+  private refreshLists(): void {
+    const included = this.region.enabled ? this.region.inside : null;
+    fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
+    this.triangleCount = fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, this.listedTriangle);
+    if (this.region.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded);
+    this.listedRevision = this.region.revision;
+    if (this.region.enabled) {
+      const inside = this.region.inside;
+      const last = this.lastStep;
+      for (let v = 0; v < inside.length; v++) if (!inside[v]) last[3 * v] = last[3 * v + 1] = last[3 * v + 2] = 0;
+    }
+  }
+
+  /** Normals of the skin that may have moved: the region and its ring (all of it without the active region). */
+  private computeNormals(): void {
+    const x = this.buffers.positions;
+    const r = this.region;
+    if (!r.enabled) return computeNormals(x, this.topology.triangles, this.buffers.normals);
+    const T = this.shadedTriangles.corners;
+    computeSomeNormals(x, T, this.shadedTriangleCount, r.shadedVertices, r.shadedCount, r.outer, r.outerCount, this.topology.restNormals, this.buffers.normals);
   }
 
   /**
@@ -329,7 +422,11 @@ export class SkinSolver {
     const share = this.relaxation;
     const late = this.motionFrames++ - LATE_MOTION;
     const cap = late > 0 ? LATE_SLOWING ** late : 1;
-    for (let v = 0, i = 0; v < share.length; v++, i += 3) {
+    const r = this.region;
+    const count = r.enabled ? r.count : share.length;
+    for (let k = 0; k < count; k++) {
+      const v = r.enabled ? r.vertices[k] : k;
+      const i = 3 * v;
       const dx = x[i] - prev[i];
       const dy = x[i + 1] - prev[i + 1];
       const dz = x[i + 2] - prev[i + 2];
@@ -353,10 +450,16 @@ export class SkinSolver {
     const x = this.buffers.positions;
     const prev = this.previous;
     const last = this.lastStep;
+    const r = this.region;
+    const count = r.enabled ? r.count : x.length / 3;
     let largest2 = 0;
-    for (let i = 0; i < x.length; i++) last[i] = x[i] - prev[i];
-    for (let i = 0; i < x.length; i += 3) {
-      const d2 = last[i] * last[i] + last[i + 1] * last[i + 1] + last[i + 2] * last[i + 2];
+    // Skin outside the region does not move; its steps are zeroed when it leaves (see refreshLists).
+    for (let k = 0; k < count; k++) {
+      const i = 3 * (r.enabled ? r.vertices[k] : k);
+      const dx = (last[i] = x[i] - prev[i]);
+      const dy = (last[i + 1] = x[i + 1] - prev[i + 1]);
+      const dz = (last[i + 2] = x[i + 2] - prev[i + 2]);
+      const d2 = dx * dx + dy * dy + dz * dz;
       if (d2 > largest2) largest2 = d2;
     }
     return Math.sqrt(largest2);
@@ -373,7 +476,10 @@ export class SkinSolver {
     const N = this.topology.restNormals;
     const s = this.params.positionStiffness;
     const extra = s * (this.params.inwardResistance - 1);
-    for (let i = 0; i < x.length; i += 3) {
+    const V = this.region.vertices;
+    const count = this.region.count;
+    for (let j = 0; j < count; j++) {
+      const i = 3 * V[j];
       const ux = X[i] - x[i];
       const uy = X[i + 1] - x[i + 1];
       const uz = X[i + 2] - x[i + 2];
@@ -416,49 +522,18 @@ export class SkinSolver {
   /**
    * Length constraints (thesis 4.3.3): restore each edge to its rest length, half the correction to each end. (As
    * printed, the correction's sign moves the ends the wrong way.) Edges go colour by colour, so within a colour no
-   * two projections touch the same vertex. A compressed edge also nudges its ends out along their rest normals.
+   * two projections touch the same vertex and their order does not matter: the free edges go first, then those under
+   * a muscle, where a compressed edge also nudges its ends out along their rest normals.
    */
   private projectLengths(): void {
     const x = this.buffers.positions;
-    const E = this.topology.edges;
-    const L = this.topology.restLength;
+    const lists = this.edgeLists;
+    const runs = lists.runs;
+    const { lengthStiffness, bulge } = this.params;
     const N = this.topology.restNormals;
-    const seed = this.seed;
-    const s = 0.5 * this.params.lengthStiffness;
-    const bulge = this.params.bulge;
-    const W = this.buffers.weights;
-    const count = L.length;
-    for (let e = 0; e < count; e++) {
-      const a = E[2 * e];
-      const b = E[2 * e + 1];
-      const ia = 3 * a;
-      const ib = 3 * b;
-      const dx = x[ib] - x[ia];
-      const dy = x[ib + 1] - x[ia + 1];
-      const dz = x[ib + 2] - x[ia + 2];
-      const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      if (len === 0) continue;
-      const error = len - L[e];
-      if (error === 0) continue;
-      const k = (s * error) / len;
-      x[ia] += k * dx;
-      x[ia + 1] += k * dy;
-      x[ia + 2] += k * dz;
-      x[ib] -= k * dx;
-      x[ib + 1] -= k * dy;
-      x[ib + 2] -= k * dz;
-      const held = W[a] > W[b] ? W[a] : W[b];
-      if (error < 0 && held > 0) {
-        const push = -bulge * held * error;
-        const pa = push * seed[a];
-        const pb = push * seed[b];
-        x[ia] += pa * N[ia];
-        x[ia + 1] += pa * N[ia + 1];
-        x[ia + 2] += pa * N[ia + 2];
-        x[ib] += pb * N[ib];
-        x[ib + 1] += pb * N[ib + 1];
-        x[ib + 2] += pb * N[ib + 2];
-      }
+    for (let c = 0; 2 * c + 2 < runs.length; c++) {
+      projectFreeEdges(x, lists.ends, lists.rest, lengthStiffness, runs[2 * c], runs[2 * c + 1]);
+      projectHeldEdges(x, lists, N, lengthStiffness, bulge, runs[2 * c + 1], runs[2 * c + 2]);
     }
   }
 
@@ -467,31 +542,39 @@ export class SkinSolver {
    * compressed skin folds (the triangle tilts) instead of crumpling flat (the triangle turns over within the
    * surface), which no length constraint can tell from the right shape. The projected area is linear in each corner,
    * so one projection restores the bound exactly; the corrections lie in the rest tangent plane.
+   *
+   * `again` says that nothing but the previous orientation pass moved the skin since: a triangle found within its
+   * bound then, none of whose corners moved since, still is and is skipped, with the same result as checking it.
    */
-  private projectOrientation(): boolean {
+  private projectOrientation(again = false): boolean {
     const x = this.buffers.positions;
-    const T = this.topology.triangles;
-    const F = this.triangleFrames;
-    const count = T.length / 3;
+    const T = this.triangleLists.corners;
+    const F = this.triangleLists.frames;
+    const count = this.triangleCount;
+    const unchecked = this.unchecked;
     let corrected = false;
     for (let t = 0; t < count; t++) {
-      const ia = 3 * T[3 * t];
-      const ib = 3 * T[3 * t + 1];
-      const ic = 3 * T[3 * t + 2];
+      if (again && unchecked[t] === 0) continue;
+      unchecked[t] = 0;
+      const ia = T[3 * t];
+      const ib = T[3 * t + 1];
+      const ic = T[3 * t + 2];
+      const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+      const ux = x[ib] - ax;
+      const uy = x[ib + 1] - ay;
+      const uz = x[ib + 2] - az;
+      const vx = x[ic] - ax;
+      const vy = x[ic + 1] - ay;
+      const vz = x[ic + 2] - az;
       const nx = F[4 * t];
       const ny = F[4 * t + 1];
       const nz = F[4 * t + 2];
-      const ux = x[ib] - x[ia];
-      const uy = x[ib + 1] - x[ia + 1];
-      const uz = x[ib + 2] - x[ia + 2];
-      const vx = x[ic] - x[ia];
-      const vy = x[ic + 1] - x[ia + 1];
-      const vz = x[ic + 2] - x[ia + 2];
+      const least = F[4 * t + 3];
       // Twice the area along n: n . (u x v).
-      const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - F[4 * t + 3];
+      const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - least;
       if (C >= 0) continue;
       // A triangle a hair under its bound (the relaxation's blend) is corrected but does not ask for another pass.
-      if (C < -0.01 * F[4 * t + 3]) corrected = true;
+      if (C < -0.01 * least) corrected = true;
       // Gradients: b gets v x n, c gets n x u, a gets minus their sum, (u - v) x n.
       const gbx = vy * nz - vz * ny;
       const gby = vz * nx - vx * nz;
@@ -503,7 +586,13 @@ export class SkinSolver {
       const gay = -gby - gcy;
       const gaz = -gbz - gcz;
       const norm = gax * gax + gay * gay + gaz * gaz + gbx * gbx + gby * gby + gbz * gbz + gcx * gcx + gcy * gcy + gcz * gcz;
-      if (norm === 0) continue;
+      if (norm === 0) {
+        unchecked[t] = 1; // not within its bound: check it again next time
+        continue;
+      }
+      this.moved(ia);
+      this.moved(ib);
+      this.moved(ic);
       const lambda = -C / norm;
       x[ia] += lambda * gax;
       x[ia + 1] += lambda * gay;
@@ -518,6 +607,16 @@ export class SkinSolver {
     return corrected;
   }
 
+  /** Marks the listed triangles of the vertex at xyz offset `i` for the next orientation check (see above). */
+  private moved(i: number): void {
+    const v = i / 3;
+    const { vertexTriangleStart: start, vertexTriangles } = this.topology;
+    for (let j = start[v]; j < start[v + 1]; j++) {
+      const t = this.listedTriangle[vertexTriangles[j]];
+      if (t >= 0) this.unchecked[t] = 1;
+    }
+  }
+
   /**
    * Bending: keeps the Laplacian of the normal displacement near zero (the rest curvature), scaled per vertex by the
    * local edge spacing so that its balance against the position constraints gives folds of `wrinkleSpacing` at
@@ -529,10 +628,12 @@ export class SkinSolver {
     const X = this.topology.rest;
     const N = this.topology.restNormals;
     const start = this.topology.neighbourStart;
-    const nb = this.topology.neighbours;
+    const nb = this.neighbourOffsets;
     const stiffness = this.bendStiffness;
-    const n = this.topology.vertexCount;
-    for (let v = 0; v < n; v++) {
+    const V = this.region.vertices;
+    const count = this.region.count;
+    for (let k = 0; k < count; k++) {
+      const v = V[k];
       const s = stiffness[v];
       const j0 = start[v];
       const j1 = start[v + 1];
@@ -545,7 +646,7 @@ export class SkinSolver {
       // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal.
       let mean = 0;
       for (let j = j0; j < j1; j++) {
-        const k = 3 * nb[j];
+        const k = nb[j];
         mean += (x[k] - X[k]) * nx + (x[k + 1] - X[k + 1]) * ny + (x[k + 2] - X[k + 2]) * nz;
       }
       mean /= degree;
@@ -558,7 +659,7 @@ export class SkinSolver {
       x[i + 2] += lambda * nz;
       const q = lambda / degree;
       for (let j = j0; j < j1; j++) {
-        const k = 3 * nb[j];
+        const k = nb[j];
         x[k] -= q * nx;
         x[k + 1] -= q * ny;
         x[k + 2] -= q * nz;
@@ -620,6 +721,70 @@ export class SkinSolver {
       start[ci + 1] = vertices.length;
     }
     return { start, vertices: Uint32Array.from(vertices), clearance: Float32Array.from(clearance), side: Int8Array.from(side) };
+  }
+}
+
+/**
+ * Length projections of the edges `e0..e1` of an edge list (see SkinSolver.projectLengths and EdgeLists) that no
+ * muscle holds: each end moves half the length error times `stiffness` along the edge.
+ */
+function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
+  const s = 0.5 * stiffness;
+  for (let j = 3 * e0; j < 3 * e1; j += 3) {
+    const ia = ends[j];
+    const ib = ends[j + 1];
+    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    const k = len > 0 ? (s * (len - rest[j + 2])) / len : 0;
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+  }
+}
+
+/**
+ * Length projections of held edges `e0..e1`: as projectFreeEdges, and a compressed edge nudges its ends out along
+ * their rest normals `N` by `bulge` times its muscle weight, times each end's seed.
+ */
+function projectHeldEdges(x: Float32Array, lists: EdgeLists, N: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
+  const { ends, rest, held } = lists;
+  const s = 0.5 * stiffness;
+  for (let e = e0; e < e1; e++) {
+    const ia = ends[3 * e];
+    const ib = ends[3 * e + 1];
+    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    if (len === 0) continue;
+    const error = len - rest[3 * e + 2];
+    const k = (s * error) / len;
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+    if (error < 0) {
+      const push = -bulge * held[3 * e] * error;
+      const pa = push * held[3 * e + 1];
+      const pb = push * held[3 * e + 2];
+      x[ia] += pa * N[ia];
+      x[ia + 1] += pa * N[ia + 1];
+      x[ia + 2] += pa * N[ia + 2];
+      x[ib] += pb * N[ib];
+      x[ib + 1] += pb * N[ib + 1];
+      x[ib + 2] += pb * N[ib + 2];
+    }
   }
 }
 

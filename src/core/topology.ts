@@ -221,15 +221,80 @@ export function computeNormals(positions: Float32Array, triangles: Uint32Array, 
     out[c + 1] += ny;
     out[c + 2] += nz;
   }
-  for (let i = 0; i < out.length; i += 3) {
-    const len = Math.sqrt(out[i] * out[i] + out[i + 1] * out[i + 1] + out[i + 2] * out[i + 2]);
-    if (len > 0) {
-      out[i] /= len;
-      out[i + 1] /= len;
-      out[i + 2] /= len;
-    } else {
-      out[i + 2] = 1; // an isolated vertex: any unit vector keeps the shading finite
-    }
+  // An isolated vertex gets +z: any unit vector keeps the shading finite.
+  for (let i = 0; i < out.length; i += 3) normalize(out, i);
+}
+
+/**
+ * Area-weighted normals, as computeNormals (the same sums in the same order, so the same result), of some vertices
+ * only: `vertices[0..vertexCount]`, from the `count` triangles listed in `corners` (each corner as 3 * its vertex),
+ * which must include every triangle of those vertices. The triangles' other corners, `others[0..otherCount]`, get
+ * `restNormals`; the rest of `out` is left as it is. Allocates nothing.
+ */
+export function computeSomeNormals(
+  positions: Float32Array,
+  corners: Uint32Array,
+  count: number,
+  vertices: Uint32Array,
+  vertexCount: number,
+  others: Uint32Array,
+  otherCount: number,
+  restNormals: Float32Array,
+  out: Float32Array,
+): void {
+  for (let k = 0; k < vertexCount; k++) {
+    const i = 3 * vertices[k];
+    out[i] = 0;
+    out[i + 1] = 0;
+    out[i + 2] = 0;
+  }
+  for (let k = 0; k < otherCount; k++) {
+    const i = 3 * others[k];
+    out[i] = 0;
+    out[i + 1] = 0;
+    out[i + 2] = 0;
+  }
+  for (let t = 0; t < 3 * count; t += 3) {
+    const a = corners[t];
+    const b = corners[t + 1];
+    const c = corners[t + 2];
+    const ux = positions[b] - positions[a];
+    const uy = positions[b + 1] - positions[a + 1];
+    const uz = positions[b + 2] - positions[a + 2];
+    const vx = positions[c] - positions[a];
+    const vy = positions[c + 1] - positions[a + 1];
+    const vz = positions[c + 2] - positions[a + 2];
+    const nx = uy * vz - uz * vy;
+    const ny = uz * vx - ux * vz;
+    const nz = ux * vy - uy * vx;
+    out[a] += nx;
+    out[a + 1] += ny;
+    out[a + 2] += nz;
+    out[b] += nx;
+    out[b + 1] += ny;
+    out[b + 2] += nz;
+    out[c] += nx;
+    out[c + 1] += ny;
+    out[c + 2] += nz;
+  }
+  for (let k = 0; k < vertexCount; k++) normalize(out, 3 * vertices[k]);
+  for (let k = 0; k < otherCount; k++) {
+    const i = 3 * others[k];
+    out[i] = restNormals[i];
+    out[i + 1] = restNormals[i + 1];
+    out[i + 2] = restNormals[i + 2];
+  }
+}
+
+/** Scales xyz at `i` to unit length, as computeNormals does (an isolated vertex's zero normal becomes +z). */
+function normalize(out: Float32Array, i: number): void {
+  const len = Math.sqrt(out[i] * out[i] + out[i + 1] * out[i + 1] + out[i + 2] * out[i + 2]);
+  if (len > 0) {
+    out[i] /= len;
+    out[i + 1] /= len;
+    out[i + 2] /= len;
+  } else {
+    out[i + 2] = 1;
   }
 }
 

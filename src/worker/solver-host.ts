@@ -14,6 +14,8 @@ export interface SolverHostInput {
   parameters: SkinParameters;
   /** The rig's muscles (may be empty); contractions arrive in this order. */
   muscles: Muscle[];
+  /** Solve only the skin that moves (the default; see SkinSolver). */
+  activeRegion?: boolean;
 }
 
 /** The muscle inputs of a batch: targets (xyz per vertex) and the two weights per vertex. */
@@ -45,7 +47,7 @@ export class SolverHost {
   constructor(input: SolverHostInput) {
     this.topology = buildTopology(input.renderPositions, input.indices);
     console.info(describeTopology(this.topology));
-    this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders });
+    this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders, activeRegion: input.activeRegion });
     this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
     this.jaw = JawFollower.create(input.muscles, input.colliders);
     // Start from the skin's own equilibrium (the float32 rest lengths move it by a hair), so that every mode starts

@@ -1,0 +1,79 @@
+import { describe, expect, it } from 'vitest';
+import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets } from '../src/core/constraint-lists';
+import { buildTopology } from '../src/core/topology';
+import { triangleGrid } from './fixtures/grids';
+
+describe('constraint lists', () => {
+  const g = triangleGrid(0.02, 0.01, 0.001);
+  const t = buildTopology(g.positions, g.indices);
+  const n = t.vertexCount;
+  const weights = new Float32Array(n);
+  for (let v = 0; v < n; v++) if (t.rest[3 * v] > 0.004) weights[v] = 0.25 + 0.5 * (v % 3 === 0 ? 1 : 0);
+  const seed = Float32Array.from({ length: n }, (_, v) => (v % 7) / 7);
+  const colours = t.colourStart.length - 1;
+
+  /** The topology's edge index of each listed edge, in list order. */
+  function listedEdges(included: Uint8Array | null) {
+    const lists = createEdgeLists(t);
+    const count = fillEdgeLists(lists, t, weights, seed, included);
+    const byEnds = new Map<string, number>();
+    for (let e = 0; e < t.restLength.length; e++) byEnds.set(`${t.edges[2 * e]},${t.edges[2 * e + 1]}`, e);
+    const order: number[] = [];
+    for (let e = 0; e < count; e++) order.push(byEnds.get(`${lists.ends[3 * e] / 3},${lists.ends[3 * e + 1] / 3}`)!);
+    return { lists, count, order };
+  }
+  const colourOf = (e: number) => {
+    let c = 0;
+    while (t.colourStart[c + 1] <= e) c++;
+    return c;
+  };
+
+  it('list every edge once, colour by colour, the free ones of each colour before the held ones', () => {
+    const { lists, count, order } = listedEdges(null);
+    expect(count).toBe(t.restLength.length);
+    expect(new Set(order).size).toBe(count);
+    expect(lists.runs[2 * colours]).toBe(count);
+    let heldEdges = 0;
+    for (let c = 0; c < colours; c++) {
+      for (let k = lists.runs[2 * c]; k < lists.runs[2 * c + 2]; k++) {
+        const e = order[k];
+        const [a, b] = [t.edges[2 * e], t.edges[2 * e + 1]];
+        expect(colourOf(e)).toBe(c);
+        const held = Math.max(weights[a], weights[b]);
+        expect(held > 0).toBe(k >= lists.runs[2 * c + 1]);
+        expect(lists.rest[3 * k + 2]).toBe(t.restLength[e]);
+        if (held > 0) {
+          heldEdges++;
+          expect([lists.held[3 * k], lists.held[3 * k + 1], lists.held[3 * k + 2]]).toEqual([held, seed[a], seed[b]]);
+        }
+      }
+    }
+    expect(heldEdges).toBeGreaterThan(0);
+    expect(heldEdges).toBeLessThan(count);
+  });
+
+  it('list only the edges and triangles with an included vertex, in the same order', () => {
+    const included = new Uint8Array(n);
+    for (let v = 0; v < n; v++) if (Math.hypot(t.rest[3 * v], t.rest[3 * v + 1]) < 0.003) included[v] = 1;
+    const all = listedEdges(null).order;
+    const some = listedEdges(included).order;
+    const touches = (e: number) => included[t.edges[2 * e]] === 1 || included[t.edges[2 * e + 1]] === 1;
+    expect(some.length).toBeGreaterThan(0);
+    expect(some).toEqual(all.filter((e) => touches(e)).sort((p, q) => colourOf(p) - colourOf(q) || all.indexOf(p) - all.indexOf(q)));
+
+    const frames = Float32Array.from({ length: (4 * t.triangles.length) / 3 }, (_, i) => i);
+    const lists = createTriangleLists(t);
+    const count = fillTriangleLists(lists, t.triangles, frames, included);
+    const expected: number[] = [];
+    for (let k = 0; k < t.triangles.length / 3; k++) if ([0, 1, 2].some((j) => included[t.triangles[3 * k + j]])) expected.push(k);
+    expect(count).toBe(expected.length);
+    expected.forEach((k, o) => {
+      expect([...lists.corners.subarray(3 * o, 3 * o + 3)]).toEqual([...t.triangles.subarray(3 * k, 3 * k + 3)].map((v) => 3 * v));
+      expect([...lists.frames.subarray(4 * o, 4 * o + 4)]).toEqual([...frames.subarray(4 * k, 4 * k + 4)]);
+    });
+  });
+
+  it('store neighbours as xyz offsets', () => {
+    expect([...neighbourOffsets(t)]).toEqual([...t.neighbours].map((v) => 3 * v));
+  });
+});
