@@ -197,17 +197,27 @@ export function buildTopology(renderPositions: ArrayLike<number>, indices: Array
  */
 export function computeNormals(positions: Float32Array, triangles: Uint32Array, out: Float32Array): void {
   out.fill(0);
-  for (let t = 0; t < triangles.length; t += 3) {
-    const a = 3 * triangles[t];
-    const b = 3 * triangles[t + 1];
-    const c = 3 * triangles[t + 2];
+  addFaceNormals(positions, triangles, triangles.length / 3, 3, out);
+  // An isolated vertex gets +z: any unit vector keeps the shading finite.
+  for (let i = 0; i < out.length; i += 3) normalize(out, i);
+}
+
+/**
+ * Adds each of `count` triangles' area-weighted normal (its cross product, twice its area long) to its corners in
+ * `out`. A corner's offset into the xyz arrays is `scale` times its entry in `corners` (3 for vertex indices, 1 for
+ * corners listed as 3 * vertex).
+ */
+function addFaceNormals(positions: Float32Array, corners: Uint32Array, count: number, scale: number, out: Float32Array): void {
+  for (let t = 0; t < 3 * count; t += 3) {
+    const a = scale * corners[t];
+    const b = scale * corners[t + 1];
+    const c = scale * corners[t + 2];
     const ux = positions[b] - positions[a];
     const uy = positions[b + 1] - positions[a + 1];
     const uz = positions[b + 2] - positions[a + 2];
     const vx = positions[c] - positions[a];
     const vy = positions[c + 1] - positions[a + 1];
     const vz = positions[c + 2] - positions[a + 2];
-    // The cross product's length is twice the area: summing it weights each face by its area.
     const nx = uy * vz - uz * vy;
     const ny = uz * vx - ux * vz;
     const nz = ux * vy - uy * vx;
@@ -221,8 +231,6 @@ export function computeNormals(positions: Float32Array, triangles: Uint32Array, 
     out[c + 1] += ny;
     out[c + 2] += nz;
   }
-  // An isolated vertex gets +z: any unit vector keeps the shading finite.
-  for (let i = 0; i < out.length; i += 3) normalize(out, i);
 }
 
 /**
@@ -254,29 +262,7 @@ export function computeSomeNormals(
     out[i + 1] = 0;
     out[i + 2] = 0;
   }
-  for (let t = 0; t < 3 * count; t += 3) {
-    const a = corners[t];
-    const b = corners[t + 1];
-    const c = corners[t + 2];
-    const ux = positions[b] - positions[a];
-    const uy = positions[b + 1] - positions[a + 1];
-    const uz = positions[b + 2] - positions[a + 2];
-    const vx = positions[c] - positions[a];
-    const vy = positions[c + 1] - positions[a + 1];
-    const vz = positions[c + 2] - positions[a + 2];
-    const nx = uy * vz - uz * vy;
-    const ny = uz * vx - ux * vz;
-    const nz = ux * vy - uy * vx;
-    out[a] += nx;
-    out[a + 1] += ny;
-    out[a + 2] += nz;
-    out[b] += nx;
-    out[b + 1] += ny;
-    out[b + 2] += nz;
-    out[c] += nx;
-    out[c + 1] += ny;
-    out[c + 2] += nz;
-  }
+  addFaceNormals(positions, corners, count, 1, out);
   for (let k = 0; k < vertexCount; k++) normalize(out, 3 * vertices[k]);
   for (let k = 0; k < otherCount; k++) {
     const i = 3 * others[k];
