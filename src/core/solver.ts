@@ -188,7 +188,8 @@ export class SkinSolver {
     this.topology = topology;
     const n = topology.vertexCount;
     this.buffers = options.buffers ?? createSolverBuffers(topology);
-    this.previous = new Float32Array(3 * n);
+    // Outside the active region `previous` is only written when the region changes, and stays at rest.
+    this.previous = Float32Array.from(topology.rest);
     this.lastStep = new Float32Array(3 * n);
     this.relaxation = new Float32Array(n).fill(1);
     this.held = new Uint32Array(n);
@@ -328,7 +329,18 @@ export class SkinSolver {
     const time = this.timings;
     const start = now();
     time.positions = time.muscles = time.lengths = time.bending = time.collisions = time.orientation = 0;
-    this.previous.set(x);
+    const r = this.region;
+    if (r.enabled) {
+      // Skin outside the region stays at rest, and so does `previous` there (see refreshLists).
+      const prev = this.previous;
+      const V = r.vertices;
+      for (let k = 0; k < r.count; k++) {
+        const i = 3 * V[k];
+        prev[i] = x[i];
+        prev[i + 1] = x[i + 1];
+        prev[i + 2] = x[i + 2];
+      }
+    } else this.previous.set(x);
     const p = this.params;
     for (let it = 0; it < p.positionIterations; it++) {
       let t0 = now();
@@ -406,9 +418,20 @@ export class SkinSolver {
     if (this.region.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded);
     this.listedRevision = this.region.revision;
     if (this.region.enabled) {
+      // Skin outside the region is at rest and does not move: its last step is zero and its previous place rest, so
+      // that a vertex joining within a frame (see settleRegion) starts from there.
       const inside = this.region.inside;
       const last = this.lastStep;
-      for (let v = 0; v < inside.length; v++) if (!inside[v]) last[3 * v] = last[3 * v + 1] = last[3 * v + 2] = 0;
+      const prev = this.previous;
+      const X = this.topology.rest;
+      for (let v = 0; v < inside.length; v++) {
+        if (inside[v]) continue;
+        const i = 3 * v;
+        last[i] = last[i + 1] = last[i + 2] = 0;
+        prev[i] = X[i];
+        prev[i + 1] = X[i + 1];
+        prev[i + 2] = X[i + 2];
+      }
     }
     this.listCandidates();
   }
