@@ -1,4 +1,5 @@
 import { beforeAll, describe, expect, it } from 'vitest';
+import type { Collider } from '../src/core/colliders';
 import { SkinSolver } from '../src/core/solver';
 import { buildTopology } from '../src/core/topology';
 import { triangleGrid } from './fixtures/grids';
@@ -105,5 +106,64 @@ describe('the active region on a sheet', () => {
     }
     expect(far).toBeGreaterThan(0.3 * t.vertexCount);
     expect(region.activeVertexCount).toBeLessThan(0.6 * t.vertexCount);
+  });
+});
+
+// Opening the jaw turns the lower teeth's colliders into skin at rest; the region takes in what they reach.
+describe('the active region and colliders that move', () => {
+  it('opening the jaw (AU26, AU27) on the head gives the shape of the whole-mesh solve', async () => {
+    for (const au of ['AU26', 'AU27']) {
+      const region = await loadHeadSimulation('low');
+      const whole = await loadHeadSimulation('low', {}, { activeRegion: false });
+      for (const sim of [region, whole]) {
+        sim.expression.setActionUnit(au, 1);
+        sim.apply();
+        solve(sim.host.solver, 250);
+      }
+      const t = region.host.topology;
+      expect(largestDistance(whole.host.solver.buffers.positions, t.rest)).toBeGreaterThan(1e-2 * t.size);
+      expect(largestDistance(region.host.solver.buffers.positions, whole.host.solver.buffers.positions)).toBeLessThan(1e-5 * t.size);
+    }
+  });
+
+  it('takes in skin at rest that a collider which moved with an input change now reaches', () => {
+    // A 24 x 4 cm sheet at 2 mm spacing; a muscle drags a patch at x = -10 cm; a sphere 0.5 mm under the sheet at
+    // x = +9 cm, far outside the region, rises 3 mm into it when the inputs next change.
+    const g = triangleGrid(0.24, 0.04, 0.002);
+    const t = buildTopology(g.positions, g.indices);
+    const vertices: number[] = [];
+    const targets: number[] = [];
+    for (let v = 0; v < t.vertexCount; v++) {
+      const [x, y, z] = [t.rest[3 * v], t.rest[3 * v + 1], t.rest[3 * v + 2]];
+      if (Math.hypot(x + 0.1, y) < 0.01) {
+        vertices.push(v);
+        targets.push(x + 0.003, y + 0.002, z);
+      }
+    }
+    const sphere: Collider = { name: 'ball', a: [0.09, 0, -0.0065], radius: 0.006 };
+    const region = new SkinSolver(t, { colliders: [sphere] });
+    const whole = new SkinSolver(t, { colliders: [sphere], activeRegion: false });
+    for (const s of [region, whole]) {
+      s.setMuscleTargets(vertices, targets, 1, 0);
+      solve(s, 100);
+    }
+    // The skin over the sphere is outside the region, exactly at rest.
+    let over = 0;
+    for (let v = 0; v < t.vertexCount; v++) {
+      if (Math.abs(t.rest[3 * v] - 0.09) > 0.01) continue;
+      over++;
+      expect(sameAt(region.buffers.positions, t.rest, v)).toBe(true);
+    }
+    expect(over).toBeGreaterThan(100);
+    expect(region.activeVertexCount).toBeLessThan(0.6 * t.vertexCount);
+    sphere.a[2] = -0.0035;
+    for (const s of [region, whole]) {
+      s.updateMuscles();
+      solve(s, 300);
+    }
+    let lifted = 0;
+    for (let v = 0; v < t.vertexCount; v++) lifted = Math.max(lifted, whole.buffers.positions[3 * v + 2] - t.rest[3 * v + 2]);
+    expect(lifted).toBeGreaterThan(0.002);
+    expect(largestDistance(region.buffers.positions, whole.buffers.positions)).toBeLessThan(1e-5 * t.size);
   });
 });

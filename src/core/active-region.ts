@@ -129,12 +129,12 @@ export class ActiveRegion {
 
   /**
    * Before the frame's damping: the region grows around border vertices farther than ACTIVE_GROW from rest, and
-   * takes in the ring (and `extra`) vertices that the frame moved farther than that, each with ACTIVE_GROW_RINGS - 1
-   * rings around it; the other ring and extra vertices go back exactly to rest, so that their move does not count.
-   * `extra` lists vertices that something besides the region's constraints may move: collision candidates, since a
-   * collider that moves (the lower teeth with the jaw) reaches skin at rest. Returns whether the region changed.
+   * takes in the ring vertices that the frame moved farther than that, each with ACTIVE_GROW_RINGS - 1 rings around
+   * it; the other ring vertices go back exactly to rest, so that their move does not count. Nothing else moves skin
+   * outside the region: what a collider that moves reaches joins before the frame (see `join`). Returns whether the
+   * region changed.
    */
-  grow(x: Float32Array, extra: Uint32Array): boolean {
+  grow(x: Float32Array): boolean {
     if (!this.enabled) return false;
     const t = this.topology;
     const X = t.rest;
@@ -156,13 +156,51 @@ export class ActiveRegion {
         }
       }
     }
-    for (let k = 0; k < this.ringCount + extra.length; k++) {
-      const v = k < this.ringCount ? this.ring[k] : extra[k - this.ringCount];
+    for (let k = 0; k < this.ringCount; k++) {
+      const v = this.ring[k];
       if (inside[v] === 0 && distanceSquared(x, X, 3 * v) > grow2) {
         inside[v] = 1;
         joining[joins++] = v;
       }
     }
+    this.spread(joins);
+    this.restRing(x);
+    if (joins === 0) return false;
+    // Vertices only joined, so no normal needs resetting.
+    this.rebuild(null);
+    return true;
+  }
+
+  /**
+   * Between frames, when the inputs change: the `count` vertices of `vertices` (skin at rest that a collider which
+   * moved now reaches) join, each with ACTIVE_GROW_RINGS - 1 rings around it, as the vertices `grow` takes in.
+   * Returns whether the region changed.
+   */
+  join(vertices: Uint32Array, count: number): boolean {
+    if (!this.enabled) return false;
+    const inside = this.inside;
+    const joining = this.scratch;
+    let joins = 0;
+    for (let k = 0; k < count; k++) {
+      const v = vertices[k];
+      if (inside[v] === 0) {
+        inside[v] = 1;
+        joining[joins++] = v;
+      }
+    }
+    this.spread(joins);
+    if (joins === 0) return false;
+    this.rebuild(null);
+    return true;
+  }
+
+  /** Marks ACTIVE_GROW_RINGS - 1 rings around the `joins` vertices just marked inside, listed in `scratch`. */
+  private spread(joins: number): void {
+    const t = this.topology;
+    const start = t.neighbourStart;
+    const nb = t.neighbours;
+    const inside = this.inside;
+    const joining = this.scratch;
     let head = 0;
     for (let r = 1; r < ACTIVE_GROW_RINGS; r++) {
       const end = joins;
@@ -177,37 +215,28 @@ export class ActiveRegion {
         }
       }
     }
-    this.restOutside(x, extra);
-    if (joins === 0) return false;
-    // Vertices only joined, so no normal needs resetting.
-    this.rebuild(null);
-    return true;
   }
 
   /**
-   * At the frame's end (after the damping, which blends with the frame's start): ring and extra vertices go back
-   * exactly to rest again (the last orientation passes may have nudged them), and now and then vertices no muscle
-   * holds that are back at rest, with all their neighbours, leave the region; they and their normals go exactly to
-   * rest. Returns whether the region changed.
+   * At the frame's end (after the damping, which blends with the frame's start): ring vertices go back exactly to
+   * rest again (the last orientation passes may have nudged them), and now and then vertices no muscle holds that are
+   * back at rest, with all their neighbours, leave the region; they and their normals go exactly to rest. Returns
+   * whether the region changed.
    */
-  finish(x: Float32Array, weights: Float32Array, normalWeights: Float32Array, normals: Float32Array, extra: Uint32Array): boolean {
+  finish(x: Float32Array, weights: Float32Array, normalWeights: Float32Array, normals: Float32Array): boolean {
     if (!this.enabled) return false;
-    this.restOutside(x, extra);
+    this.restRing(x);
     if (++this.frame % ACTIVE_SHRINK_PERIOD !== 0 || !this.shrink(x, weights, normalWeights)) return false;
     this.rebuild(normals);
     return true;
   }
 
-  /** Puts the ring vertices, and those of `extra`, that are outside the region back exactly at rest. */
-  private restOutside(x: Float32Array, extra: Uint32Array): void {
+  /** Puts the ring vertices that are still outside the region back exactly at rest. */
+  private restRing(x: Float32Array): void {
     const X = this.topology.rest;
     const inside = this.inside;
     for (let k = 0; k < this.ringCount; k++) {
       const v = this.ring[k];
-      if (inside[v] === 0) setRest(x, X, 3 * v);
-    }
-    for (let k = 0; k < extra.length; k++) {
-      const v = extra[k];
       if (inside[v] === 0) setRest(x, X, 3 * v);
     }
   }

@@ -3,7 +3,7 @@
  * that order, a number of times, over flat Float32Arrays. Added to the thesis: a bending constraint that sets the
  * wrinkle spacing in millimetres, and collisions with rigid shapes (eyes, teeth).
  */
-import { ActiveRegion } from './active-region';
+import { ACTIVE_GROW, ActiveRegion } from './active-region';
 import { colliderDistance, slabSide, type Collider } from './colliders';
 import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets, type EdgeLists, type TriangleLists } from './constraint-lists';
 import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
@@ -156,6 +156,17 @@ export class SkinSolver {
   private readonly colliderClearance: Float32Array;
   /** Per collision candidate: the side of its slab it lies on at rest (+1 or -1), 0 for spheres and capsules. */
   private readonly colliderSide: Int8Array;
+  /**
+   * The candidates a frame checks, as indices into the lists above, collider by collider (`activeCandidates[
+   * activeCandidateStart[c]..activeCandidateStart[c + 1]]`): those in or next to the active region (all without it),
+   * as of `listedRevision`. The others are at rest, where no collider reaches them (see joinReachedCandidates).
+   */
+  private readonly activeCandidates: Uint32Array;
+  private readonly activeCandidateStart: Uint32Array;
+  /** Each collider's shape (a, b, up, radius) when the candidates were last checked against it. */
+  private readonly colliderShapes: Float64Array;
+  /** Scratch: candidates a moved collider reaches. */
+  private readonly reached: Uint32Array;
   private readonly direction = new Float32Array(3);
   private inputsChanged = false;
   private asleep = true;
@@ -177,7 +188,8 @@ export class SkinSolver {
     this.topology = topology;
     const n = topology.vertexCount;
     this.buffers = options.buffers ?? createSolverBuffers(topology);
-    this.previous = new Float32Array(3 * n);
+    // Outside the active region `previous` is only written when the region changes, and stays at rest.
+    this.previous = Float32Array.from(topology.rest);
     this.lastStep = new Float32Array(3 * n);
     this.relaxation = new Float32Array(n).fill(1);
     this.held = new Uint32Array(n);
@@ -201,6 +213,11 @@ export class SkinSolver {
     this.colliderVertices = c.vertices;
     this.colliderClearance = c.clearance;
     this.colliderSide = c.side;
+    this.activeCandidates = new Uint32Array(c.vertices.length);
+    this.activeCandidateStart = new Uint32Array(this.colliders.length + 1);
+    this.reached = new Uint32Array(c.vertices.length);
+    this.colliderShapes = new Float64Array(COLLIDER_SHAPE * this.colliders.length);
+    for (let k = 0; k < this.colliders.length; k++) colliderShapeChanged(this.colliders[k], this.colliderShapes, k);
     this.setParameters(options.parameters ?? {});
     this.updateMuscles();
   }
@@ -260,6 +277,7 @@ export class SkinSolver {
     for (let v = 0; v < W.length; v++) if (W[v] > 0 || WN[v] > 0) this.held[count++] = v;
     this.heldCount = count;
     this.region.seed(this.held, count);
+    this.joinReachedCandidates();
     this.refreshLists();
     this.inputsChanged = true;
     this.restartMotion();
@@ -311,7 +329,18 @@ export class SkinSolver {
     const time = this.timings;
     const start = now();
     time.positions = time.muscles = time.lengths = time.bending = time.collisions = time.orientation = 0;
-    this.previous.set(x);
+    const r = this.region;
+    if (r.enabled) {
+      // Skin outside the region stays at rest, and so does `previous` there (see refreshLists).
+      const prev = this.previous;
+      const V = r.vertices;
+      for (let k = 0; k < r.count; k++) {
+        const i = 3 * V[k];
+        prev[i] = x[i];
+        prev[i + 1] = x[i + 1];
+        prev[i + 2] = x[i + 2];
+      }
+    } else this.previous.set(x);
     const p = this.params;
     for (let it = 0; it < p.positionIterations; it++) {
       let t0 = now();
@@ -365,7 +394,7 @@ export class SkinSolver {
    */
   private settleRegion(): void {
     const b = this.buffers;
-    if (this.region.grow(b.positions, this.colliderVertices)) this.refreshLists();
+    if (this.region.grow(b.positions)) this.refreshLists();
   }
 
   /**
@@ -377,7 +406,7 @@ export class SkinSolver {
     const b = this.buffers;
     const asleepNext = !this.inputsChanged && this.lastMove <= this.params.sleepTolerance * this.topology.size;
     if (this.heldCount === 0 && asleepNext) this.region.clear(b.positions, b.normals);
-    else this.region.finish(b.positions, b.weights, b.normalWeights, b.normals, this.colliderVertices);
+    else this.region.finish(b.positions, b.weights, b.normalWeights, b.normals);
     if (this.region.revision !== this.listedRevision) this.refreshLists();
   }
 
@@ -389,10 +418,63 @@ export class SkinSolver {
     if (this.region.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded);
     this.listedRevision = this.region.revision;
     if (this.region.enabled) {
+      // Skin outside the region is at rest and does not move: its last step is zero and its previous place rest, so
+      // that a vertex joining within a frame (see settleRegion) starts from there.
       const inside = this.region.inside;
       const last = this.lastStep;
-      for (let v = 0; v < inside.length; v++) if (!inside[v]) last[3 * v] = last[3 * v + 1] = last[3 * v + 2] = 0;
+      const prev = this.previous;
+      const X = this.topology.rest;
+      for (let v = 0; v < inside.length; v++) {
+        if (inside[v]) continue;
+        const i = 3 * v;
+        last[i] = last[i + 1] = last[i + 2] = 0;
+        prev[i] = X[i];
+        prev[i + 1] = X[i + 1];
+        prev[i + 2] = X[i + 2];
+      }
     }
+    this.listCandidates();
+  }
+
+  /** Lists the collision candidates a frame checks: those in or next to the region (all of them without it). */
+  private listCandidates(): void {
+    const r = this.region;
+    const near = r.shaded;
+    const V = this.colliderVertices;
+    const list = this.activeCandidates;
+    const start = this.activeCandidateStart;
+    let count = 0;
+    for (let c = 0; c < this.colliders.length; c++) {
+      for (let j = this.colliderStart[c]; j < this.colliderStart[c + 1]; j++) if (!r.enabled || near[V[j]] === 1) list[count++] = j;
+      start[c + 1] = count;
+    }
+  }
+
+  /**
+   * When the inputs change, a collider may have moved (the lower teeth turn with the jaw; colliders move only with an
+   * input change): the candidates outside the region that one which moved now pushes farther than the region's
+   * tolerance join it, as they would had the frame pushed them (see ActiveRegion.grow). Skin outside the region is
+   * at rest, which no collider reaches as long as it is where it was at rest, so the frames check only candidates in
+   * or next to the region.
+   */
+  private joinReachedCandidates(): void {
+    const r = this.region;
+    const x = this.buffers.positions;
+    const dir = this.direction;
+    const tolerance = ACTIVE_GROW * this.topology.size;
+    let count = 0;
+    for (let c = 0; c < this.colliders.length; c++) {
+      const collider = this.colliders[c];
+      if (!colliderShapeChanged(collider, this.colliderShapes, c) || !r.enabled) continue;
+      for (let j = this.colliderStart[c]; j < this.colliderStart[c + 1]; j++) {
+        const v = this.colliderVertices[j];
+        if (r.inside[v] === 1) continue;
+        const i = 3 * v;
+        const d = colliderDistance(collider, x[i], x[i + 1], x[i + 2], dir, this.colliderSide[j]);
+        if (this.colliderClearance[j] - d > tolerance) this.reached[count++] = v;
+      }
+    }
+    r.join(this.reached, count);
   }
 
   /** Normals of the skin that may have moved: the region and its ring (all of it without the active region). */
@@ -667,13 +749,19 @@ export class SkinSolver {
     }
   }
 
-  /** Collisions: a vertex that was outside a collider at rest keeps at least its rest clearance (capped at 1 mm). */
+  /**
+   * Collisions: a vertex that was outside a collider at rest keeps at least its rest clearance (capped at 1 mm).
+   * Only the candidates in or next to the active region are checked (see listCandidates).
+   */
   private projectCollisions(): void {
     const x = this.buffers.positions;
     const dir = this.direction;
+    const list = this.activeCandidates;
+    const start = this.activeCandidateStart;
     for (let c = 0; c < this.colliders.length; c++) {
       const collider = this.colliders[c];
-      for (let j = this.colliderStart[c]; j < this.colliderStart[c + 1]; j++) {
+      for (let k = start[c]; k < start[c + 1]; k++) {
+        const j = list[k];
         const i = 3 * this.colliderVertices[j];
         const d = colliderDistance(collider, x[i], x[i + 1], x[i + 2], dir, this.colliderSide[j]);
         const push = this.colliderClearance[j] - d;
@@ -905,6 +993,23 @@ function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Arra
     out[4 * t + 3] = MIN_PROJECTED_AREA * twiceArea;
   }
   return out;
+}
+
+/** Numbers that give a collider's shape: a, b and up (xyz each, 0 when absent) and the radius. */
+const COLLIDER_SHAPE = 10;
+
+/** Stores collider `c`'s shape at its place in `shapes`; returns whether it differs from the one stored there. */
+function colliderShapeChanged(c: Collider, shapes: Float64Array, index: number): boolean {
+  const o = COLLIDER_SHAPE * index;
+  let changed = false;
+  for (let k = 0; k < COLLIDER_SHAPE; k++) {
+    const value = k < 3 ? c.a[k] : k < 6 ? (c.b ? c.b[k - 3] : 0) : k < 9 ? (c.up ? c.up[k - 6] : 0) : c.radius;
+    if (shapes[o + k] !== value) {
+      shapes[o + k] = value;
+      changed = true;
+    }
+  }
+  return changed;
 }
 
 /** A fixed hash of an integer to [0, 1). */
