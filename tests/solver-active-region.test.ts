@@ -77,8 +77,9 @@ describe('the active region on the head', () => {
 });
 
 // A flat 24 x 8 cm sheet at 2 mm spacing; a muscle drags a 1 cm patch near one end (x = -10 cm).
-describe('the active region on a sheet', () => {
-  const g = triangleGrid(0.24, 0.08, 0.002);
+/** A 24 cm sheet of the given height at 2 mm spacing, and muscle targets dragging a 1 cm patch at x = -10 cm. */
+function sheetWithDraggedPatch(height: number) {
+  const g = triangleGrid(0.24, height, 0.002);
   const t = buildTopology(g.positions, g.indices);
   const vertices: number[] = [];
   const targets: number[] = [];
@@ -89,6 +90,11 @@ describe('the active region on a sheet', () => {
       targets.push(x + 0.003, y + 0.002, z);
     }
   }
+  return { t, vertices, targets };
+}
+
+describe('the active region on a sheet', () => {
+  const { t, vertices, targets } = sheetWithDraggedPatch(0.08);
 
   it('leaves the far end exactly at rest, and matches the whole-mesh solve', () => {
     const region = new SkinSolver(t);
@@ -129,17 +135,7 @@ describe('the active region and colliders that move', () => {
   it('takes in skin at rest that a collider which moved with an input change now reaches', () => {
     // A 24 x 4 cm sheet at 2 mm spacing; a muscle drags a patch at x = -10 cm; a sphere 0.5 mm under the sheet at
     // x = +9 cm, far outside the region, rises 3 mm into it when the inputs next change.
-    const g = triangleGrid(0.24, 0.04, 0.002);
-    const t = buildTopology(g.positions, g.indices);
-    const vertices: number[] = [];
-    const targets: number[] = [];
-    for (let v = 0; v < t.vertexCount; v++) {
-      const [x, y, z] = [t.rest[3 * v], t.rest[3 * v + 1], t.rest[3 * v + 2]];
-      if (Math.hypot(x + 0.1, y) < 0.01) {
-        vertices.push(v);
-        targets.push(x + 0.003, y + 0.002, z);
-      }
-    }
+    const { t, vertices, targets } = sheetWithDraggedPatch(0.04);
     const sphere: Collider = { name: 'ball', a: [0.09, 0, -0.0065], radius: 0.006 };
     const region = new SkinSolver(t, { colliders: [sphere] });
     const whole = new SkinSolver(t, { colliders: [sphere], activeRegion: false });
