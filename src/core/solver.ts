@@ -1,7 +1,8 @@
 /**
  * The skin solver (thesis 3.1.2 and 4.3): every frame, position, muscle and length constraints are projected in
  * that order, a number of times, over flat Float32Arrays. Added to the thesis: a bending constraint that sets the
- * wrinkle spacing in millimetres, and collisions with rigid shapes (eyes, teeth).
+ * wrinkle spacing in millimetres, collisions with rigid shapes (eyes, teeth), orientation constraints, a per-vertex
+ * relaxation that turns cycles into convergence (see `relax`), and the active region: only skin that moves is solved.
  */
 import { ACTIVE_GROW, ActiveRegion } from './active-region';
 import { colliderDistance, slabSide, type Collider } from './colliders';
