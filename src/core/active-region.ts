@@ -6,7 +6,7 @@
  * and so are its normals except on the ring just outside the region, whose normals follow the moved triangles.
  *
  * A frame projects the constraints that touch the region, so they also move the ring of vertices just outside it.
- * Before the frame's damping, the region grows by ACTIVE_GROW_RINGS rings where a border vertex is farther than
+ * Before the frame's relaxation, the region grows by ACTIVE_GROW_RINGS rings where a border vertex is farther than
  * ACTIVE_GROW (times the mesh size) from rest, or where the frame moved a ring vertex farther than that; the rest of
  * the ring goes back exactly to rest. So the region ends where the whole-mesh solve moves the skin by less than about
  * that much, and the two solves agree to about that much. The skin's response fades slowly (the tissue under it is
@@ -128,7 +128,7 @@ export class ActiveRegion {
   }
 
   /**
-   * Before the frame's damping: the region grows around border vertices farther than ACTIVE_GROW from rest, and
+   * Before the frame's relaxation: the region grows around border vertices farther than ACTIVE_GROW from rest, and
    * takes in the ring vertices that the frame moved farther than that, each with ACTIVE_GROW_RINGS - 1 rings around
    * it; the other ring vertices go back exactly to rest, so that their move does not count. Nothing else moves skin
    * outside the region: what a collider that moves reaches joins before the frame (see `join`). Returns whether the
@@ -218,7 +218,7 @@ export class ActiveRegion {
   }
 
   /**
-   * At the frame's end (after the damping, which blends with the frame's start): ring vertices go back exactly to
+   * At the frame's end (after the relaxation, which blends with the frame's start): ring vertices go back exactly to
    * rest again (the last orientation passes may have nudged them), and now and then vertices no muscle holds that are
    * back at rest, with all their neighbours, leave the region; they and their normals go exactly to rest. Returns
    * whether the region changed.
