@@ -112,7 +112,7 @@ for (const { name, frames } of RESOLUTIONS) {
 const RIG_CASES: { resolution: Resolution; expression: string; maxFrames: number }[] = [
   { resolution: 'medium', expression: 'AU12', maxFrames: 1500 },
   { resolution: 'medium', expression: 'happiness', maxFrames: 1500 },
-  { resolution: 'high', expression: 'happiness', maxFrames: 1000 },
+  { resolution: 'high', expression: 'happiness', maxFrames: 1500 },
 ];
 /** "Within 2 % of the final shape": every vertex nearer its final place than this share of the largest final move. */
 const NEAR_FINAL = 0.02;
