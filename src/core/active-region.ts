@@ -101,20 +101,7 @@ export class ActiveRegion {
         queue[tail++] = v;
       }
     }
-    let head = 0;
-    for (let r = 0; r < ACTIVE_SEED_RINGS; r++) {
-      const end = tail;
-      for (; head < end; head++) {
-        const v = queue[head];
-        for (let j = start[v]; j < start[v + 1]; j++) {
-          const u = neighbours[j];
-          if (mark[u] === 0) {
-            mark[u] = 1;
-            queue[tail++] = u;
-          }
-        }
-      }
-    }
+    tail = addRings(start, neighbours, mark, queue, tail, ACTIVE_SEED_RINGS);
     for (let k = 0; k < tail; k++) {
       const v = queue[k];
       mark[v] = 0;
@@ -196,25 +183,7 @@ export class ActiveRegion {
 
   /** Marks ACTIVE_GROW_RINGS - 1 rings around the `joins` vertices just marked inside, listed in `scratch`. */
   private spread(joins: number): void {
-    const t = this.topology;
-    const start = t.neighbourStart;
-    const nb = t.neighbours;
-    const inside = this.inside;
-    const joining = this.scratch;
-    let head = 0;
-    for (let r = 1; r < ACTIVE_GROW_RINGS; r++) {
-      const end = joins;
-      for (; head < end; head++) {
-        const v = joining[head];
-        for (let j = start[v]; j < start[v + 1]; j++) {
-          const u = nb[j];
-          if (inside[u] === 0) {
-            inside[u] = 1;
-            joining[joins++] = u;
-          }
-        }
-      }
-    }
+    addRings(this.topology.neighbourStart, this.topology.neighbours, this.inside, this.scratch, joins, ACTIVE_GROW_RINGS - 1);
   }
 
   /**
@@ -353,4 +322,26 @@ function setRest(x: Float32Array, X: Float32Array, i: number): void {
   x[i] = X[i];
   x[i + 1] = X[i + 1];
   x[i + 2] = X[i + 2];
+}
+
+/**
+ * Breadth-first, ring by ring: flags `rings` rings of neighbours around the flagged vertices `queue[0..tail]`, appending
+ * each newly flagged vertex to `queue`; returns the new tail.
+ */
+function addRings(start: Uint32Array, neighbours: Uint32Array, flags: Uint8Array, queue: Uint32Array, tail: number, rings: number): number {
+  let head = 0;
+  for (let r = 0; r < rings; r++) {
+    const end = tail;
+    for (; head < end; head++) {
+      const v = queue[head];
+      for (let j = start[v]; j < start[v + 1]; j++) {
+        const u = neighbours[j];
+        if (flags[u] === 0) {
+          flags[u] = 1;
+          queue[tail++] = u;
+        }
+      }
+    }
+  }
+  return tail;
 }

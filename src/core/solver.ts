@@ -505,10 +505,10 @@ export class SkinSolver {
     const share = this.relaxation;
     const late = this.motionFrames++ - LATE_MOTION;
     const cap = late > 0 ? LATE_SLOWING ** late : 1;
-    const r = this.region;
-    const count = r.enabled ? r.count : share.length;
+    const V = this.region.vertices;
+    const count = this.region.count;
     for (let k = 0; k < count; k++) {
-      const v = r.enabled ? r.vertices[k] : k;
+      const v = V[k];
       const i = 3 * v;
       const dx = x[i] - prev[i];
       const dy = x[i + 1] - prev[i + 1];
@@ -533,12 +533,12 @@ export class SkinSolver {
     const x = this.buffers.positions;
     const prev = this.previous;
     const last = this.lastStep;
-    const r = this.region;
-    const count = r.enabled ? r.count : x.length / 3;
+    const V = this.region.vertices;
+    const count = this.region.count;
     let largest2 = 0;
     // Skin outside the region does not move; its steps are zeroed when it leaves (see refreshLists).
     for (let k = 0; k < count; k++) {
-      const i = 3 * (r.enabled ? r.vertices[k] : k);
+      const i = 3 * V[k];
       const dx = (last[i] = x[i] - prev[i]);
       const dy = (last[i + 1] = x[i + 1] - prev[i + 1]);
       const dz = (last[i + 2] = x[i + 2] - prev[i + 2]);
