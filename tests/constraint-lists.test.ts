@@ -1,5 +1,17 @@
 import { describe, expect, it } from 'vitest';
-import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets } from '../src/core/constraint-lists';
+import {
+  createEdgeLists,
+  createTriangleLists,
+  fillEdgeLists,
+  fillTriangleLists,
+  neighbourOffsets,
+  PART_EVEN,
+  PART_EVEN_SEAM,
+  PART_ODD,
+  PART_ODD_SEAM,
+  PARTS,
+  vertexBlocks,
+} from '../src/core/constraint-lists';
 import { buildTopology } from '../src/core/topology';
 import { triangleGrid } from './fixtures/grids';
 
@@ -11,6 +23,37 @@ describe('constraint lists', () => {
   for (let v = 0; v < n; v++) if (t.rest[3 * v] > 0.004) weights[v] = 0.25 + 0.5 * (v % 3 === 0 ? 1 : 0);
   const seed = Float32Array.from({ length: n }, (_, v) => (v % 7) / 7);
   const colours = t.colourStart.length - 1;
+  const blocks = vertexBlocks(t);
+  const ring = (v: number) => [v, ...t.neighbours.subarray(t.neighbourStart[v], t.neighbourStart[v + 1])];
+
+  /** The part a constraint over these vertices belongs to: within an even or odd block, or across a boundary. */
+  const partOf = (vertices: number[]) => {
+    const lo = Math.min(...vertices.map((v) => blocks[v]));
+    const hi = Math.max(...vertices.map((v) => blocks[v]));
+    if (lo === hi) return lo % 2 === 0 ? PART_EVEN : PART_ODD;
+    return hi % 2 === 0 ? PART_EVEN_SEAM : PART_ODD_SEAM;
+  };
+
+  it('split the vertices into blocks that no ring spans and no vertex crosses twice', () => {
+    const count = blocks[n - 1] + 1;
+    // Consecutive vertices, numbered in order from 0.
+    for (let v = 1; v < n; v++) expect(blocks[v] - blocks[v - 1]).toBeGreaterThanOrEqual(0);
+    for (let v = 1; v < n; v++) expect(blocks[v] - blocks[v - 1]).toBeLessThanOrEqual(1);
+    expect(count).toBeGreaterThanOrEqual(4);
+    // Each vertex is reached by rings across at most one boundary, and every ring lies in one block or two neighbours.
+    const boundaryOf = new Int32Array(n).fill(-1);
+    for (let v = 0; v < n; v++) {
+      const r = ring(v).map((u) => blocks[u]);
+      const lo = Math.min(...r);
+      const hi = Math.max(...r);
+      expect(hi - lo).toBeLessThanOrEqual(1);
+      if (hi === lo) continue;
+      for (const u of ring(v)) {
+        if (boundaryOf[u] !== -1) expect(boundaryOf[u]).toBe(hi);
+        boundaryOf[u] = hi;
+      }
+    }
+  });
 
   /** The topology's edge index of each listed edge, in list order. */
   function listedEdges(included: Uint8Array | null) {
@@ -52,7 +95,7 @@ describe('constraint lists', () => {
     expect(heldEdges).toBeLessThan(count);
   });
 
-  it('list only the edges and triangles with an included vertex, in the same order', () => {
+  it('list only the edges and triangles with an included vertex, in the same order, the triangles part by part', () => {
     const included = new Uint8Array(n);
     for (let v = 0; v < n; v++) if (Math.hypot(t.rest[3 * v], t.rest[3 * v + 1]) < 0.003) included[v] = 1;
     const all = listedEdges(null).order;
@@ -63,11 +106,26 @@ describe('constraint lists', () => {
 
     const frames = Float32Array.from({ length: (4 * t.triangles.length) / 3 }, (_, i) => i);
     const lists = createTriangleLists(t);
-    const count = fillTriangleLists(lists, t.triangles, frames, included);
-    const expected: number[] = [];
-    for (let k = 0; k < t.triangles.length / 3; k++) if ([0, 1, 2].some((j) => included[t.triangles[3 * k + j]])) expected.push(k);
+    const places = new Int32Array(t.triangles.length / 3);
+    const count = fillTriangleLists(lists, t.triangles, frames, included, places, blocks);
+    const listed: number[][] = [[], [], [], []];
+    for (let k = 0; k < t.triangles.length / 3; k++) {
+      const corners = [...t.triangles.subarray(3 * k, 3 * k + 3)];
+      if (corners.some((v) => included[v])) listed[partOf(corners)].push(k);
+      else expect(places[k]).toBe(-1);
+    }
+    const expected = listed.flat();
     expect(count).toBe(expected.length);
+    expect([...lists.parts]).toEqual([0, 1, 2, 3, 4].map((p) => listed.slice(0, p).flat().length));
+    // Every part has triangles, and the odd parts (a partner thread's) about as many as the even ones.
+    const all3 = createTriangleLists(t);
+    fillTriangleLists(all3, t.triangles, frames, null, new Int32Array(t.triangles.length / 3), blocks);
+    const size = (p: number) => all3.parts[p + 1] - all3.parts[p];
+    for (let p = 0; p < PARTS; p++) expect(size(p)).toBeGreaterThan(0);
+    expect(size(PART_ODD) / size(PART_EVEN)).toBeGreaterThan(0.5);
+    expect(size(PART_ODD) / size(PART_EVEN)).toBeLessThan(2);
     expected.forEach((k, o) => {
+      expect(places[k]).toBe(o);
       expect([...lists.corners.subarray(3 * o, 3 * o + 3)]).toEqual([...t.triangles.subarray(3 * k, 3 * k + 3)].map((v) => 3 * v));
       expect([...lists.frames.subarray(4 * o, 4 * o + 4)]).toEqual([...frames.subarray(4 * k, 4 * k + 4)]);
     });

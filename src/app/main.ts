@@ -10,7 +10,7 @@ import { MuscleView } from '../render/muscle-view';
 import { SkinView } from '../render/skin-view';
 import { Panels } from '../ui/panels';
 import { SkinSimulation } from '../worker/skin-simulation';
-import { chooseSolverMode } from '../worker/solver-mode';
+import { chooseSolverMode, chooseWorkers } from '../worker/solver-mode';
 import { EyeDriver } from './eye-driver';
 import { encodeExpression } from './expression-hash';
 import { HashSync } from './hash-sync';
@@ -49,6 +49,7 @@ async function startSkin(head: HeadModel, skinView: SkinView, rig: Rig | undefin
   const geometry = head.skin.geometry;
   const simulation = await SkinSimulation.create({
     mode,
+    workers: chooseWorkers(location.search),
     renderPositions: geometry.getAttribute('position').array as Float32Array,
     indices: geometry.index!.array as Uint16Array | Uint32Array,
     colliders: headColliders(head),
@@ -61,7 +62,8 @@ async function startSkin(head: HeadModel, skinView: SkinView, rig: Rig | undefin
   });
   const showSolver = (): void => {
     const s = simulation.stats();
-    solverStatus.textContent = `solver: ${s.mode}, ${s.solveMs.toFixed(1)} ms per frame${s.sleeping ? ', at rest' : ''}`;
+    const threads = s.workers > 1 ? ` (${s.workers} workers)` : '';
+    solverStatus.textContent = `solver: ${s.mode}${threads}, ${s.solveMs.toFixed(1)} ms per frame${s.sleeping ? ', at rest' : ''}`;
   };
   showSolver();
   setInterval(showSolver, SOLVER_STATUS_MS);

@@ -2,14 +2,39 @@
  * Flat lists that the solver's per-frame loops walk, built once or when the muscle inputs change, never per frame:
  * vertex indices are stored already multiplied by 3 (the offset of x in an xyz array), so the loops neither multiply
  * nor look an index up twice, and each list holds only what its loop reads, in the order it reads it.
+ *
+ * Two threads can share a pass (see solver-partner.ts) when what each projects shares no vertex with the other's:
+ * the edges of one colour can be split anywhere; the triangles are split in four parts by blocks of consecutive
+ * vertices (see `vertexBlocks`): those within an even block, within an odd block, across the boundary of an even block
+ * and the block before it, and across an odd block's. Triangles of an even and an odd part share no vertex, so the
+ * even and the odd parts go at once, one pair after the other. A frame walks the parts in the same order on one
+ * thread, so one thread and two give the same shape; the blocks do not depend on the active region, so neither does
+ * the order. The vertices are in reverse Cuthill-McKee order (see topology.ts): the blocks are bands a few rings wide
+ * across the mesh, so any moving patch spans many of them, about as many even as odd.
  */
 import type { SkinTopology } from './topology';
 
+/** The constraints within even blocks, within odd ones, across the boundaries of even blocks and of odd ones. */
+export const PART_EVEN = 0;
+export const PART_ODD = 1;
+export const PART_EVEN_SEAM = 2;
+export const PART_ODD_SEAM = 3;
+export const PARTS = 4;
+
+/** Where memory for lists comes from: plain, or shared so that a partner thread sees the same lists. */
+export type Memory = 'local' | 'shared';
+
+/** A typed array of `length` elements, on a SharedArrayBuffer when `memory` is `shared`. */
+export function allocate<T>(Type: { new (buffer: ArrayBufferLike): T; BYTES_PER_ELEMENT: number }, length: number, memory: Memory): T {
+  const bytes = Type.BYTES_PER_ELEMENT * length;
+  return new Type(memory === 'shared' ? new SharedArrayBuffer(bytes) : new ArrayBuffer(bytes));
+}
+
 /**
  * The length constraints, colour by colour as the topology orders them. Within a colour no two edges share a vertex,
- * so their order within the colour does not change the result: each colour lists first the edges no muscle holds
- * (a plain length projection), then the held ones (which also bulge when compressed), so that neither loop branches
- * on the muscle weight.
+ * so their order within the colour does not change the result: each colour lists first the edges no muscle holds (a
+ * plain length projection), then the held ones (which also bulge when compressed), so that neither loop branches on
+ * the muscle weight.
  *
  * Each listed edge is one record of three 32-bit words, so that the loop reads one stream: listed edge e has its ends'
  * xyz offsets (3 * vertex) at `ends[3e]` and `ends[3e + 1]`, and its rest length at `rest[3e + 2]` (two views of one
@@ -28,11 +53,59 @@ export interface EdgeLists {
 }
 
 /** Edge lists with room for every edge of the topology. */
-export function createEdgeLists(topology: SkinTopology): EdgeLists {
+export function createEdgeLists(topology: SkinTopology, memory: Memory = 'local'): EdgeLists {
   const m = topology.restLength.length;
   const colours = topology.colourStart.length - 1;
-  const buffer = new ArrayBuffer(12 * m);
-  return { ends: new Uint32Array(buffer), rest: new Float32Array(buffer), held: new Float32Array(3 * m), runs: new Uint32Array(2 * colours + 1) };
+  const records = allocate(Uint32Array, 3 * m, memory);
+  return { ends: records, rest: new Float32Array(records.buffer), held: allocate(Float32Array, 3 * m, memory), runs: allocate(Uint32Array, 2 * colours + 1, memory) };
+}
+
+/**
+ * Splits the vertices into blocks of consecutive vertices (returns each vertex's block) such that every constraint
+ * lies within one block or across the boundary of two neighbouring ones, and no vertex is reached from two boundaries.
+ * A vertex and its neighbours contain every edge and triangle at the vertex, so it suffices for these rings. Blocks
+ * are made as short as that allows: about twice the vertex order's local bandwidth.
+ */
+export function vertexBlocks(topology: SkinTopology): Uint32Array {
+  const n = topology.vertexCount;
+  const start = topology.neighbourStart;
+  const nb = topology.neighbours;
+  // reach[b]: the highest vertex of a ring that starts below b; back[b]: the lowest vertex of a ring that ends at b or
+  // above. A ring across boundary b lies within back[b]..reach[b].
+  const reach = new Int32Array(n + 1).fill(-1);
+  const back = new Int32Array(n + 1).fill(n);
+  for (let v = 0; v < n; v++) {
+    let lo = v;
+    let hi = v;
+    for (let j = start[v]; j < start[v + 1]; j++) {
+      if (nb[j] < lo) lo = nb[j];
+      if (nb[j] > hi) hi = nb[j];
+    }
+    if (hi > reach[lo + 1]) reach[lo + 1] = hi;
+    if (lo < back[hi]) back[hi] = lo;
+  }
+  for (let b = 1; b <= n; b++) if (reach[b - 1] > reach[b]) reach[b] = reach[b - 1];
+  for (let b = n - 1; b >= 0; b--) if (back[b + 1] < back[b]) back[b] = back[b + 1];
+  const block = new Uint32Array(n);
+  let boundary = 0;
+  let index = 0;
+  for (let b = 1; b < n; b++) {
+    // The next boundary: the first whose rings all lie above the rings across the last one.
+    if (back[b] > reach[boundary]) {
+      boundary = b;
+      index++;
+    }
+    block[b] = index;
+  }
+  return block;
+}
+
+/** The part of a constraint whose smallest and largest vertex are `lo` and `hi` (see vertexBlocks). */
+function partOf(lo: number, hi: number, blocks: Uint32Array | null): number {
+  if (blocks === null) return PART_EVEN;
+  const a = blocks[lo];
+  const b = blocks[hi];
+  return a === b ? (a & 1 ? PART_ODD : PART_EVEN) : b & 1 ? PART_ODD_SEAM : PART_EVEN_SEAM;
 }
 
 /**
@@ -70,47 +143,71 @@ export function fillEdgeLists(into: EdgeLists, topology: SkinTopology, weights: 
   return o;
 }
 
-/** Triangles for the orientation constraints, in mesh order. */
+/** Triangles for the orientation constraints, part by part, in mesh order within a part. */
 export interface TriangleLists {
   /** 3 * each corner's vertex, three per listed triangle. */
   corners: Uint32Array;
   /** Per listed triangle: its rest unit normal and twice its least projected area (see `triangleFrames`). */
   frames: Float32Array;
+  /** Part p is listed triangles `parts[p]..parts[p+1]`. */
+  parts: Uint32Array;
+  /** Scratch: the next free place of each part while filling. */
+  readonly next: Uint32Array;
 }
 
-export function createTriangleLists(topology: SkinTopology): TriangleLists {
+export function createTriangleLists(topology: SkinTopology, memory: Memory = 'local'): TriangleLists {
   const count = topology.triangles.length / 3;
-  return { corners: new Uint32Array(3 * count), frames: new Float32Array(4 * count) };
+  return {
+    corners: allocate(Uint32Array, 3 * count, memory),
+    frames: allocate(Float32Array, 4 * count, memory),
+    parts: allocate(Uint32Array, PARTS + 1, memory),
+    next: new Uint32Array(PARTS),
+  };
 }
 
 /**
- * Lists the triangles with at least one corner `included` (all when null), in mesh order; returns how many. With
- * `places`, writes each triangle's place in the list there (-1 if not listed).
+ * Lists the triangles with at least one corner `included` (all when null), part by part (`blocks` from vertexBlocks;
+ * null puts all in the first part), in mesh order within a part; writes each triangle's place in the list into `places` (-1 if not
+ * listed) and returns how many are listed.
  */
-export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, frames: Float32Array, included: Uint8Array | null, places?: Int32Array): number {
+export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, frames: Float32Array, included: Uint8Array | null, places: Int32Array, blocks: Uint32Array | null): number {
   const count = triangles.length / 3;
   const C = into.corners;
   const F = into.frames;
-  let o = 0;
+  const parts = into.parts;
+  parts.fill(0);
+  // A counting sort, as for the edges; `places` holds each triangle's part in between.
   for (let t = 0; t < count; t++) {
     const a = triangles[3 * t];
     const b = triangles[3 * t + 1];
     const c = triangles[3 * t + 2];
     if (included !== null && included[a] === 0 && included[b] === 0 && included[c] === 0) {
-      if (places) places[t] = -1;
+      places[t] = -1;
       continue;
     }
-    if (places) places[t] = o;
-    C[3 * o] = 3 * a;
-    C[3 * o + 1] = 3 * b;
-    C[3 * o + 2] = 3 * c;
+    const lo = a < b ? (a < c ? a : c) : b < c ? b : c;
+    const hi = a > b ? (a > c ? a : c) : b > c ? b : c;
+    const p = partOf(lo, hi, blocks);
+    places[t] = p;
+    parts[p + 1]++;
+  }
+  for (let p = 0; p < PARTS; p++) parts[p + 1] += parts[p];
+  const next = into.next;
+  next.set(parts.subarray(0, PARTS));
+  for (let t = 0; t < count; t++) {
+    const p = places[t];
+    if (p < 0) continue;
+    const o = next[p]++;
+    places[t] = o;
+    C[3 * o] = 3 * triangles[3 * t];
+    C[3 * o + 1] = 3 * triangles[3 * t + 1];
+    C[3 * o + 2] = 3 * triangles[3 * t + 2];
     F[4 * o] = frames[4 * t];
     F[4 * o + 1] = frames[4 * t + 1];
     F[4 * o + 2] = frames[4 * t + 2];
     F[4 * o + 3] = frames[4 * t + 3];
-    o++;
   }
-  return o;
+  return parts[PARTS];
 }
 
 /** The topology's neighbour lists with each neighbour stored as 3 * its vertex (same CSR starts). */

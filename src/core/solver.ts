@@ -6,7 +6,25 @@
  */
 import { ACTIVE_GROW, ActiveRegion } from './active-region';
 import { colliderDistance, slabSide, type Collider } from './colliders';
-import { createEdgeLists, createTriangleLists, fillEdgeLists, fillTriangleLists, neighbourOffsets, type EdgeLists, type TriangleLists } from './constraint-lists';
+import {
+  allocate,
+  createEdgeLists,
+  createTriangleLists,
+  fillEdgeLists,
+  fillTriangleLists,
+  neighbourOffsets,
+  PART_EVEN,
+  PART_EVEN_SEAM,
+  PART_ODD,
+  PART_ODD_SEAM,
+  vertexBlocks,
+  type EdgeLists,
+  type Memory,
+  type TriangleLists,
+} from './constraint-lists';
+import { JOB_LENGTHS, JOB_ORIENTATION } from './partner-board';
+import type { PartnerLink } from './partner-link';
+import { projectLengths, projectOrientationPart, type PartArrays } from './solver-kernels';
 import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
@@ -82,15 +100,20 @@ export interface SolverBuffers {
   normalWeights: Float32Array;
 }
 
-/** Allocates the solver's buffers for a topology, positions at rest. */
-export function createSolverBuffers(topology: SkinTopology): SolverBuffers {
+/** Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). */
+export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local'): SolverBuffers {
   const n = topology.vertexCount;
+  const copy = (from: Float32Array): Float32Array => {
+    const to = allocate(Float32Array, from.length, memory);
+    to.set(from);
+    return to;
+  };
   return {
-    positions: Float32Array.from(topology.rest),
-    normals: Float32Array.from(topology.restNormals),
-    targets: Float32Array.from(topology.rest),
-    weights: new Float32Array(n),
-    normalWeights: new Float32Array(n),
+    positions: copy(topology.rest),
+    normals: copy(topology.restNormals),
+    targets: copy(topology.rest),
+    weights: allocate(Float32Array, n, memory),
+    normalWeights: allocate(Float32Array, n, memory),
   };
 }
 
@@ -132,19 +155,19 @@ export class SkinSolver {
   private readonly bendStiffness: Float32Array;
   /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
   private readonly triangleFrames: Float32Array;
-  /** The lists the per-frame loops walk (see constraint-lists.ts). */
+  /** The lists the per-frame loops walk (see constraint-lists.ts), part by part. */
   private readonly edgeLists: EdgeLists;
   private readonly triangleLists: TriangleLists;
-  private triangleCount = 0;
-  /**
-   * For orientation passes that follow one another (see projectOrientation): 1 for each listed triangle with a corner
-   * moved since it was last checked; and each triangle's place in the list (-1 if not listed).
-   */
-  private readonly unchecked: Uint8Array;
-  private readonly listedTriangle: Int32Array;
+  /** What the heaviest loops read and write (see solver-kernels.ts); shared with the partner thread, if any. */
+  private readonly parts: PartArrays;
+  private partner: PartnerLink | null = null;
+  private readonly memory: Memory;
+  /** Each vertex's block, which sets the triangles' parts (see constraint-lists.ts). */
+  private readonly blocks: Uint32Array;
   /** Triangles with a corner whose normal is computed (in or next to the active region). */
   private readonly shadedTriangles: TriangleLists;
   private shadedTriangleCount = 0;
+  private readonly shadedPlaces: Int32Array;
   /** The topology's neighbours as xyz offsets (3 * vertex). */
   private readonly neighbourOffsets: Uint32Array;
   /** The skin a frame solves (see active-region.ts); the lists above hold its constraints as of `listedRevision`. */
@@ -184,11 +207,13 @@ export class SkinSolver {
    */
   constructor(
     topology: SkinTopology,
-    options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[]; activeRegion?: boolean } = {},
+    options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[]; activeRegion?: boolean; memory?: Memory } = {},
   ) {
     this.topology = topology;
     const n = topology.vertexCount;
-    this.buffers = options.buffers ?? createSolverBuffers(topology);
+    const memory = (this.memory = options.memory ?? 'local');
+    this.buffers = options.buffers ?? createSolverBuffers(topology, memory);
+    if (memory === 'shared' && !(this.buffers.positions.buffer instanceof SharedArrayBuffer)) throw new Error('a solver on shared memory needs its positions on shared memory');
     // Outside the active region `previous` is only written when the region changes, and stays at rest.
     this.previous = Float32Array.from(topology.rest);
     this.lastStep = new Float32Array(3 * n);
@@ -201,12 +226,26 @@ export class SkinSolver {
     this.seed = new Float32Array(n);
     for (let v = 0; v < n; v++) this.seed[v] = hash01(v) - 0.25;
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
-    this.edgeLists = createEdgeLists(topology);
-    this.triangleLists = createTriangleLists(topology);
+    this.edgeLists = createEdgeLists(topology, memory);
+    this.triangleLists = createTriangleLists(topology, memory);
     this.shadedTriangles = createTriangleLists(topology);
-    this.unchecked = new Uint8Array(topology.triangles.length / 3);
-    this.listedTriangle = new Int32Array(topology.triangles.length / 3);
+    this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
     this.neighbourOffsets = neighbourOffsets(topology);
+    this.blocks = vertexBlocks(topology);
+    const triangleCount = topology.triangles.length / 3;
+    this.parts = {
+      positions: this.buffers.positions,
+      rest: topology.rest,
+      restNormals: topology.restNormals,
+      neighbourStart: topology.neighbourStart,
+      neighbourOffsets: this.neighbourOffsets,
+      vertexTriangleStart: topology.vertexTriangleStart,
+      vertexTriangles: topology.vertexTriangles,
+      edges: this.edgeLists,
+      triangles: this.triangleLists,
+      unchecked: allocate(Uint8Array, triangleCount, memory),
+      listedTriangle: allocate(Int32Array, triangleCount, memory),
+    };
     this.region = new ActiveRegion(topology, options.activeRegion ?? true);
     this.colliders = options.colliders ?? [];
     const c = this.collisionCandidates(this.colliders);
@@ -305,6 +344,29 @@ export class SkinSolver {
   /** Edges a length pass projects: those touching the active region. */
   get activeEdgeCount(): number {
     return this.edgeLists.runs[this.edgeLists.runs.length - 1];
+  }
+
+  /** Threads that solve: 2 with a partner attached, else 1. */
+  get threads(): number {
+    return this.partner ? 2 : 1;
+  }
+
+  /**
+   * The arrays a partner thread projects its part of the constraints on (see SolverPartner); post them to it. Only a
+   * solver on shared memory has them.
+   */
+  partArrays(): PartArrays {
+    if (this.memory !== 'shared') throw new Error('only a solver on shared memory can have a partner thread');
+    return { ...this.parts };
+  }
+
+  /**
+   * Hands half of each length and orientation pass to a partner thread from the next pass on (null:
+   * this thread solves alone again). The shape is the same either way: the parts share no vertex.
+   */
+  attachPartner(link: PartnerLink | null): void {
+    if (link && this.memory !== 'shared') throw new Error('only a solver on shared memory can have a partner thread');
+    this.partner = link;
   }
 
   /** True once the shape has converged for the current inputs; step() then does nothing until an input changes. */
@@ -414,9 +476,10 @@ export class SkinSolver {
   /** Rebuilds the constraint lists for the current region and muscle weights. */
   private refreshLists(): void {
     const included = this.region.enabled ? this.region.inside : null;
+    const r = this.region;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
-    this.triangleCount = fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, this.listedTriangle);
-    if (this.region.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded);
+    fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, this.parts.listedTriangle, this.blocks);
+    if (r.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, r.shaded, this.shadedPlaces, null);
     this.listedRevision = this.region.revision;
     if (this.region.enabled) {
       // Skin outside the region is at rest and does not move: its last step is zero and its previous place rest, so
@@ -602,108 +665,39 @@ export class SkinSolver {
     }
   }
 
-  /**
-   * Length constraints (thesis 4.3.3): restore each edge to its rest length, half the correction to each end. (As
-   * printed, the correction's sign moves the ends the wrong way.) Edges go colour by colour, so within a colour no
-   * two projections touch the same vertex and their order does not matter: the free edges go first, then those under
-   * a muscle, where a compressed edge also nudges its ends out along their rest normals.
-   */
+  /** Length constraints (thesis 4.3.3; see projectLengths in solver-kernels.ts), with the partner if there is one. */
   private projectLengths(): void {
-    const x = this.buffers.positions;
-    const lists = this.edgeLists;
-    const runs = lists.runs;
     const { lengthStiffness, bulge } = this.params;
-    const N = this.topology.restNormals;
-    for (let c = 0; 2 * c + 2 < runs.length; c++) {
-      projectFreeEdges(x, lists.ends, lists.rest, lengthStiffness, runs[2 * c], runs[2 * c + 1]);
-      projectHeldEdges(x, lists, N, lengthStiffness, bulge, runs[2 * c + 1], runs[2 * c + 2]);
-    }
+    const partner = this.partner;
+    if (!partner) return projectLengths(this.parts, lengthStiffness, bulge, null, 0);
+    partner.start(JOB_LENGTHS, 0, lengthStiffness, bulge);
+    projectLengths(this.parts, lengthStiffness, bulge, partner.board.words, 0);
+    partner.finish();
   }
 
   /**
-   * Orientation: each triangle's area projected on its rest normal stays above a fraction of its rest area, so
-   * compressed skin folds (the triangle tilts) instead of crumpling flat (the triangle turns over within the
-   * surface), which no length constraint can tell from the right shape. The projected area is linear in each corner,
-   * so one projection restores the bound exactly; the corrections lie in the rest tangent plane.
-   *
-   * `again` says that nothing but the previous orientation pass moved the skin since: a triangle found within its
-   * bound then, none of whose corners moved since, still is and is skipped, with the same result as checking it.
+   * Orientation constraints (see projectOrientationPart), part by part as the lengths; returns whether a triangle was
+   * more than a hair under its bound.
    */
   private projectOrientation(again = false): boolean {
-    const x = this.buffers.positions;
-    const T = this.triangleLists.corners;
-    const F = this.triangleLists.frames;
-    const count = this.triangleCount;
-    const unchecked = this.unchecked;
-    let corrected = false;
-    for (let t = 0; t < count; t++) {
-      if (again && unchecked[t] === 0) continue;
-      unchecked[t] = 0;
-      const ia = T[3 * t];
-      const ib = T[3 * t + 1];
-      const ic = T[3 * t + 2];
-      const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
-      const ux = x[ib] - ax;
-      const uy = x[ib + 1] - ay;
-      const uz = x[ib + 2] - az;
-      const vx = x[ic] - ax;
-      const vy = x[ic + 1] - ay;
-      const vz = x[ic + 2] - az;
-      const nx = F[4 * t];
-      const ny = F[4 * t + 1];
-      const nz = F[4 * t + 2];
-      const least = F[4 * t + 3];
-      // Twice the area along n: n . (u x v).
-      const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - least;
-      if (C >= 0) continue;
-      // A triangle a hair under its bound (the relaxation's blend) is corrected but does not ask for another pass.
-      if (C < -0.01 * least) corrected = true;
-      // Gradients: b gets v x n, c gets n x u, a gets minus their sum, (u - v) x n.
-      const gbx = vy * nz - vz * ny;
-      const gby = vz * nx - vx * nz;
-      const gbz = vx * ny - vy * nx;
-      const gcx = ny * uz - nz * uy;
-      const gcy = nz * ux - nx * uz;
-      const gcz = nx * uy - ny * ux;
-      const gax = -gbx - gcx;
-      const gay = -gby - gcy;
-      const gaz = -gbz - gcz;
-      const norm = gax * gax + gay * gay + gaz * gaz + gbx * gbx + gby * gby + gbz * gbz + gcx * gcx + gcy * gcy + gcz * gcz;
-      if (norm === 0) {
-        unchecked[t] = 1; // not within its bound: check it again next time
-        continue;
-      }
-      this.moved(ia);
-      this.moved(ib);
-      this.moved(ic);
-      const lambda = -C / norm;
-      x[ia] += lambda * gax;
-      x[ia + 1] += lambda * gay;
-      x[ia + 2] += lambda * gaz;
-      x[ib] += lambda * gbx;
-      x[ib + 1] += lambda * gby;
-      x[ib + 2] += lambda * gbz;
-      x[ic] += lambda * gcx;
-      x[ic + 1] += lambda * gcy;
-      x[ic + 2] += lambda * gcz;
-    }
-    return corrected;
+    const blocks = this.orientationPair(PART_EVEN, PART_ODD, again);
+    return this.orientationPair(PART_EVEN_SEAM, PART_ODD_SEAM, again) || blocks;
   }
 
-  /** Marks the listed triangles of the vertex at xyz offset `i` for the next orientation check (see above). */
-  private moved(i: number): void {
-    const v = i / 3;
-    const { vertexTriangleStart: start, vertexTriangles } = this.topology;
-    for (let j = start[v]; j < start[v + 1]; j++) {
-      const t = this.listedTriangle[vertexTriangles[j]];
-      if (t >= 0) this.unchecked[t] = 1;
-    }
+  private orientationPair(mine: number, theirs: number, again: boolean): boolean {
+    const partner = this.partner;
+    partner?.start(JOB_ORIENTATION, theirs, again ? 1 : 0);
+    const corrected = projectOrientationPart(this.parts, mine, again);
+    if (partner) return partner.finish() !== 0 || corrected;
+    return projectOrientationPart(this.parts, theirs, again) || corrected;
   }
 
   /**
    * Bending: keeps the Laplacian of the normal displacement near zero (the rest curvature), scaled per vertex by the
    * local edge spacing so that its balance against the position constraints gives folds of `wrinkleSpacing` at
-   * every mesh resolution (thesis 3.1.2 wishes for such a skin parameter).
+   * every mesh resolution (thesis 3.1.2 wishes for such a skin parameter). One sweep in vertex order, on this thread:
+   * the order sets which folds form (a sweep colour by colour, which two threads could share, makes finer folds on
+   * the finer meshes), so it stays as the wrinkle spacing was calibrated with.
    */
   private projectBending(): void {
     if (this.params.wrinkleSpacing <= 0) return;
@@ -810,70 +804,6 @@ export class SkinSolver {
       start[ci + 1] = vertices.length;
     }
     return { start, vertices: Uint32Array.from(vertices), clearance: Float32Array.from(clearance), side: Int8Array.from(side) };
-  }
-}
-
-/**
- * Length projections of the edges `e0..e1` of an edge list (see SkinSolver.projectLengths and EdgeLists) that no
- * muscle holds: each end moves half the length error times `stiffness` along the edge.
- */
-function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
-  const s = 0.5 * stiffness;
-  for (let j = 3 * e0; j < 3 * e1; j += 3) {
-    const ia = ends[j];
-    const ib = ends[j + 1];
-    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
-    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
-    const dx = bx - ax;
-    const dy = by - ay;
-    const dz = bz - az;
-    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-    const k = len > 0 ? (s * (len - rest[j + 2])) / len : 0;
-    x[ia] = ax + k * dx;
-    x[ia + 1] = ay + k * dy;
-    x[ia + 2] = az + k * dz;
-    x[ib] = bx - k * dx;
-    x[ib + 1] = by - k * dy;
-    x[ib + 2] = bz - k * dz;
-  }
-}
-
-/**
- * Length projections of held edges `e0..e1`: as projectFreeEdges, and a compressed edge nudges its ends out along
- * their rest normals `N` by `bulge` times its muscle weight, times each end's seed.
- */
-function projectHeldEdges(x: Float32Array, lists: EdgeLists, N: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
-  const { ends, rest, held } = lists;
-  const s = 0.5 * stiffness;
-  for (let e = e0; e < e1; e++) {
-    const ia = ends[3 * e];
-    const ib = ends[3 * e + 1];
-    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
-    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
-    const dx = bx - ax;
-    const dy = by - ay;
-    const dz = bz - az;
-    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-    if (len === 0) continue;
-    const error = len - rest[3 * e + 2];
-    const k = (s * error) / len;
-    x[ia] = ax + k * dx;
-    x[ia + 1] = ay + k * dy;
-    x[ia + 2] = az + k * dz;
-    x[ib] = bx - k * dx;
-    x[ib + 1] = by - k * dy;
-    x[ib + 2] = bz - k * dz;
-    if (error < 0) {
-      const push = -bulge * held[3 * e] * error;
-      const pa = push * held[3 * e + 1];
-      const pb = push * held[3 * e + 2];
-      x[ia] += pa * N[ia];
-      x[ia + 1] += pa * N[ia + 1];
-      x[ia + 2] += pa * N[ia + 2];
-      x[ib] += pb * N[ib];
-      x[ib + 1] += pb * N[ib + 1];
-      x[ib + 2] += pb * N[ib + 2];
-    }
   }
 }
 

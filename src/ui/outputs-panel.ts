@@ -30,15 +30,16 @@ interface Outputs {
   bending: number;
   collision: number;
   mode: string;
+  workers: number;
 }
 
 /**
  * The Outputs folder: frames per second (counted from rendered frames), the solver's ms per frame, the skin's size,
- * its constraints by type and the solver mode. Read-only, refreshed on a timer: the per-frame hook only counts.
+ * its constraints by type, the solver mode and its threads. Read-only, refreshed on a timer: the per-frame hook only counts.
  */
 export class OutputsPanel {
   readonly folder: GUI;
-  private readonly outputs: Outputs = { fps: 0, solverMs: 0, vertices: 0, edges: 0, position: 0, length: 0, muscle: 0, bending: 0, collision: 0, mode: '' };
+  private readonly outputs: Outputs = { fps: 0, solverMs: 0, vertices: 0, edges: 0, position: 0, length: 0, muscle: 0, bending: 0, collision: 0, mode: '', workers: 0 };
   private readonly controllers: Controller[] = [];
   private frames = 0;
   private since = performance.now();
@@ -64,6 +65,7 @@ export class OutputsPanel {
     show('bending', 'bending constraints', 0);
     show('collision', 'collision constraints', 0);
     show('mode', 'worker mode');
+    show('workers', 'solver threads', 0);
     this.stopFrames = frames.onFrame(this.countFrame);
     this.timer = setInterval(() => this.refresh(), o.refreshMs);
     this.refresh();
@@ -102,6 +104,7 @@ export class OutputsPanel {
     out.bending = s.constraints.bending;
     out.collision = s.constraints.collision;
     out.mode = s.mode;
+    out.workers = s.workers;
     for (const c of this.controllers) c.updateDisplay();
   }
 }

@@ -125,6 +125,7 @@ const SLOT_APPLIED_INPUT = 2;
 const SLOT_CONSTRAINTS = 3; // five words, in CONSTRAINT_INDEX order
 const SLOT_SOLVE_MS = 8;
 const SLOT_BOX = 9; // min xyz, max xyz
+const SLOT_WORKERS = 15;
 const SLOT_HEADER_WORDS = 16;
 
 /** Word offsets of a slot's arrays for a skin of `renderCount` render and `vertexCount` simulation vertices. */
@@ -187,6 +188,8 @@ export interface FrameHeader {
   sleeping: boolean;
   appliedInput: number;
   solveMs: number;
+  /** Threads that solved the frame (1, or 2 with a partner worker). */
+  workers: number;
 }
 
 /** Where each constraint count sits among a slot's constraint words (and in a host's count array). */
@@ -199,6 +202,7 @@ export function writeFrameHeader(slot: FrameSlot, h: FrameHeader, constraints: I
   slot.words[SLOT_APPLIED_INPUT] = h.appliedInput;
   slot.words.set(constraints, SLOT_CONSTRAINTS);
   slot.values[SLOT_SOLVE_MS] = h.solveMs;
+  slot.values[SLOT_WORKERS] = h.workers;
 }
 
 /** Frames the solver had solved when it wrote this slot. */
@@ -207,6 +211,7 @@ export const slotSleeping = (slot: FrameSlot): boolean => slot.words[SLOT_SLEEPI
 /** The input sequence number of the last input batch applied before this frame was solved. */
 export const slotAppliedInput = (slot: FrameSlot): number => slot.words[SLOT_APPLIED_INPUT];
 export const slotSolveMs = (slot: FrameSlot): number => slot.values[SLOT_SOLVE_MS];
+export const slotWorkers = (slot: FrameSlot): number => slot.values[SLOT_WORKERS];
 
 /** The constraint counts of this frame (a new object: for stats, not for per-frame code). */
 export function slotConstraints(slot: FrameSlot): ConstraintCounts {

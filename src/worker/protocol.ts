@@ -16,6 +16,8 @@ export interface InitMessage {
   colliders: Collider[];
   parameters: SkinParameters;
   muscles: Muscle[];
+  /** Threads that solve: 2 adds a partner worker (`shared` mode only). */
+  workers: 1 | 2;
 }
 
 /** Worker to main, once the topology is built and the first frame (the rest shape) is written. */

@@ -14,6 +14,7 @@ import {
   slotLayout,
   slotSleeping,
   slotSolveMs,
+  slotWorkers,
   type ControlViews,
 } from './layout';
 import { MainBackend } from './main-backend';
@@ -34,6 +35,12 @@ export interface SkinSimulationOptions {
   muscles?: Muscle[];
   /** Defaults to `shared` on cross-origin isolated pages and `transfer` elsewhere. */
   mode?: SolverMode;
+  /**
+   * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of each heavy pass (same shape, less
+   * time per frame where a core is free for it). `auto` (the default) takes 2 on machines with at least 4 cores.
+   * Other modes solve on one thread.
+   */
+  workers?: 1 | 2 | 'auto';
 }
 
 /** The simulation's state, as of the newest frame. */
@@ -47,7 +54,12 @@ export interface SkinSimulationStats {
   sleeping: boolean;
   /** Frames solved so far. */
   frames: number;
+  /** Threads that solved the newest frame (2 once a partner worker helps). */
+  workers: number;
 }
+
+/** Cores a machine needs before `auto` adds a partner worker: one each for the page, the solver and its partner. */
+export const PARTNER_MIN_CORES = 4;
 
 /** Solve time the render loop gives the `main` mode solver per frame, in ms. */
 export const MAIN_THREAD_BUDGET_MS = 8;
@@ -95,9 +107,12 @@ export class SkinSimulation {
       const backend = new MainBackend(host, control, slotLayout(renderCount, t.vertexCount));
       return new SkinSimulation(backend, control, t.rest.slice(), t.triangles.slice(), t.restLength.length, renderCount);
     }
+    const workers = options.workers ?? 'auto';
+    const cores = typeof navigator === 'undefined' ? 1 : navigator.hardwareConcurrency || 1;
     const { connection, ready } = await WorkerConnection.start({
       type: 'init',
       mode,
+      workers: mode === 'shared' && (workers === 2 || (workers === 'auto' && cores >= PARTNER_MIN_CORES)) ? 2 : 1,
       renderPositions: options.renderPositions,
       indices: options.indices,
       colliders,
@@ -224,6 +239,7 @@ export class SkinSimulation {
       solveMs: slotSolveMs(slot),
       sleeping: slotSleeping(slot),
       frames: slotFrames(slot),
+      workers: slotWorkers(slot),
     };
   }
 

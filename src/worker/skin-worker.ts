@@ -3,6 +3,8 @@
  * inputs while it sleeps. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
+import { createBoard } from '../core/partner-board';
+import { PartnerLink } from '../core/partner-link';
 import { ControlReader } from './control-reader';
 import { controlLayout, controlViews, initControl, slotLayout } from './layout';
 import type { FromWorker, InitMessage, ToWorker } from './protocol';
@@ -40,7 +42,8 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
 });
 
 function init(m: InitMessage): void {
-  const h = new SolverHost(m);
+  const h = new SolverHost({ ...m, memory: m.workers === 2 ? 'shared' : 'local' });
+  if (m.workers === 2) startPartner(h);
   const topology = h.topology;
   const rest = topology.rest.slice();
   const triangles = topology.triangles.slice();
@@ -62,6 +65,22 @@ function init(m: InitMessage): void {
     post({ ...base, frame }, [rest.buffer, triangles.buffer, frame]);
   }
   schedule();
+}
+
+/**
+ * Starts the partner worker on the solver's shared arrays; once it runs, the solver hands it half of each heavy pass
+ * (the shape stays the same). Should it fail to start, the solver goes on alone.
+ */
+function startPartner(h: SolverHost): void {
+  const board = createBoard();
+  const partner = new Worker(new URL('./partner-worker.ts', import.meta.url), { type: 'module', name: 'softface skin solver partner' });
+  partner.addEventListener('message', () => h.solver.attachPartner(new PartnerLink(board)), { once: true });
+  partner.addEventListener('error', (event) => {
+    event.preventDefault();
+    h.solver.attachPartner(null);
+    console.warn(`the solver's partner worker failed (${event.message || 'it could not be loaded'}); solving on one worker`);
+  });
+  partner.postMessage({ arrays: h.solver.partArrays(), board: board.words.buffer });
 }
 
 function schedule(): void {

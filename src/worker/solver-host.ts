@@ -2,6 +2,7 @@ import type { Collider } from '../core/colliders';
 import { JawFollower } from '../core/jaw-follower';
 import { MuscleRig } from '../core/muscles';
 import type { Muscle } from '../core/rig-types';
+import type { Memory } from '../core/constraint-lists';
 import { SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
 import { buildTopology, describeTopology, type SkinTopology } from '../core/topology';
 import { CONSTRAINT_INDEX, CONSTRAINT_KINDS, readParameters, writeFrameHeader, writeSlotBounds, type FrameHeader, type FrameSlot } from './layout';
@@ -16,6 +17,8 @@ export interface SolverHostInput {
   muscles: Muscle[];
   /** Solve only the skin that moves (the default; see SkinSolver). */
   activeRegion?: boolean;
+  /** `shared` puts the solver's arrays on shared memory, for a partner thread (see SkinSolver.partArrays). */
+  memory?: Memory;
 }
 
 /** The muscle inputs of a batch: targets (xyz per vertex) and the two weights per vertex. */
@@ -39,7 +42,7 @@ export class SolverHost {
   private readonly rig: MuscleRig | undefined;
   /** Moves the lower teeth's colliders with the jaw muscle; null without a jaw or lower teeth. */
   private readonly jaw: JawFollower | null;
-  private readonly header: FrameHeader = { frames: 0, sleeping: true, appliedInput: 0, solveMs: 0 };
+  private readonly header: FrameHeader = { frames: 0, sleeping: true, appliedInput: 0, solveMs: 0, workers: 1 };
   /** Constraint counts change only when inputs do, so they are counted per input batch, not per frame. */
   private readonly constraints = new Int32Array(CONSTRAINT_KINDS.length);
   private readonly parameterScratch: SkinParameters = { ...SKIN_DEFAULTS };
@@ -47,7 +50,7 @@ export class SolverHost {
   constructor(input: SolverHostInput) {
     this.topology = buildTopology(input.renderPositions, input.indices);
     console.info(describeTopology(this.topology));
-    this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders, activeRegion: input.activeRegion });
+    this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders, activeRegion: input.activeRegion, memory: input.memory });
     this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
     this.jaw = JawFollower.create(input.muscles, input.colliders);
     // Start from the skin's own equilibrium (the float32 rest lengths move it by a hair), so that every mode starts
@@ -104,6 +107,7 @@ export class SolverHost {
     writeSlotBounds(slot, positions);
     this.header.frames = this.solver.frames;
     this.header.sleeping = this.solver.sleeping;
+    this.header.workers = this.solver.threads;
     writeFrameHeader(slot, this.header, this.constraints);
   }
 

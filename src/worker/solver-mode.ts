@@ -24,3 +24,9 @@ export function chooseSolverMode(search: string, isolated: boolean): SolverModeC
   }
   return { mode: requested as SolverMode };
 }
+
+/** `?workers=1|2` asks for one solver thread or two (`shared` mode only); anything else leaves the choice to the machine. */
+export function chooseWorkers(search: string): 1 | 2 | 'auto' {
+  const requested = new URLSearchParams(search).get('workers');
+  return requested === '1' ? 1 : requested === '2' ? 2 : 'auto';
+}

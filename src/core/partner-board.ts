@@ -1,0 +1,68 @@
+/**
+ * The board two solver threads share (on a SharedArrayBuffer): the leader posts a job, both threads project their
+ * part of the lists (see constraint-lists.ts), and the leader waits until the partner is done (PartnerLink on the
+ * leader's side, SolverPartner on the partner's). A job is a few hundred microseconds of work, so each side spins on
+ * the board for a while before it sleeps on it.
+ */
+
+/**
+ * Int32 words: the number of the job posted last (leader), of the job finished last (partner), the job, the part of
+ * the lists it is for, its result; then the barrier's count of arrived threads and its generation (see `meet`).
+ */
+export const BOARD_SEQUENCE = 0;
+export const BOARD_DONE = 1;
+export const BOARD_JOB = 2;
+export const BOARD_PART = 3;
+export const BOARD_RESULT = 4;
+const BARRIER_COUNT = 5;
+const BARRIER_GENERATION = 6;
+const BOARD_WORDS = 8;
+/** Float64 arguments after the words. */
+export const BOARD_ARGUMENTS = 2;
+
+/**
+ * Jobs: a length pass (each thread projects half of each colour, and they meet after each colour), a part of the
+ * orientation constraints; or leave the job loop.
+ */
+export const JOB_LENGTHS = 1;
+export const JOB_ORIENTATION = 2;
+export const JOB_STOP = 3;
+
+/** Board checks before sleeping: about 20 to 50 microseconds of spinning, longer than a part's projection. */
+const SPIN_LIMIT = 2000;
+
+/** The board's two views. */
+export interface Board {
+  words: Int32Array;
+  args: Float64Array;
+}
+
+/** A new, zeroed board. */
+export function createBoard(): Board {
+  return boardViews(new SharedArrayBuffer(4 * BOARD_WORDS + 8 * BOARD_ARGUMENTS));
+}
+
+/** The views of a board's buffer (as received by the partner thread). */
+export function boardViews(buffer: SharedArrayBuffer): Board {
+  return { words: new Int32Array(buffer, 0, BOARD_WORDS), args: new Float64Array(buffer, 4 * BOARD_WORDS, BOARD_ARGUMENTS) };
+}
+
+/** Returns once `words[index]` is no longer `value`: spins a while, then sleeps until notified. */
+export function waitWhile(words: Int32Array, index: number, value: number): void {
+  for (let spin = 0; Atomics.load(words, index) === value; spin++) {
+    if (spin >= SPIN_LIMIT) Atomics.wait(words, index, value);
+  }
+}
+
+/**
+ * A barrier for the two threads: returns once both have called it. The second to arrive opens it by bumping the
+ * generation, which the first waits on.
+ */
+export function meet(words: Int32Array): void {
+  const generation = Atomics.load(words, BARRIER_GENERATION);
+  if (Atomics.add(words, BARRIER_COUNT, 1) === 1) {
+    Atomics.store(words, BARRIER_COUNT, 0);
+    Atomics.add(words, BARRIER_GENERATION, 1);
+    Atomics.notify(words, BARRIER_GENERATION);
+  } else waitWhile(words, BARRIER_GENERATION, generation);
+}

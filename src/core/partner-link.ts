@@ -1,0 +1,32 @@
+import { BOARD_DONE, BOARD_JOB, BOARD_PART, BOARD_RESULT, BOARD_SEQUENCE, JOB_STOP, waitWhile, type Board } from './partner-board';
+
+/** The leader's side of the board (see partner-board.ts): posts a job to the partner thread and waits for its end. */
+export class PartnerLink {
+  private sequence = 0;
+
+  constructor(readonly board: Board) {}
+
+  /** Posts a job on one part of the lists, with up to two arguments; the partner starts at once. */
+  start(job: number, part = 0, a = 0, b = 0): void {
+    const { words, args } = this.board;
+    args[0] = a;
+    args[1] = b;
+    Atomics.store(words, BOARD_JOB, job);
+    Atomics.store(words, BOARD_PART, part);
+    // The sequence number's store publishes the job and its arguments.
+    Atomics.store(words, BOARD_SEQUENCE, ++this.sequence);
+    Atomics.notify(words, BOARD_SEQUENCE);
+  }
+
+  /** Waits until the posted job is done and returns its result. */
+  finish(): number {
+    const words = this.board.words;
+    waitWhile(words, BOARD_DONE, this.sequence - 1);
+    return Atomics.load(words, BOARD_RESULT);
+  }
+
+  /** Tells the partner to leave its job loop (it does not wait for that). */
+  stop(): void {
+    this.start(JOB_STOP);
+  }
+}

@@ -1,0 +1,205 @@
+/**
+ * The solver's heaviest loops as functions of one part of the constraint lists (see constraint-lists.ts): the leader
+ * thread's SkinSolver and the partner thread's SolverPartner run the same code on the same shared arrays.
+ */
+import type { EdgeLists, TriangleLists } from './constraint-lists';
+import { meet } from './partner-board';
+
+/** What the part loops read and write: the solver's lists and positions, and the topology's fixed arrays. */
+export interface PartArrays {
+  /** Current positions, xyz per vertex. */
+  positions: Float32Array;
+  rest: Float32Array;
+  restNormals: Float32Array;
+  /** The topology's neighbours (CSR), as xyz offsets (3 * vertex). */
+  neighbourStart: Uint32Array;
+  neighbourOffsets: Uint32Array;
+  /** The topology's triangles of each vertex (CSR). */
+  vertexTriangleStart: Uint32Array;
+  vertexTriangles: Uint32Array;
+  edges: EdgeLists;
+  triangles: TriangleLists;
+  /**
+   * For orientation passes that follow one another (see projectOrientationPart): 1 for each listed triangle with a
+   * corner moved since it was last checked; and each triangle's place in the list (-1 if not listed).
+   */
+  unchecked: Uint8Array;
+  listedTriangle: Int32Array;
+}
+
+/**
+ * Length constraints (thesis 4.3.3): restore each edge to its rest length, half the correction to each end. (As
+ * printed, the correction's sign moves the ends the wrong way.) Edges go colour by colour: the free edges, then those
+ * under a muscle, where a compressed edge also nudges its ends out along their rest normals. With a `board`, two
+ * threads share the pass: this one projects half `half` (0 or 1) of each colour, and the two meet after each colour;
+ * without, this thread projects every edge. Within a colour no two edges share a vertex, so the result is the same.
+ */
+export function projectLengths(a: PartArrays, stiffness: number, bulge: number, board: Int32Array | null, half: number): void {
+  const { ends, rest, runs } = a.edges;
+  const x = a.positions;
+  for (let c = 0; 2 * c + 2 < runs.length; c++) {
+    let f0 = runs[2 * c];
+    let f1 = runs[2 * c + 1];
+    let h0 = f1;
+    let h1 = runs[2 * c + 2];
+    if (board) {
+      const f = (f0 + f1) >> 1;
+      const h = (h0 + h1) >> 1;
+      if (half === 0) (f1 = f), (h1 = h);
+      else (f0 = f), (h0 = h);
+    }
+    projectFreeEdges(x, ends, rest, stiffness, f0, f1);
+    projectHeldEdges(x, a.edges, a.restNormals, stiffness, bulge, h0, h1);
+    if (board) meet(board);
+  }
+}
+
+/**
+ * Length projections of the edges `e0..e1` of an edge list that no muscle holds: each end moves half the length error
+ * times `stiffness` along the edge.
+ */
+function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
+  const s = 0.5 * stiffness;
+  for (let j = 3 * e0; j < 3 * e1; j += 3) {
+    const ia = ends[j];
+    const ib = ends[j + 1];
+    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    const k = len > 0 ? (s * (len - rest[j + 2])) / len : 0;
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+  }
+}
+
+/**
+ * Length projections of held edges `e0..e1`: as projectFreeEdges, and a compressed edge nudges its ends out along
+ * their rest normals `N` by `bulge` times its muscle weight, times each end's seed.
+ */
+function projectHeldEdges(x: Float32Array, lists: EdgeLists, N: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
+  const { ends, rest, held } = lists;
+  const s = 0.5 * stiffness;
+  for (let e = e0; e < e1; e++) {
+    const ia = ends[3 * e];
+    const ib = ends[3 * e + 1];
+    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    if (len === 0) continue;
+    const error = len - rest[3 * e + 2];
+    const k = (s * error) / len;
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+    if (error < 0) {
+      const push = -bulge * held[3 * e] * error;
+      const pa = push * held[3 * e + 1];
+      const pb = push * held[3 * e + 2];
+      x[ia] += pa * N[ia];
+      x[ia + 1] += pa * N[ia + 1];
+      x[ia + 2] += pa * N[ia + 2];
+      x[ib] += pb * N[ib];
+      x[ib + 1] += pb * N[ib + 1];
+      x[ib + 2] += pb * N[ib + 2];
+    }
+  }
+}
+
+/**
+ * Orientation of one part's triangles: each triangle's area projected on its rest normal stays above a fraction of
+ * its rest area, so compressed skin folds (the triangle tilts) instead of crumpling flat (the triangle turns over
+ * within the surface), which no length constraint can tell from the right shape. The projected area is linear in each
+ * corner, so one projection restores the bound exactly; the corrections lie in the rest tangent plane.
+ *
+ * `again` says that nothing but the previous orientation pass moved the skin since: a triangle found within its
+ * bound then, none of whose corners moved since, still is and is skipped, with the same result as checking it.
+ * Returns whether a triangle was more than a hair under its bound.
+ */
+export function projectOrientationPart(a: PartArrays, part: number, again: boolean): boolean {
+  const x = a.positions;
+  const T = a.triangles.corners;
+  const F = a.triangles.frames;
+  const unchecked = a.unchecked;
+  let corrected = false;
+  for (let t = a.triangles.parts[part]; t < a.triangles.parts[part + 1]; t++) {
+    if (again && unchecked[t] === 0) continue;
+    unchecked[t] = 0;
+    const ia = T[3 * t];
+    const ib = T[3 * t + 1];
+    const ic = T[3 * t + 2];
+    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const ux = x[ib] - ax;
+    const uy = x[ib + 1] - ay;
+    const uz = x[ib + 2] - az;
+    const vx = x[ic] - ax;
+    const vy = x[ic + 1] - ay;
+    const vz = x[ic + 2] - az;
+    const nx = F[4 * t];
+    const ny = F[4 * t + 1];
+    const nz = F[4 * t + 2];
+    const least = F[4 * t + 3];
+    // Twice the area along n: n . (u x v).
+    const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - least;
+    if (C >= 0) continue;
+    // A triangle a hair under its bound (the relaxation's blend) is corrected but does not ask for another pass.
+    if (C < -0.01 * least) corrected = true;
+    // Gradients: b gets v x n, c gets n x u, a gets minus their sum, (u - v) x n.
+    const gbx = vy * nz - vz * ny;
+    const gby = vz * nx - vx * nz;
+    const gbz = vx * ny - vy * nx;
+    const gcx = ny * uz - nz * uy;
+    const gcy = nz * ux - nx * uz;
+    const gcz = nx * uy - ny * ux;
+    const gax = -gbx - gcx;
+    const gay = -gby - gcy;
+    const gaz = -gbz - gcz;
+    const norm = gax * gax + gay * gay + gaz * gaz + gbx * gbx + gby * gby + gbz * gbz + gcx * gcx + gcy * gcy + gcz * gcz;
+    if (norm === 0) {
+      unchecked[t] = 1; // not within its bound: check it again next time
+      continue;
+    }
+    markMoved(a, ia);
+    markMoved(a, ib);
+    markMoved(a, ic);
+    const lambda = -C / norm;
+    x[ia] += lambda * gax;
+    x[ia + 1] += lambda * gay;
+    x[ia + 2] += lambda * gaz;
+    x[ib] += lambda * gbx;
+    x[ib + 1] += lambda * gby;
+    x[ib + 2] += lambda * gbz;
+    x[ic] += lambda * gcx;
+    x[ic + 1] += lambda * gcy;
+    x[ic + 2] += lambda * gcz;
+  }
+  return corrected;
+}
+
+/**
+ * Marks the listed triangles of the vertex at xyz offset `i` for the next orientation check. The other thread's part
+ * shares no vertex with this one, but the triangles around a vertex may lie in either seam part: both threads may
+ * mark one, each writing the same 1, and neither checks it before the next pair of parts.
+ */
+function markMoved(a: PartArrays, i: number): void {
+  const v = i / 3;
+  const start = a.vertexTriangleStart;
+  const listed = a.listedTriangle;
+  const triangles = a.vertexTriangles;
+  for (let j = start[v]; j < start[v + 1]; j++) {
+    const t = listed[triangles[j]];
+    if (t >= 0) a.unchecked[t] = 1;
+  }
+}

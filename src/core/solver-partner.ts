@@ -1,0 +1,35 @@
+import { BOARD_DONE, BOARD_JOB, BOARD_PART, BOARD_RESULT, BOARD_SEQUENCE, JOB_LENGTHS, JOB_ORIENTATION, JOB_STOP, waitWhile, type Board } from './partner-board';
+import { projectLengths, projectOrientationPart, type PartArrays } from './solver-kernels';
+
+/**
+ * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
+ * projects the second half of each colour of a length pass, or the odd part of an orientation pass (see
+ * constraint-lists.ts), while the leader projects the rest. The arrays are the leader's own, on shared memory (SkinSolver.partArrays).
+ */
+export class SolverPartner {
+  constructor(
+    private readonly arrays: PartArrays,
+    private readonly board: Board,
+  ) {}
+
+  /** Runs jobs until told to stop; blocks the thread meanwhile (the thread does nothing else). */
+  run(): void {
+    const words = this.board.words;
+    const args = this.board.args;
+    let done = Atomics.load(words, BOARD_DONE);
+    for (;;) {
+      waitWhile(words, BOARD_SEQUENCE, done);
+      const sequence = Atomics.load(words, BOARD_SEQUENCE);
+      const job = Atomics.load(words, BOARD_JOB);
+      const part = Atomics.load(words, BOARD_PART);
+      if (job === JOB_STOP) return;
+      let result = 0;
+      if (job === JOB_LENGTHS) projectLengths(this.arrays, args[0], args[1], words, 1);
+      else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0] !== 0) ? 1 : 0;
+      Atomics.store(words, BOARD_RESULT, result);
+      done = sequence;
+      Atomics.store(words, BOARD_DONE, done);
+      Atomics.notify(words, BOARD_DONE);
+    }
+  }
+}
