@@ -1,7 +1,7 @@
 /**
  * Solver benchmark: `npm run bench`. Prints two tables and writes bench-results/solver.json.
  *
- * 1. The loops: for each head resolution and two length-iteration counts, solves frames of a held expression (brows
+ * 1. The loops: for each head resolution, length-iteration count and thread count, solves frames of a held expression (brows
  *    raised, one mouth corner pulled) over the whole mesh and reports the median and 90th-percentile frame time, the
  *    nanoseconds per edge projection and the milliseconds for normals, bending and orientation.
  * 2. The rig: the head as the page simulates it (solver host, colliders, default rig; see
@@ -15,13 +15,19 @@ import { NodeIO } from '@gltf-transform/core';
 import { SkinSolver } from '../src/core/solver';
 import { buildTopology, type SkinTopology } from '../src/core/topology';
 import { loadHeadSimulation, type Resolution } from '../tests/fixtures/head-simulation';
+import { startPartnerThread } from '../tests/fixtures/partner';
 
 const RESOLUTIONS = [
   { name: 'low', frames: 120 },
   { name: 'medium', frames: 60 },
   { name: 'high', frames: 20 },
 ] as const;
-const LENGTH_ITERATIONS = [3, 10];
+/** Length iterations and solver threads of the loop rows (two threads: a partner thread, see SolverPartner). */
+const LOOP_CASES = [
+  { lengthIterations: 3, workers: 1 },
+  { lengthIterations: 3, workers: 2 },
+  { lengthIterations: 10, workers: 1 },
+] as const;
 const WARMUP_FRAMES = 5;
 
 async function loadSkin(name: string): Promise<SkinTopology> {
@@ -56,6 +62,7 @@ interface Row {
   edges: number;
   lengthIterations: number;
   positionIterations: number;
+  workers: number;
   frames: number;
   medianFrameMs: number;
   p90FrameMs: number;
@@ -69,9 +76,10 @@ const rows: Row[] = [];
 for (const { name, frames } of RESOLUTIONS) {
   const topology = await loadSkin(name);
   const { vertices, targets } = expression(topology);
-  for (const lengthIterations of LENGTH_ITERATIONS) {
+  for (const { lengthIterations, workers } of LOOP_CASES) {
     // The whole mesh, as before the active region: these rows measure the loops.
-    const solver = new SkinSolver(topology, { parameters: { lengthIterations }, activeRegion: false });
+    const solver = new SkinSolver(topology, { parameters: { lengthIterations }, activeRegion: false, memory: 'shared' });
+    const partner = workers === 2 ? await startPartnerThread(solver) : null;
     solver.setMuscleTargets(vertices, targets, 1, 0);
     const total: number[] = [];
     const lengths: number[] = [];
@@ -88,6 +96,7 @@ for (const { name, frames } of RESOLUTIONS) {
       bending.push(solver.timings.bending);
       orientation.push(solver.timings.orientation);
     }
+    await partner?.stop();
     const p = solver.parameters();
     const sorted = [...total].sort((a, b) => a - b);
     const projections = topology.restLength.length * p.lengthIterations * p.positionIterations;
@@ -97,6 +106,7 @@ for (const { name, frames } of RESOLUTIONS) {
       edges: topology.restLength.length,
       lengthIterations,
       positionIterations: p.positionIterations,
+      workers,
       frames,
       medianFrameMs: quantile(sorted, 0.5),
       p90FrameMs: quantile(sorted, 0.9),
@@ -109,10 +119,13 @@ for (const { name, frames } of RESOLUTIONS) {
 }
 
 /** The rig rows: an Action Unit or a preset at full intensity, from rest, on a head resolution. */
-const RIG_CASES: { resolution: Resolution; expression: string; maxFrames: number }[] = [
-  { resolution: 'medium', expression: 'AU12', maxFrames: 1500 },
-  { resolution: 'medium', expression: 'happiness', maxFrames: 1500 },
-  { resolution: 'high', expression: 'happiness', maxFrames: 1500 },
+const RIG_CASES: { resolution: Resolution; expression: string; workers: 1 | 2; maxFrames: number }[] = [
+  { resolution: 'medium', expression: 'AU12', workers: 1, maxFrames: 1500 },
+  { resolution: 'medium', expression: 'AU12', workers: 2, maxFrames: 1500 },
+  { resolution: 'medium', expression: 'happiness', workers: 1, maxFrames: 1500 },
+  { resolution: 'medium', expression: 'happiness', workers: 2, maxFrames: 1500 },
+  { resolution: 'high', expression: 'happiness', workers: 1, maxFrames: 1500 },
+  { resolution: 'high', expression: 'happiness', workers: 2, maxFrames: 1500 },
 ];
 /** "Within 2 % of the final shape": every vertex nearer its final place than this share of the largest final move. */
 const NEAR_FINAL = 0.02;
@@ -137,13 +150,14 @@ interface RigRow {
   maxFrames: number;
 }
 
-/** Starts `expression` at full intensity from rest on a fresh head simulation. */
-async function startExpression(resolution: Resolution, expression: string) {
-  const sim = await loadHeadSimulation(resolution);
+/** Starts `expression` at full intensity from rest on a fresh head simulation, with a partner thread if `workers` is 2. */
+async function startExpression(resolution: Resolution, expression: string, workers: 1 | 2 = 1) {
+  const sim = await loadHeadSimulation(resolution, {}, { memory: 'shared' });
+  const partner = workers === 2 ? await startPartnerThread(sim.host.solver) : null;
   if (/^AU\d/.test(expression)) sim.expression.setActionUnit(expression, 1);
   else sim.expression.applyPreset(expression, 1);
   sim.apply();
-  return sim;
+  return { ...sim, partner };
 }
 
 function largestDistance(a: Float32Array, b: Float32Array): number {
@@ -156,9 +170,9 @@ function largestDistance(a: Float32Array, b: Float32Array): number {
 }
 
 const rigRows: RigRow[] = [];
-for (const { resolution, expression: name, maxFrames } of RIG_CASES) {
+for (const { resolution, expression: name, workers, maxFrames } of RIG_CASES) {
   // First run: until the solver sleeps (or maxFrames), timing every frame.
-  let sim = await startExpression(resolution, name);
+  let sim = await startExpression(resolution, name, workers);
   const solver = sim.host.solver;
   const start = Float32Array.from(solver.buffers.positions);
   const p = solver.parameters();
@@ -170,10 +184,12 @@ for (const { resolution, expression: name, maxFrames } of RIG_CASES) {
     nsPerEdge.push((solver.timings.lengths * 1e6) / (solver.activeEdgeCount * p.lengthIterations * p.positionIterations));
     peak = Math.max(peak, solver.activeVertexCount);
   }
+  await sim.partner?.stop();
   const slept = solver.sleeping;
   const final = Float32Array.from(solver.buffers.positions);
   const activeVertices = solver.activeVertexCount;
-  // Second run (the solver is deterministic): the first frame within NEAR_FINAL of the final shape.
+  // Second run, on one thread (the solver is deterministic, and two threads give its shapes): the first frame within
+  // NEAR_FINAL of the final shape; its time is that of the first run's frames.
   const tolerance = NEAR_FINAL * largestDistance(start, final);
   sim = await startExpression(resolution, name);
   let near = 0;
@@ -186,7 +202,7 @@ for (const { resolution, expression: name, maxFrames } of RIG_CASES) {
   rigRows.push({
     resolution,
     expression: name,
-    workers: 1,
+    workers,
     vertices: sim.host.topology.vertexCount,
     activeVertices,
     peakActiveVertices: peak,
@@ -203,12 +219,12 @@ for (const { resolution, expression: name, maxFrames } of RIG_CASES) {
 }
 
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, platform: platform(), node: process.version };
-const header = '| head | vertices | edges | length iterations | median ms/frame | p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
+const header = '| head | vertices | edges | length iterations | workers | median ms/frame | p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
 const lines = rows.map(
   (r) =>
-    `| ${r.resolution} | ${r.vertices.toLocaleString('en-US')} | ${r.edges.toLocaleString('en-US')} | ${r.lengthIterations} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.medianNormalsMs.toFixed(2)} | ${r.medianBendingMs.toFixed(2)} | ${r.medianOrientationMs.toFixed(2)} |`,
+    `| ${r.resolution} | ${r.vertices.toLocaleString('en-US')} | ${r.edges.toLocaleString('en-US')} | ${r.lengthIterations} | ${r.workers} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.medianNormalsMs.toFixed(2)} | ${r.medianBendingMs.toFixed(2)} | ${r.medianOrientationMs.toFixed(2)} |`,
 );
-console.log(`Solver benchmark on ${machine.cpu}, ${machine.cores} cores, Node ${machine.node} (one thread; ${rows[0].positionIterations} position iterations)\n`);
+console.log(`Solver benchmark on ${machine.cpu}, ${machine.cores} cores, Node ${machine.node} (${rows[0].positionIterations} position iterations)\n`);
 console.log('Loops (whole mesh, a held expression):\n');
 console.log([header, header.replace(/[^|]+/g, ' --- '), ...lines].join('\n'));
 const rigHeader =
