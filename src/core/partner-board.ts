@@ -7,7 +7,7 @@
 
 /**
  * Int32 words: the number of the job posted last (leader), of the job finished last (partner), the job, the part of
- * the lists it is for, its result; then the barrier's count of arrived threads and its generation (see `meet`).
+ * the lists it is for (for a length job: how many passes), its result; then the barrier's count of arrived threads and its generation (see `meet`).
  */
 export const BOARD_SEQUENCE = 0;
 export const BOARD_DONE = 1;
@@ -21,7 +21,7 @@ const BOARD_WORDS = 8;
 export const BOARD_ARGUMENTS = 2;
 
 /**
- * Jobs: a length pass (each thread projects half of each colour, and they meet after each colour), a part of the
+ * Jobs: length passes (each thread projects half of each colour, and they meet after each colour), a part of the
  * orientation constraints; or leave the job loop.
  */
 export const JOB_LENGTHS = 1;

@@ -24,7 +24,7 @@ export class SolverPartner {
       const part = Atomics.load(words, BOARD_PART);
       if (job === JOB_STOP) return;
       let result = 0;
-      if (job === JOB_LENGTHS) projectLengths(this.arrays, args[0], args[1], words, 1);
+      if (job === JOB_LENGTHS) for (let pass = 0; pass < part; pass++) projectLengths(this.arrays, args[0], args[1], words, 1);
       else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0] !== 0) ? 1 : 0;
       Atomics.store(words, BOARD_RESULT, result);
       done = sequence;

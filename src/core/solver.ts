@@ -413,7 +413,7 @@ export class SkinSolver {
       this.projectMuscles();
       t0 = now();
       time.muscles += t0 - t1;
-      for (let l = 0; l < p.lengthIterations; l++) this.projectLengths();
+      this.projectLengths(p.lengthIterations);
       t1 = now();
       time.lengths += t1 - t0;
       this.projectOrientation();
@@ -665,14 +665,17 @@ export class SkinSolver {
     }
   }
 
-  /** Length constraints (thesis 4.3.3; see projectLengths in solver-kernels.ts), with the partner if there is one. */
-  private projectLengths(): void {
+  /**
+   * `passes` passes of the length constraints (thesis 4.3.3; see projectLengths in solver-kernels.ts), with the
+   * partner if there is one (one job for all the passes).
+   */
+  private projectLengths(passes: number): void {
     const { lengthStiffness, bulge } = this.params;
     const partner = this.partner;
-    if (!partner) return projectLengths(this.parts, lengthStiffness, bulge, null, 0);
-    partner.start(JOB_LENGTHS, 0, lengthStiffness, bulge);
-    projectLengths(this.parts, lengthStiffness, bulge, partner.board.words, 0);
-    partner.finish();
+    partner?.start(JOB_LENGTHS, passes, lengthStiffness, bulge);
+    const board = partner ? partner.board.words : null;
+    for (let pass = 0; pass < passes; pass++) projectLengths(this.parts, lengthStiffness, bulge, board, 0);
+    partner?.finish();
   }
 
   /**
