@@ -87,7 +87,8 @@ describe('constraint lists', () => {
         expect(lists.rest[3 * k + 2]).toBe(t.restLength[e]);
         if (held > 0) {
           heldEdges++;
-          expect([lists.held[3 * k], lists.held[3 * k + 1], lists.held[3 * k + 2]]).toEqual([held, seed[a], seed[b]]);
+          const push = [a, b].flatMap((v) => [0, 1, 2].map((i) => Math.fround(held * seed[v]) * t.restNormals[3 * v + i]));
+          expect([...lists.held.subarray(6 * k, 6 * k + 6)]).toEqual(push.map(Math.fround));
         }
       }
     }

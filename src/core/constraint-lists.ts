@@ -44,8 +44,9 @@ export interface EdgeLists {
   ends: Uint32Array;
   rest: Float32Array;
   /**
-   * Three per listed edge, read only for the held edges: the larger muscle weight of the two ends, then each end's
-   * bulge seed (see SkinSolver).
+   * Six per listed edge, read only for the held edges: each end's outward push per unit of compression, its rest
+   * normal times its bulge seed times the larger muscle weight of the two ends (see SkinSolver), so that the loop reads
+   * them in order instead of gathering normals.
    */
   held: Float32Array;
   /** Colour c's free edges are `runs[2c]..runs[2c+1]`, its held edges `runs[2c+1]..runs[2c+2]`. */
@@ -57,7 +58,7 @@ export function createEdgeLists(topology: SkinTopology, memory: Memory = 'local'
   const m = topology.restLength.length;
   const colours = topology.colourStart.length - 1;
   const records = allocate(Uint32Array, 3 * m, memory);
-  return { ends: records, rest: new Float32Array(records.buffer), held: allocate(Float32Array, 3 * m, memory), runs: allocate(Uint32Array, 2 * colours + 1, memory) };
+  return { ends: records, rest: new Float32Array(records.buffer), held: allocate(Float32Array, 6 * m, memory), runs: allocate(Uint32Array, 2 * colours + 1, memory) };
 }
 
 /**
@@ -116,6 +117,8 @@ function partOf(lo: number, hi: number, blocks: Uint32Array | null): number {
 export function fillEdgeLists(into: EdgeLists, topology: SkinTopology, weights: Float32Array, seed: Float32Array, included: Uint8Array | null): number {
   const E = topology.edges;
   const L = topology.restLength;
+  const N = topology.restNormals;
+  const H = into.held;
   const colourStart = topology.colourStart;
   const colours = colourStart.length - 1;
   let o = 0;
@@ -132,9 +135,16 @@ export function fillEdgeLists(into: EdgeLists, topology: SkinTopology, weights: 
         into.ends[3 * o] = 3 * a;
         into.ends[3 * o + 1] = 3 * b;
         into.rest[3 * o + 2] = L[e];
-        into.held[3 * o] = held;
-        into.held[3 * o + 1] = seed[a];
-        into.held[3 * o + 2] = seed[b];
+        if (held > 0) {
+          const pa = held * seed[a];
+          const pb = held * seed[b];
+          H[6 * o] = pa * N[3 * a];
+          H[6 * o + 1] = pa * N[3 * a + 1];
+          H[6 * o + 2] = pa * N[3 * a + 2];
+          H[6 * o + 3] = pb * N[3 * b];
+          H[6 * o + 4] = pb * N[3 * b + 1];
+          H[6 * o + 5] = pb * N[3 * b + 2];
+        }
         o++;
       }
     }

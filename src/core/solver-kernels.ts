@@ -49,7 +49,7 @@ export function projectLengths(a: PartArrays, stiffness: number, bulge: number, 
       else (f0 = f), (h0 = h);
     }
     projectFreeEdges(x, ends, rest, stiffness, f0, f1);
-    projectHeldEdges(x, a.edges, a.restNormals, stiffness, bulge, h0, h1);
+    projectHeldEdges(x, a.edges, stiffness, bulge, h0, h1);
     if (board) meet(board);
   }
 }
@@ -81,9 +81,9 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
 
 /**
  * Length projections of held edges `e0..e1`: as projectFreeEdges, and a compressed edge nudges its ends out along
- * their rest normals `N` by `bulge` times its muscle weight, times each end's seed.
+ * their rest normals by `bulge` times its compression times each end's push (see EdgeLists.held).
  */
-function projectHeldEdges(x: Float32Array, lists: EdgeLists, N: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
+function projectHeldEdges(x: Float32Array, lists: EdgeLists, stiffness: number, bulge: number, e0: number, e1: number): void {
   const { ends, rest, held } = lists;
   const s = 0.5 * stiffness;
   for (let e = e0; e < e1; e++) {
@@ -105,15 +105,14 @@ function projectHeldEdges(x: Float32Array, lists: EdgeLists, N: Float32Array, st
     x[ib + 1] = by - k * dy;
     x[ib + 2] = bz - k * dz;
     if (error < 0) {
-      const push = -bulge * held[3 * e] * error;
-      const pa = push * held[3 * e + 1];
-      const pb = push * held[3 * e + 2];
-      x[ia] += pa * N[ia];
-      x[ia + 1] += pa * N[ia + 1];
-      x[ia + 2] += pa * N[ia + 2];
-      x[ib] += pb * N[ib];
-      x[ib + 1] += pb * N[ib + 1];
-      x[ib + 2] += pb * N[ib + 2];
+      const push = -bulge * error;
+      const j = 6 * e;
+      x[ia] += push * held[j];
+      x[ia + 1] += push * held[j + 1];
+      x[ia + 2] += push * held[j + 2];
+      x[ib] += push * held[j + 3];
+      x[ib + 1] += push * held[j + 4];
+      x[ib + 2] += push * held[j + 5];
     }
   }
 }
