@@ -70,7 +70,7 @@ export class OutputsPanel {
   }
 
   /** Removes the folder, its frame hook and its timer. */
-  destroy(): void {
+  dispose(): void {
     clearInterval(this.timer);
     this.stopFrames();
     this.folder.destroy();
