@@ -16,6 +16,7 @@ export default defineConfig({
   // Pages of this project import the package by its own name, as an embedding page would.
   resolve: {
     alias: [
+      { find: /^softface\/element$/, replacement: path('src/embed/element.ts') },
       { find: /^softface$/, replacement: path('src/embed/index.ts') },
     ],
   },

@@ -60,3 +60,51 @@ export async function addFaces(page: Page, faces: Record<string, object>, placem
     { faces, style: placementStyle(placement) },
   );
 }
+
+/** An event a `<soft-face>` fired, as the tests record it. */
+export interface ElementEvent {
+  type: string;
+  /** `detail.change` of a change event, the message of an error event. */
+  what?: string;
+}
+
+declare global {
+  interface Window {
+    /** Events of each `<soft-face>` a test made, by its id, in order. */
+    elementEvents: Record<string, ElementEvent[]>;
+  }
+}
+
+/**
+ * Puts a `<soft-face id=name>` with these attributes on the page, records its ready, change and error events in
+ * `window.elementEvents[name]` (error events are prevented, so they do not reach the console), and resolves once it
+ * is ready.
+ */
+export async function addElement(page: Page, name: string, attributes: Record<string, string>, placement: Placement = {}): Promise<void> {
+  await page.evaluate(
+    async ({ name, attributes, style }) => {
+      window.elementEvents ??= {};
+      const events: ElementEvent[] = (window.elementEvents[name] = []);
+      const element = document.createElement('soft-face');
+      element.id = name;
+      for (const [key, value] of Object.entries(attributes)) element.setAttribute(key, value);
+      Object.assign(element.style, style);
+      element.addEventListener('ready', () => events.push({ type: 'ready' }));
+      // Only the element's own change events have a detail; a native one leaking out of its panels would show as such.
+      element.addEventListener('change', (e) => events.push({ type: 'change', what: (e as CustomEvent<{ change: string } | null>).detail?.change ?? 'native' }));
+      element.addEventListener('error', (e) => {
+        e.preventDefault();
+        events.push({ type: 'error', what: (e as ErrorEvent).message });
+      });
+      const ready = new Promise((resolve) => element.addEventListener('ready', resolve, { once: true }));
+      document.body.append(element);
+      await ready;
+    },
+    { name, attributes, style: placementStyle(placement) },
+  );
+}
+
+/** The events a `<soft-face>` fired since the last call, and forgets them. */
+export async function takeEvents(page: Page, name: string): Promise<ElementEvent[]> {
+  return page.evaluate((name) => window.elementEvents[name].splice(0), name);
+}
