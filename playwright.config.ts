@@ -1,9 +1,12 @@
 import { defineConfig, devices } from '@playwright/test';
 import { chromiumPath } from './scripts/chromium-path.mjs';
 
-/** The built app is served twice: as it should be (with COOP/COEP) and as a host that sends no such headers would. */
-export const ISOLATED_PORT = 4173;
-export const PLAIN_PORT = 4174;
+/**
+ * The built app is served twice: as it should be (with COOP/COEP) and as a host that sends no such headers would.
+ * `SOFTFACE_E2E_PORT` moves both (to it and the port after), so that two checkouts can run their tests at once.
+ */
+export const ISOLATED_PORT = Number(process.env.SOFTFACE_E2E_PORT ?? 4173);
+export const PLAIN_PORT = ISOLATED_PORT + 1;
 
 export default defineConfig({
   testDir: 'e2e',

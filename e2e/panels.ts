@@ -3,12 +3,12 @@ import { BACKGROUND } from './fixtures';
 
 /** A panel control by its `data-control` name (`AU12L`, `AU12-link`, `preset-happiness`, `light-keyAzimuth`, ...). */
 export function control(page: Page, name: string): Locator {
-  return page.locator(`#panels [data-control="${name}"]`);
+  return page.locator(`.softface-panels [data-control="${name}"]`);
 }
 
 /** Opens a closed top-level panel folder (Presets, Rendering, Light) by its title. */
 export async function openFolder(page: Page, title: string): Promise<void> {
-  const folder = page.locator('#panels .lil-gui', { has: page.locator(':scope > .lil-title', { hasText: new RegExp(`^${title}$`) }) });
+  const folder = page.locator('.softface-panels .lil-gui', { has: page.locator(':scope > .lil-title', { hasText: new RegExp(`^${title}$`) }) });
   if (await folder.evaluate((e) => e.classList.contains('lil-closed'))) await folder.locator(':scope > .lil-title').click();
 }
 

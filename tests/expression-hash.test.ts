@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { decodeExpression, encodeExpression } from '../src/app/expression-hash';
+import { decodeExpression, encodeExpression, expressionEntries, readExpression } from '../src/embed/expression-hash';
 
 describe('the expression carried in the URL hash', () => {
   it('round-trips non-zero Action Units and preset weights, leaving zeros out', () => {
@@ -15,5 +15,23 @@ describe('the expression carried in the URL hash', () => {
 
   it('skips entries that are not finite numbers (the face checks the ids)', () => {
     expect(decodeExpression('#AU1L=abc&AU2L=&AU4=Infinity&AU5L=0.2&preset:x=NaN&AU99=1')).toEqual({ actionUnits: { AU5L: 0.2, AU99: 1 }, presets: {} });
+  });
+});
+
+describe('an expression given to createFace, setExpression or <soft-face>', () => {
+  it('reads the text form or the same entries as an object', () => {
+    const expected = { actionUnits: { AU12: 0.8, AU6L: 0.5 }, presets: { happiness: 0.3 } };
+    expect(readExpression('AU12=0.8&AU6L=0.5&preset:happiness=0.3')).toEqual(expected);
+    expect(readExpression('#AU12=0.8&AU6L=0.5&preset%3Ahappiness=0.3')).toEqual(expected);
+    expect(readExpression({ AU12: 0.8, AU6L: 0.5, 'preset:happiness': 0.3 })).toEqual(expected);
+    expect(readExpression('')).toEqual({ actionUnits: {}, presets: {} });
+    expect(expressionEntries(expected)).toEqual({ AU12: 0.8, AU6L: 0.5, 'preset:happiness': 0.3 });
+  });
+
+  it('refuses, naming it, an entry that is not a finite number (where the hash skips it)', () => {
+    expect(() => readExpression('AU12=abc', 'setExpression')).toThrow('setExpression: AU12 needs a finite number, got "abc"');
+    expect(() => readExpression('AU12=', 'setExpression')).toThrow('setExpression: AU12 needs a finite number, got ""');
+    expect(() => readExpression({ AU12: Infinity })).toThrow('expression: AU12 needs a finite number, got Infinity');
+    expect(() => readExpression(42 as unknown as string)).toThrow('expression: needs text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got 42');
   });
 });

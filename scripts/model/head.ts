@@ -1,3 +1,4 @@
+import { HEAD_NODES } from '../../src/core/head-nodes';
 import { boundaryLoops, cutAlongLoop, findEdgeLoop, subsetFaces } from './cut';
 import { buildEyeball, type TriGeometry } from './eye';
 import type { MaterialSpec, NodeSpec } from './glb';
@@ -203,17 +204,16 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
     const root: NodeSpec = {
       name: 'head',
       children: [
-        { name: 'skin', parts: [{ geometry: skin, material: MATERIALS.skin }] },
-        { name: 'eye-l', translation: pivots['eye-l'], meshName: 'eyeball', parts: eyeParts, extras: { softface: { pivot: 'eye-l' } } },
-        { name: 'eye-r', translation: pivots['eye-r'], meshName: 'eyeball', parts: eyeParts, extras: { softface: { pivot: 'eye-r' } } },
-        { name: 'teeth-upper', parts: [{ geometry: teethUpper, material: MATERIALS.teeth }] },
+        { name: HEAD_NODES.skin, parts: [{ geometry: skin, material: MATERIALS.skin }] },
+        ...HEAD_NODES.eyes.map((eye) => ({ name: eye, translation: pivots[eye], meshName: 'eyeball', parts: eyeParts, extras: { softface: { pivot: eye } } })),
+        { name: HEAD_NODES.upperTeeth, parts: [{ geometry: teethUpper, material: MATERIALS.teeth }] },
         {
-          name: 'jaw',
+          name: HEAD_NODES.jaw,
           translation: hinge,
           extras: { softface: { pivot: 'jaw-hinge' } },
           children: [
-            { name: 'teeth-lower', translation: negHinge, parts: [{ geometry: teethLower, material: MATERIALS.teeth }] },
-            { name: 'tongue', translation: negHinge, parts: [{ geometry: tongue, material: MATERIALS.tongue }] },
+            { name: HEAD_NODES.lowerTeeth, translation: negHinge, parts: [{ geometry: teethLower, material: MATERIALS.teeth }] },
+            { name: HEAD_NODES.tongue, translation: negHinge, parts: [{ geometry: tongue, material: MATERIALS.tongue }] },
           ],
         },
         {

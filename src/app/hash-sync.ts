@@ -1,5 +1,5 @@
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
-import { decodeExpression, encodeExpression } from './expression-hash';
+import { decodeExpression, encodeExpression } from '../embed/expression-hash';
 
 /** Options of the URL hash sync. */
 export interface HashSyncOptions {
@@ -79,7 +79,7 @@ export class HashSync {
   }
 
   /** Stops following the face and the address bar; a write still waiting is made now. */
-  destroy(): void {
+  dispose(): void {
     this.unsubscribe();
     window.removeEventListener('hashchange', this.onHashChange);
     if (this.timer !== undefined) this.flush();

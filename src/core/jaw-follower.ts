@@ -1,4 +1,5 @@
 import type { Collider } from './colliders';
+import { HEAD_NODES } from './head-nodes';
 import { DEGREES, rotateAboutAxis } from './math3';
 import { MuscleField } from './muscles';
 import type { Muscle, Vec3 } from './rig-types';
@@ -24,7 +25,7 @@ export class JawFollower {
   private readonly point = new Float64Array(3);
 
   /** Null when the rig has no jaw muscle or the model no colliders named `prefix`. */
-  static create(muscles: readonly Muscle[], colliders: Collider[], prefix = 'teeth-lower'): JawFollower | null {
+  static create(muscles: readonly Muscle[], colliders: Collider[], prefix: string = HEAD_NODES.lowerTeeth): JawFollower | null {
     const index = muscles.findIndex((m) => m.type === 'jaw');
     const shapes = colliders.filter((c) => c.name.startsWith(prefix));
     if (index < 0 || shapes.length === 0) return null;

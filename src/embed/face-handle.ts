@@ -1,11 +1,12 @@
-import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
+import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
 import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../core/muscle-display';
-import type { Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
 import type { RenderTiming } from '../render/head-view';
 import type { MaterialDescription } from '../render/materials';
 import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
+import { readExpression, type ExpressionEntries } from './expression-hash';
+import type { FaceExpression } from './face-expression';
 
 /** The welded skin at one moment, in simulation vertex order. */
 export interface SkinSnapshot {
@@ -73,8 +74,8 @@ export interface FaceView {
 }
 
 /**
- * A face on the page, as scripts (and the tests) drive it: `window.face`. The embedding API will hand out the same
- * object. Vertices are simulation vertex indices, the order of `getSkin().rest`.
+ * A face on the page, as scripts (and the tests) drive it: what `createFace` resolves to, and `window.face` in the
+ * app. Vertices are simulation vertex indices, the order of `getSkin().rest`.
  */
 export class FaceHandle {
   /** Resolves once the head is shown and its skin solver runs; rejects if either fails. */
@@ -85,16 +86,13 @@ export class FaceHandle {
   private muscles: FaceMuscles | undefined;
   private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
   private readonly listeners: FaceChangeListener[] = [];
-  private rig: Rig | undefined;
-  private expression = new ExpressionState();
-  /** Contraction per rig muscle, reused for every change. */
-  private contractions = new Float32Array(0);
-  /** Called with the rig's muscle contractions whenever they change (the page turns the jaw's teeth with them). */
-  onContractions: ((contractions: Float32Array) => void) | undefined;
+  private expression: FaceExpression | undefined;
+  private disposed = false;
   private resolveReady!: () => void;
   private rejectReady!: (error: Error) => void;
 
-  constructor() {
+  /** `teardown` stops and frees everything the face is made of; `dispose` calls it once. */
+  constructor(private readonly teardown: () => void = () => {}) {
     this.ready = new Promise<void>((resolve, reject) => {
       this.resolveReady = resolve;
       this.rejectReady = reject;
@@ -103,14 +101,10 @@ export class FaceHandle {
     this.ready.catch(() => {});
   }
 
-  /** Connects the running simulation (driving `rig`'s muscles, if given) and resolves `ready`. */
-  attach(simulation: SkinSimulation, rig?: Rig): void {
+  /** Connects the running simulation and the expression that drives its muscles, and resolves `ready`. */
+  attach(simulation: SkinSimulation, expression: FaceExpression): void {
     this.simulation = simulation;
-    if (rig) {
-      this.rig = rig;
-      this.expression = new ExpressionState(rig.presets);
-      this.contractions = new Float32Array(rig.muscles.length);
-    }
+    this.expression = expression;
     this.resolveReady();
   }
 
@@ -132,6 +126,7 @@ export class FaceHandle {
 
   /** Calls `listener` after every change made through the handle; returns the function that stops it. */
   onChange(listener: FaceChangeListener): () => void {
+    this.alive();
     this.listeners.push(listener);
     return () => {
       const i = this.listeners.indexOf(listener);
@@ -142,6 +137,23 @@ export class FaceHandle {
   /** Rejects `ready`: the face could not start. */
   fail(error: Error): void {
     this.rejectReady(error);
+  }
+
+  /**
+   * Stops the face: its solver (and worker), render loop, panels and listeners end, its canvas and panels leave the
+   * page and its GPU resources are freed. The other methods throw from then on; a second call does nothing.
+   */
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.listeners.length = 0;
+    this.rejectReady(new Error('the face was disposed before it was ready'));
+    this.teardown();
+  }
+
+  /** Whether `dispose` was called. */
+  isDisposed(): boolean {
+    return this.disposed;
   }
 
   /** Resolves once the skin has converged for every input given so far (rejects after `timeoutMs`, if given). */
@@ -215,6 +227,7 @@ export class FaceHandle {
    * An unknown key, a non-boolean `all` or an unknown id throws naming it and changes nothing.
    */
   setMuscleDisplay(partial: Partial<MuscleDisplay>): void {
+    this.alive();
     this.muscleDisplay = nextMuscleDisplay(this.muscleDisplay, partial);
     this.showMuscles();
     this.emit('muscles');
@@ -222,11 +235,13 @@ export class FaceHandle {
 
   /** Which muscles are asked for (a copy): `{ all, actionUnits }`. */
   getMuscleDisplay(): MuscleDisplay {
+    this.alive();
     return { all: this.muscleDisplay.all, actionUnits: [...this.muscleDisplay.actionUnits] };
   }
 
   /** The names of the muscles the scene draws now, in rig order (read-only: what the glyphs show, for tests). */
   describeMuscleDisplay(): string[] {
+    this.alive();
     return this.muscles?.shown() ?? [];
   }
 
@@ -246,14 +261,24 @@ export class FaceHandle {
    * left is +x). An unknown id or a non-finite value throws an error naming it and changes nothing.
    */
   setActionUnit(id: string, value: number): void {
-    this.running();
-    this.expression.setActionUnit(id, value);
-    this.drive();
+    this.expressed().setActionUnit(id, value);
+    this.emit('expression');
   }
 
   /** The Action Unit sliders, per side: `{ AU1L: 0, AU1R: 0, ..., AU17: 0, ... }`. */
   getActionUnits(): Record<string, number> {
-    return this.expression.getActionUnits();
+    return this.expressed().getActionUnits();
+  }
+
+  /**
+   * Replaces the whole expression: the Action Units and preset weights given are set, every other one goes to 0. As
+   * text in the URL-hash form (`"AU12=0.8&AU6L=0.5&preset:happiness=0.3"`) or as an object of the same entries
+   * (`{ AU12: 0.8, 'preset:happiness': 0.3 }`). An unknown id or preset, or a value that is not a finite number,
+   * throws naming it and changes nothing.
+   */
+  setExpression(expression: string | ExpressionEntries): void {
+    this.expressed().set(readExpression(expression, 'setExpression'), 'setExpression');
+    this.emit('expression');
   }
 
   /**
@@ -261,31 +286,29 @@ export class FaceHandle {
    * 0..1, by side id like `getActionUnits`.
    */
   getEffectiveActionUnits(): Record<string, number> {
-    return this.expression.effective();
+    return this.expressed().effective();
   }
 
   /** Every Action Unit: id, FACS number, name and sides (`L`, `R` or `M`). */
   listActionUnits(): ActionUnitListing[] {
-    return this.expression.listActionUnits();
+    return this.expressed().listActionUnits();
   }
 
   /** Sets a preset's weight, 0..1 (clamped); presets and Action Units add up (and clamp) per side. */
   applyPreset(name: string, weight = 1): void {
-    this.running();
-    this.expression.applyPreset(name, weight);
-    this.drive();
+    this.expressed().applyPreset(name, weight);
+    this.emit('expression');
   }
 
   /** The rig's presets with their current weights. */
   listPresets(): PresetListing[] {
-    return this.expression.listPresets();
+    return this.expressed().listPresets();
   }
 
   /** Zeroes every Action Unit and preset: the neutral face. */
   reset(): void {
-    this.running();
-    this.expression.reset();
-    this.drive();
+    this.expressed().reset();
+    this.emit('expression');
   }
 
   /**
@@ -294,26 +317,23 @@ export class FaceHandle {
    * change every frame. The eye simulation drives the lids with it. Bad input throws and changes nothing.
    */
   setOverlay(ids: readonly string[], values: ArrayLike<number>): void {
-    this.running();
+    const expression = this.expressed();
     if (ids.length !== values.length) throw new Error(`setOverlay: ${ids.length} ids but ${values.length} values`);
     for (let i = 0; i < ids.length; i++) {
       if (!isActionUnitId(ids[i])) throw new Error(`setOverlay: unknown Action Unit id ${JSON.stringify(ids[i])}`);
       if (typeof values[i] !== 'number' || !Number.isFinite(values[i])) throw new Error(`setOverlay: ${ids[i]} needs a finite number, got ${String(values[i])}`);
     }
-    let changed = false;
-    for (let i = 0; i < ids.length; i++) if (this.expression.setOverlay(ids[i], values[i])) changed = true;
-    if (changed) this.send();
+    expression.setOverlay(ids, values);
   }
 
   /** Removes the page's whole contribution (see `setOverlay`). */
   clearOverlay(): void {
-    this.running();
-    if (this.expression.clearOverlay()) this.send();
+    this.expressed().clearOverlay();
   }
 
   /** The overlay by side id, like `getActionUnits`. */
   getOverlay(): Record<string, number> {
-    return this.expression.getOverlay();
+    return this.expressed().getOverlay();
   }
 
   /**
@@ -329,6 +349,7 @@ export class FaceHandle {
 
   /** Whether the eye simulation runs. */
   getEyeSimulation(): boolean {
+    this.alive();
     return this.eyes?.enabled() ?? false;
   }
 
@@ -342,30 +363,17 @@ export class FaceHandle {
     return this.shown().snapshot();
   }
 
-  /** Sends the muscle contractions and tells the listeners that the expression changed. */
-  private drive(): void {
-    this.send();
-    this.emit('expression');
-  }
-
-  /** Sends the muscle contractions the current Action Units, presets and overlay add up to. */
-  private send(): void {
-    const simulation = this.running();
-    if (!this.rig) throw new Error('the face has no muscle rig: Action Units cannot move it');
-    simulation.setContractions(this.expression.muscleContractions(this.rig, this.contractions));
-    this.onContractions?.(this.contractions);
-  }
-
-  /** Makes the glyphs show the muscles the display asks for (none until a rig and its glyphs are attached). */
+  /** Makes the glyphs show the muscles the display asks for (none until the glyphs and the expression are attached). */
   private showMuscles(): void {
     if (!this.muscles) return;
     const d = this.muscleDisplay;
     if (d.all) this.muscles.setVisible('all');
-    else if (!this.rig || d.actionUnits.length === 0) this.muscles.setVisible('none');
-    else this.muscles.setVisible(new Set(shownMuscleNames(this.rig, d)));
+    else if (!this.expression || d.actionUnits.length === 0) this.muscles.setVisible('none');
+    else this.muscles.setVisible(new Set(shownMuscleNames(this.expression.rig, d)));
   }
 
   private eyeSimulation(): FaceEyes {
+    this.alive();
     if (!this.eyes) throw new Error('the face has no eye simulation yet: await face.ready first');
     return this.eyes;
   }
@@ -376,19 +384,23 @@ export class FaceHandle {
   }
 
   private shown(): FaceView {
+    this.alive();
     if (!this.view) throw new Error('the face has no view yet');
     return this.view;
   }
 
   private running(): SkinSimulation {
+    this.alive();
     if (!this.simulation) throw new Error('the face is not ready yet: await face.ready first');
     return this.simulation;
   }
-}
 
-declare global {
-  interface Window {
-    /** The page's face, for scripts and tests. */
-    face: FaceHandle;
+  private expressed(): FaceExpression {
+    this.running();
+    return this.expression!;
+  }
+
+  private alive(): void {
+    if (this.disposed) throw new Error('the face was disposed');
   }
 }

@@ -1,5 +1,6 @@
 import { Matrix4, Mesh, Vector3, type Object3D } from 'three';
 import { archSlabs, type Collider } from '../core/colliders';
+import { HEAD_NODES } from '../core/head-nodes';
 import type { HeadModel } from './head-model';
 
 /**
@@ -13,13 +14,13 @@ export function headColliders(head: HeadModel): Collider[] {
   // Pivots are given in the model's frame.
   const modelToSkin = new Matrix4().multiplyMatrices(toSkin, head.root.matrixWorld);
   const colliders: Collider[] = [];
-  for (const side of ['eye-l', 'eye-r']) {
+  for (const side of HEAD_NODES.eyes) {
     const pivot = head.info.pivots[side];
     if (!pivot) continue;
     const centre = new Vector3(...pivot).applyMatrix4(modelToSkin);
     colliders.push({ name: side, a: [centre.x, centre.y, centre.z], radius: head.info.eyeRadius });
   }
-  for (const name of ['teeth-upper', 'teeth-lower']) {
+  for (const name of [HEAD_NODES.upperTeeth, HEAD_NODES.lowerTeeth]) {
     const teeth = head.root.getObjectByName(name);
     if (teeth) colliders.push(...archSlabs(name, verticesIn(teeth, toSkin)));
   }

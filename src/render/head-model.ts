@@ -1,5 +1,6 @@
 import { Box3, BufferAttribute, Mesh, Object3D, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { HEAD_NODES } from '../core/head-nodes';
 import { createHeadMaterials } from './materials';
 import { skinTint } from './skin-tint';
 
@@ -35,8 +36,8 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
     const t = [...o.position.toArray(), ...o.quaternion.toArray(), ...o.scale.toArray()];
     if (!t.every(Number.isFinite)) throw new Error(`${url}: node "${o.name}" has a non-finite transform`);
   });
-  const skin = root.getObjectByName('skin');
-  if (!(skin instanceof Mesh)) throw new Error(`${url} has no mesh named "skin"`);
+  const skin = root.getObjectByName(HEAD_NODES.skin);
+  if (!(skin instanceof Mesh)) throw new Error(`${url} has no mesh named "${HEAD_NODES.skin}"`);
   const materials = createHeadMaterials();
   replaceMaterial(skin, materials.skin);
   // Lips, inner mouth and cheeks: per-vertex albedo multipliers, computed once at rest.
@@ -50,12 +51,12 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
     materials.skin.vertexColors = true;
   }
 
-  const teeth = ['teeth-upper', 'teeth-lower'].map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
+  const teeth = [HEAD_NODES.upperTeeth, HEAD_NODES.lowerTeeth].map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
   for (const t of teeth) forEachMesh(t, (m) => replaceMaterial(m, materials.teeth));
-  const tongue = root.getObjectByName('tongue');
+  const tongue = root.getObjectByName(HEAD_NODES.tongue);
   if (tongue) forEachMesh(tongue, (m) => replaceMaterial(m, materials.tongue));
 
-  const eyes = ['eye-l', 'eye-r'].map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
+  const eyes = HEAD_NODES.eyes.map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
   const byName: Partial<Record<string, Material>> = { sclera: materials.sclera, iris: materials.iris, cornea: materials.cornea };
   for (const eye of eyes) {
     forEachMesh(eye, (m) => {
@@ -72,7 +73,7 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
     eyes,
     teeth,
     tongue,
-    jaw: root.getObjectByName('jaw'),
+    jaw: root.getObjectByName(HEAD_NODES.jaw),
     info,
     bounds: skin.geometry.boundingBox!.clone(),
   };

@@ -8,9 +8,11 @@ import {
   PerspectiveCamera,
   Scene,
   SRGBColorSpace,
+  Texture,
   Vector3,
   WebGLRenderer,
   type Material,
+  type Object3D,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
@@ -25,10 +27,12 @@ import {
   type RenderOptions,
 } from './view-options';
 
+/** A background colour (sRGB hex), or `transparent` to show the page behind the canvas. */
+export type ViewBackground = number | 'transparent';
+
 /** Options of the view. */
 export interface HeadViewOptions {
-  /** Background colour (sRGB hex). */
-  background: number;
+  background: ViewBackground;
   /** Vertical field of view in degrees. */
   fov: number;
   /** Cap on the device pixel ratio, to bound the cost of fill on dense screens. */
@@ -57,7 +61,7 @@ export interface RenderTiming {
 const KEY_DISTANCE = 1.3;
 const DEGREES = Math.PI / 180;
 
-export const HEAD_VIEW_DEFAULTS: Required<HeadViewOptions> = { background: 0x1d2024, fov: 28, maxPixelRatio: 2 };
+export const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({ background: 0x1d2024, fov: 28, maxPixelRatio: 2 });
 
 /** A three.js scene that shows a head: renderer, camera, orbit controls and the default lights. */
 export class HeadView {
@@ -75,24 +79,29 @@ export class HeadView {
   private frame = 0;
   private readonly frameHooks: FrameHook[] = [];
   private readonly resizeObserver: ResizeObserver;
+  /**
+   * Whether any of the canvas is in view: a view scrolled away or in a hidden element renders nothing (and runs no
+   * frame hooks), so a page with several faces pays only for those it shows. False until the observer first reports.
+   */
+  private inView = false;
+  private readonly viewObserver: IntersectionObserver;
 
   constructor(
     private readonly container: HTMLElement,
     options: Partial<HeadViewOptions> = {},
   ) {
     const o = { ...HEAD_VIEW_DEFAULTS, ...options };
-    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    // With an alpha channel the background can turn transparent later without a new context; an opaque background
+    // fills every pixel, so it looks the same as without one.
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, o.maxPixelRatio));
     this.renderer.outputColorSpace = SRGBColorSpace;
     this.renderer.toneMapping = ACESFilmicToneMapping;
     this.renderer.toneMappingExposure = 1.0;
     container.appendChild(this.renderer.domElement);
 
-    this.scene.background = new Color(o.background);
-    const pmrem = new PMREMGenerator(this.renderer);
-    this.scene.environment = pmrem.fromScene(new RoomEnvironment(), 0.04).texture;
+    this.setBackground(o.background);
     this.scene.environmentIntensity = 0.2;
-    pmrem.dispose();
 
     this.ambient = new HemisphereLight(0xf4f1ec, 0x3a302c);
     this.key = new DirectionalLight();
@@ -109,6 +118,10 @@ export class HeadView {
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
     this.resize();
+    this.viewObserver = new IntersectionObserver((entries) => {
+      this.inView = entries[entries.length - 1].isIntersecting;
+    });
+    this.viewObserver.observe(this.renderer.domElement);
   }
 
   /** Shows a head (replacing the one shown) and frames it from the front. */
@@ -118,6 +131,14 @@ export class HeadView {
     this.scene.add(head.root);
     this.frame_(head);
     this.applyRender();
+  }
+
+  /** Shows a background colour, or the page behind the canvas. */
+  setBackground(background: ViewBackground): void {
+    if (background === 'transparent') {
+      this.scene.background = null;
+      this.renderer.setClearColor(0x000000, 0);
+    } else this.scene.background = new Color(background);
   }
 
   /** Changes some light options; throws, changing nothing, on an unknown option or a value of the wrong type or range. */
@@ -145,14 +166,17 @@ export class HeadView {
   /** Renders a frame now and encodes the canvas as a PNG (what the user sees, at the canvas's pixel size). */
   snapshot(): Promise<Blob> {
     this.controls.update();
-    this.renderer.render(this.scene, this.camera);
+    this.renderFrame();
     // Read in the same task as the render, so the picture is there even without a preserved drawing buffer.
     return new Promise((resolve, reject) => {
       this.renderer.domElement.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the canvas could not be encoded as a PNG'))), 'image/png');
     });
   }
 
-  /** Runs `hook` before each rendered frame (until the returned function is called). It must not wait for anything. */
+  /**
+   * Runs `hook` before each rendered frame (until the returned function is called); frames are rendered only while
+   * the canvas is in view. It must not wait for anything.
+   */
   onFrame(hook: FrameHook): () => void {
     this.frameHooks.push(hook);
     return () => {
@@ -165,9 +189,10 @@ export class HeadView {
   start(): void {
     const loop = (now: number): void => {
       this.frame = requestAnimationFrame(loop);
+      if (!this.inView) return;
       for (let i = 0; i < this.frameHooks.length; i++) this.frameHooks[i](now);
       this.controls.update();
-      this.renderer.render(this.scene, this.camera);
+      this.renderFrame();
     };
     if (!this.frame) loop(performance.now());
   }
@@ -190,7 +215,7 @@ export class HeadView {
     const gl = this.renderer.getContext();
     const pixel = new Uint8Array(4);
     // One frame first, so that shader compilation and texture upload are not counted.
-    this.renderer.render(this.scene, this.camera);
+    this.renderFrame();
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     const start = performance.now();
     for (let i = 0; i < frames; i++) {
@@ -214,16 +239,38 @@ export class HeadView {
     };
   }
 
-  /** Stops rendering and frees the GPU resources and listeners. */
+  /**
+   * Stops rendering, frees the GPU resources of everything in the scene and the listeners, removes the canvas and
+   * gives its WebGL context back: the browser keeps a context alive until the canvas is collected otherwise, and
+   * warns (then drops the oldest) past 16 live ones.
+   */
   dispose(): void {
     cancelAnimationFrame(this.frame);
     this.frame = 0;
     this.frameHooks.length = 0;
     this.resizeObserver.disconnect();
+    this.viewObserver.disconnect();
     this.controls.dispose();
+    disposeTree(this.scene);
     this.scene.environment?.dispose();
     this.renderer.dispose();
+    // After dispose, which removed the renderer's context-lost listener: this loss is expected and logs nothing.
+    this.renderer.forceContextLoss();
     this.renderer.domElement.remove();
+  }
+
+  /** Renders the scene, making its environment map first if it has none yet. */
+  private renderFrame(): void {
+    if (!this.scene.environment) {
+      // Made on the first frame rendered, not with the view: a face that is never in view never pays for it (in
+      // software WebGL it is seconds of GPU work, which a lost context waits for).
+      const pmrem = new PMREMGenerator(this.renderer);
+      const room = new RoomEnvironment();
+      this.scene.environment = pmrem.fromScene(room, 0.04).texture;
+      room.dispose();
+      pmrem.dispose();
+    }
+    this.renderer.render(this.scene, this.camera);
   }
 
   private frame_(head: HeadModel): void {
@@ -278,5 +325,22 @@ export class HeadView {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+  }
+}
+
+/** Frees the geometries, materials and textures of every object under `root`, each once. */
+function disposeTree(root: Object3D): void {
+  const materials = new Set<Material>();
+  root.traverse((o) => {
+    // Meshes, lines and points: whatever draws a geometry.
+    if (!('geometry' in o)) return;
+    const withGeometry = o as Object3D & { geometry?: { dispose(): void }; material?: Material | Material[] };
+    withGeometry.geometry?.dispose();
+    const m = withGeometry.material;
+    if (m) for (const material of Array.isArray(m) ? m : [m]) materials.add(material);
+  });
+  for (const material of materials) {
+    for (const value of Object.values(material)) if (value instanceof Texture) value.dispose();
+    material.dispose();
   }
 }

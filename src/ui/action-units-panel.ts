@@ -73,7 +73,7 @@ export class ActionUnitsPanel {
   }
 
   /** Removes the folder and stops following the face. */
-  destroy(): void {
+  dispose(): void {
     this.unsubscribe();
     this.folder.destroy();
   }

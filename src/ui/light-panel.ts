@@ -30,7 +30,7 @@ export class LightPanel {
   }
 
   /** Removes the folder and stops following the face. */
-  destroy(): void {
+  dispose(): void {
     this.unsubscribe();
     this.folder.destroy();
   }

@@ -72,7 +72,7 @@ export class OutputsPanel {
   }
 
   /** Removes the folder, its frame hook and its timer. */
-  destroy(): void {
+  dispose(): void {
     clearInterval(this.timer);
     this.stopFrames();
     this.folder.destroy();

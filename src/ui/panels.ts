@@ -4,22 +4,29 @@ import { ActionUnitsPanel } from './action-units-panel';
 import { LightPanel } from './light-panel';
 import { OutputsPanel, type FrameSource } from './outputs-panel';
 import { PresetsPanel } from './presets-panel';
-import { RenderingPanel, type Resolution } from './rendering-panel';
+import { RenderingPanel } from './rendering-panel';
+import type { Resolution } from '../embed/face-options';
 
 export interface PanelsOptions {
+  /** The element the column is placed over, at its top right corner (it needs a position other than static). */
+  container: HTMLElement;
   /** Counts rendered frames for the fps output. */
   frames: FrameSource;
-  /** The head resolution shown, and what to do when the user picks another. */
+  /** The head resolution shown. */
   resolution: Resolution;
-  onResolution: (resolution: Resolution) => void;
+  /** What to do when the user picks another resolution; without it the resolution is not offered. */
+  onResolution?: ((resolution: Resolution) => void) | null;
   /** Width of the panel column in px. */
   width?: number;
 }
 
-const PANELS_DEFAULTS: Required<Pick<PanelsOptions, 'width'>> = { width: 280 };
+const PANELS_DEFAULTS: Required<Pick<PanelsOptions, 'width' | 'onResolution'>> = { width: 280, onResolution: null };
+
+/** The class of the column's root element (pages and tests find the panels by it). */
+export const PANELS_CLASS = 'softface-panels';
 
 /**
- * The app's lil-gui column on the right. The short, closed folders come first and the long Action Units list last,
+ * A face's lil-gui column on the right. The short, closed folders come first and the long Action Units list last,
  * so that every folder title and the outputs are on screen at 1024 x 768 without scrolling.
  */
 export class Panels {
@@ -32,8 +39,15 @@ export class Panels {
 
   constructor(face: FaceHandle, options: PanelsOptions) {
     const o = { ...PANELS_DEFAULTS, ...options };
-    this.gui = new GUI({ title: 'softface', width: o.width });
-    this.gui.domElement.id = 'panels';
+    this.gui = new GUI({ title: 'softface', width: o.width, container: o.container });
+    const style = this.gui.domElement.style;
+    // Where lil-gui places a column of its own on the page, but over the face's corner: each face has its own.
+    style.position = 'absolute';
+    style.top = '0';
+    style.right = '15px';
+    style.maxHeight = '100%';
+    style.zIndex = '1';
+    this.gui.domElement.classList.add(PANELS_CLASS);
     this.presets = new PresetsPanel(this.gui, face);
     this.rendering = new RenderingPanel(this.gui, face, { resolution: o.resolution, onResolution: o.onResolution });
     this.light = new LightPanel(this.gui, face);
@@ -45,12 +59,12 @@ export class Panels {
   }
 
   /** Removes every panel, with its listeners, timers and frame hooks. */
-  destroy(): void {
-    this.actionUnits.destroy();
-    this.outputs.destroy();
-    this.light.destroy();
-    this.rendering.destroy();
-    this.presets.destroy();
+  dispose(): void {
+    this.actionUnits.dispose();
+    this.outputs.dispose();
+    this.light.dispose();
+    this.rendering.dispose();
+    this.presets.dispose();
     this.gui.destroy();
   }
 }

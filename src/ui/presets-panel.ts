@@ -25,7 +25,7 @@ export class PresetsPanel {
   }
 
   /** Removes the folder and stops following the face. */
-  destroy(): void {
+  dispose(): void {
     this.unsubscribe();
     this.folder.destroy();
   }

@@ -1,22 +1,20 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import { RESOLUTIONS, type Resolution } from '../embed/face-options';
 import { downloadBlob, fileTimestamp } from './download';
-
-export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
-export type Resolution = (typeof RESOLUTIONS)[number];
 
 /** What the Rendering folder needs from the page. */
 export interface RenderingPanelOptions {
   /** The head resolution shown. */
   resolution: Resolution;
-  /** Called when the user picks another resolution (the page reloads with it). */
-  onResolution: (resolution: Resolution) => void;
+  /** Called when the user picks another resolution (the app reloads with it); without it none is offered. */
+  onResolution?: ((resolution: Resolution) => void) | null;
   /** Largest iteration count the sliders offer. */
   maxIterations?: number;
 }
 
-const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations'>> = { maxIterations: 20 };
+const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations' | 'onResolution'>> = { maxIterations: 20, onResolution: null };
 
 /**
  * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, the solver's length and position
@@ -55,7 +53,8 @@ export class RenderingPanel {
     this.add(this.folder.add(s, 'wireframe').onChange((v: boolean) => face.setRenderOptions({ wireframe: v })), 'wireframe');
     this.add(this.folder.add(s, 'showEyes').name('show eyes').onChange((v: boolean) => face.setRenderOptions({ showEyes: v })), 'show-eyes');
     this.add(this.folder.add(s, 'showTeeth').name('show teeth').onChange((v: boolean) => face.setRenderOptions({ showTeeth: v })), 'show-teeth');
-    this.add(this.folder.add(s, 'resolution', [...RESOLUTIONS]).name('mesh resolution').onChange((r: Resolution) => o.onResolution(r)), 'resolution');
+    const onResolution = o.onResolution;
+    if (onResolution) this.add(this.folder.add(s, 'resolution', [...RESOLUTIONS]).name('mesh resolution').onChange((r: Resolution) => onResolution(r)), 'resolution');
     this.add(
       this.folder.add(s, 'lengthIterations', 1, o.maxIterations, 1).name('length iterations').onChange((n: number) => face.setSkinParameters({ lengthIterations: n })),
       'length-iterations',
@@ -71,7 +70,7 @@ export class RenderingPanel {
   }
 
   /** Removes the folder and stops following the face. */
-  destroy(): void {
+  dispose(): void {
     this.unsubscribe();
     this.folder.destroy();
   }

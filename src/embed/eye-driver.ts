@@ -1,7 +1,7 @@
 import { Euler, Quaternion, type Object3D } from 'three';
 import { DEGREES } from '../core/math3';
 import { EyeSimulation, type EyeSimulationOptions } from '../core/eye-simulation';
-import type { EyeStats, FaceEyes, FaceHandle } from '../embed/face-handle';
+import type { EyeStats, FaceEyes, FaceHandle } from './face-handle';
 import type { FrameHook } from '../render/head-view';
 
 /** Something that runs a hook before every rendered frame (HeadView). */
@@ -71,10 +71,9 @@ export class EyeDriver implements FaceEyes {
     return { on: this.on, blinks: s.blinks, saccades: s.saccades, blink: s.blink, time: s.now, gaze: { yaw: s.yaw, pitch: s.pitch } };
   }
 
-  /** Stops following frames and puts eyes and lids back. */
+  /** Stops following frames, for good: the face it drives is going away, so nothing is put back. */
   dispose(): void {
     this.stopFrames();
-    if (this.on) this.putBack();
     this.on = false;
   }
 

@@ -1,0 +1,244 @@
+import { Quaternion, Vector3 } from 'three';
+import { DEGREES, eulerMatrix } from '../core/math3';
+import { parseRig, parseRigText } from '../core/rig-schema';
+import type { Rig } from '../core/rig-types';
+import { headColliders } from '../render/head-colliders';
+import { loadHeadModel, type HeadModel } from '../render/head-model';
+import { HeadView, type ViewBackground } from '../render/head-view';
+import { MuscleView } from '../render/muscle-view';
+import { SkinView } from '../render/skin-view';
+import { Panels } from '../ui/panels';
+import type { SolverMode } from '../worker/protocol';
+import { SkinSimulation } from '../worker/skin-simulation';
+import { EyeDriver } from './eye-driver';
+import { readExpression } from './expression-hash';
+import { FaceExpression } from './face-expression';
+import { FaceHandle } from './face-handle';
+import { checkFaceOption, checkFaceOptions, type FaceOptions, type SolverChoice } from './face-options';
+import { packageAssetBase } from './package-assets';
+
+/**
+ * One face in a container: its element (canvas and panels), view, head, solver, muscles, eyes and handle, built
+ * together and torn down together. `createFace` hands out its handle; `<soft-face>` also switches its panels and
+ * background.
+ */
+export class EmbeddedFace {
+  readonly handle: FaceHandle;
+  /** The face's own element in the container; the canvas and the panels are in it. */
+  readonly element: HTMLDivElement;
+  private readonly view: HeadView;
+  /** How to take back each part built so far, run last first by `dispose`. */
+  private readonly undo: (() => void)[] = [];
+  private panels: Panels | undefined;
+  private disposed = false;
+
+  private constructor(
+    container: HTMLElement,
+    private readonly options: Required<FaceOptions>,
+  ) {
+    this.handle = new FaceHandle(() => this.dispose());
+    this.element = container.ownerDocument.createElement('div');
+    this.element.className = 'softface';
+    // Through the style object, not a style attribute, so that a content security policy without 'unsafe-inline'
+    // styles allows it. The canvas fills the element; the panels are placed over its corner.
+    Object.assign(this.element.style, { position: 'relative', width: '100%', height: '100%', overflow: 'hidden' });
+    container.append(this.element);
+    this.view = new HeadView(this.element, { background: viewBackground(options.background) });
+    Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
+    this.handle.attachView(this.view);
+    this.view.start();
+  }
+
+  /**
+   * Builds a face in `container` and resolves once its head is shown and its solver runs. Bad options reject, naming
+   * the option, before anything is built; a failed or aborted start takes back whatever it had built.
+   */
+  static async create(container: HTMLElement, options?: FaceOptions, signal?: AbortSignal): Promise<EmbeddedFace> {
+    if (!container || container.nodeType !== 1) throw new Error(`createFace: needs a container element, got ${String(container)}`);
+    const o = checkFaceOptions(options);
+    signal?.throwIfAborted();
+    const face = new EmbeddedFace(container, o);
+    try {
+      await face.build(signal);
+    } catch (error) {
+      face.handle.fail(error as Error);
+      face.dispose();
+      throw error;
+    }
+    return face;
+  }
+
+  /** Shows or removes the face's panels. */
+  setPanels(on: boolean): void {
+    checkFaceOption('panels', on, 'setPanels');
+    this.alive();
+    if (on === !!this.panels) return;
+    if (on) {
+      const o = this.options;
+      this.panels = new Panels(this.handle, { container: this.element, frames: this.view, resolution: o.resolution, onResolution: o.onResolution });
+    } else {
+      this.panels!.dispose();
+      this.panels = undefined;
+    }
+  }
+
+  /** Whether the face shows its panels. */
+  hasPanels(): boolean {
+    return !!this.panels;
+  }
+
+  /** Changes the background: a colour `"#rrggbb"` or `"transparent"`; a bad value throws naming it. */
+  setBackground(background: string): void {
+    checkFaceOption('background', background, 'setBackground');
+    this.alive();
+    this.view.setBackground(viewBackground(background));
+  }
+
+  /** Stops and frees everything the face is made of and removes its element; a second call does nothing. */
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.handle.dispose();
+    this.panels?.dispose();
+    this.panels = undefined;
+    // Every part is taken back even if one fails; the first failure is reported after.
+    let failure: unknown;
+    const attempt = (step: () => void): void => {
+      try {
+        step();
+      } catch (error) {
+        failure ??= error;
+      }
+    };
+    while (this.undo.length > 0) attempt(this.undo.pop()!);
+    attempt(() => this.view.dispose());
+    this.element.remove();
+    if (failure !== undefined) throw failure;
+  }
+
+  private async build(signal: AbortSignal | undefined): Promise<void> {
+    const o = this.options;
+    const base = assetBase(o.assetBase);
+    const rigLoading = loadRig(o.rig, base);
+    // Awaited below; until then a failure must not count as unhandled if the head fails first.
+    rigLoading.catch(() => {});
+    const modelUrl = o.model === null ? new URL(`models/head-${o.resolution}.glb`, base).href : pageUrl(o.model);
+    let head: HeadModel;
+    try {
+      head = await loadHeadModel(modelUrl);
+    } catch (error) {
+      throw new Error(`the head could not be loaded from ${modelUrl}: ${(error as Error).message}`);
+    }
+    // Before the first render: the skin's attributes become dynamic. Once shown, the view frees the head with itself.
+    const skinView = new SkinView(head.skin);
+    this.view.setHead(head);
+    signal?.throwIfAborted();
+    const rig = await rigLoading;
+    signal?.throwIfAborted();
+
+    const geometry = head.skin.geometry;
+    const simulation = await SkinSimulation.create({
+      mode: solverMode(o.solver),
+      workers: o.workers,
+      renderPositions: geometry.getAttribute('position').array as Float32Array,
+      indices: geometry.index!.array as Uint16Array | Uint32Array,
+      colliders: headColliders(head),
+      muscles: rig.muscles,
+    });
+    this.undo.push(() => simulation.dispose());
+    signal?.throwIfAborted();
+    skinView.connect(simulation);
+    this.view.onFrame(() => {
+      simulation.advance();
+      skinView.update();
+    });
+
+    // The rig is in the model's frame, which the solver treats as the skin's own: the glyphs take the skin's transform.
+    head.root.updateMatrixWorld(true);
+    const muscles = new MuscleView(rig.muscles, head.skin.matrixWorld);
+    this.view.scene.add(muscles.group);
+    this.undo.push(() => muscles.dispose());
+    const jaw = jawTurner(head, rig);
+    const expression = new FaceExpression(rig, (contractions) => {
+      simulation.setContractions(contractions);
+      jaw?.(contractions);
+      muscles.setContractions(contractions);
+    });
+    this.handle.attach(simulation, expression);
+    this.handle.attachMuscles(muscles);
+    // Seeded from the clock: every face blinks differently; the state machine is seeded for its tests.
+    const eyes = new EyeDriver(this.handle, this.view, head.eyes, { simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 } });
+    this.undo.push(() => eyes.dispose());
+    this.handle.attachEyes(eyes);
+
+    const start = readExpression(o.expression, 'createFace: expression');
+    if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0) expression.set(start, 'createFace: expression');
+    if (Object.keys(o.light).length > 0) this.handle.setLight(o.light);
+    if (o.eyeSimulation) this.handle.setEyeSimulation(true);
+    if (o.panels) this.setPanels(true);
+  }
+
+  private alive(): void {
+    if (this.disposed) throw new Error('the face was disposed');
+  }
+}
+
+/** `auto` is `shared` on cross-origin isolated pages and `transfer` elsewhere; `shared` needs isolation. */
+function solverMode(choice: SolverChoice): SolverMode {
+  if (choice === 'auto') return crossOriginIsolated ? 'shared' : 'transfer';
+  if (choice === 'shared' && !crossOriginIsolated) {
+    console.warn("createFace: solver 'shared' needs a cross-origin isolated page (SharedArrayBuffer); using 'transfer'");
+    return 'transfer';
+  }
+  return choice;
+}
+
+function viewBackground(background: string): ViewBackground {
+  return background === 'transparent' ? 'transparent' : Number.parseInt(background.slice(1), 16);
+}
+
+/** A URL given by the page, made absolute against the page. */
+function pageUrl(url: string | URL): string {
+  return new URL(String(url), document.baseURI).href;
+}
+
+/** The folder models and rigs are fetched from, absolute and ending in a slash. */
+function assetBase(given: string | URL | null): string {
+  const base = given === null ? packageAssetBase() : pageUrl(given);
+  return base.endsWith('/') ? base : `${base}/`;
+}
+
+/** The rig given as an object (checked), at a URL, or the package's default rig. */
+async function loadRig(rig: string | URL | Rig | null, base: string): Promise<Rig> {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return parseRig(rig, 'createFace: rig');
+  const url = rig === null ? new URL('rigs/default.json', base).href : pageUrl(rig);
+  let text: string;
+  try {
+    const response = await fetch(url);
+    if (!response.ok) throw new Error(`${response.status} ${response.statusText}`);
+    text = await response.text();
+  } catch (error) {
+    throw new Error(`the muscle rig could not be loaded from ${url}: ${(error as Error).message}`);
+  }
+  return parseRigText(text, url);
+}
+
+/**
+ * Turns the lower teeth and tongue (the model's jaw node, placed at the jaw hinge) with the rig's jaw muscle, about
+ * the muscle's local x axis, by the angle its contraction asks for. Allocates nothing per call.
+ */
+function jawTurner(head: HeadModel, rig: Rig): ((contractions: Float32Array) => void) | undefined {
+  const index = rig.muscles.findIndex((m) => m.type === 'jaw');
+  const muscle = rig.muscles[index];
+  if (!head.jaw || !muscle || muscle.type !== 'jaw') return undefined;
+  const jaw = head.jaw;
+  const frame = new Array<number>(9);
+  eulerMatrix(muscle.rotation, frame);
+  const axis = new Vector3(frame[0], frame[3], frame[6]).normalize();
+  const rest = jaw.quaternion.clone();
+  const turn = new Quaternion();
+  return (contractions) => {
+    turn.setFromAxisAngle(axis, contractions[index] * muscle.maxAngle * DEGREES);
+    jaw.quaternion.multiplyQuaternions(turn, rest);
+  };
+}

@@ -1,0 +1,75 @@
+/**
+ * An expression as text, the form the app keeps in its URL hash (so that a copied link reopens the same face) and
+ * embedding pages give to `createFace` and `<soft-face>`: `AU12L=0.5&AU12R=0.5&preset:happiness=0.3` (non-zero
+ * values only; `URLSearchParams` writes the colon as `%3A`, and either form reads back; a leading `#` is optional).
+ */
+
+/** What the hash carries: Action Unit sliders by side id, and preset weights by name. */
+export interface HashExpression {
+  actionUnits: Record<string, number>;
+  presets: Record<string, number>;
+}
+
+/** The same entries as the text, as an object: `{ AU12: 0.8, 'preset:happiness': 0.3 }`. */
+export type ExpressionEntries = Readonly<Record<string, number>>;
+
+const PRESET_PREFIX = 'preset:';
+
+/** The hash (with its `#`) for an expression; zero values are left out. */
+export function encodeExpression(e: HashExpression): string {
+  const params = new URLSearchParams();
+  for (const [id, v] of Object.entries(e.actionUnits)) if (v !== 0) params.set(id, String(round(v)));
+  for (const [name, w] of Object.entries(e.presets)) if (w !== 0) params.set(PRESET_PREFIX + name, String(round(w)));
+  const text = params.toString();
+  return text ? `#${text}` : '';
+}
+
+/** Reads an expression from a hash (with or without its `#`); entries that are not finite numbers are skipped. */
+export function decodeExpression(hash: string): HashExpression {
+  const out: HashExpression = { actionUnits: {}, presets: {} };
+  for (const [key, text] of new URLSearchParams(hash.replace(/^#/, ''))) {
+    const value = Number(text);
+    if (text.trim() === '' || !Number.isFinite(value)) continue;
+    if (key.startsWith(PRESET_PREFIX)) out.presets[key.slice(PRESET_PREFIX.length)] = value;
+    else out.actionUnits[key] = value;
+  }
+  return out;
+}
+
+/**
+ * Reads an expression given as text or as entries, strictly: an entry whose value is not a finite number throws an
+ * error naming it (`what` says where it came from). Whether the ids and preset names exist is the face's to check.
+ */
+export function readExpression(expression: string | ExpressionEntries, what = 'expression'): HashExpression {
+  const out: HashExpression = { actionUnits: {}, presets: {} };
+  const add = (key: string, value: number, given: unknown): void => {
+    if (!Number.isFinite(value)) throw new Error(`${what}: ${key} needs a finite number, got ${show(given)}`);
+    if (key.startsWith(PRESET_PREFIX)) out.presets[key.slice(PRESET_PREFIX.length)] = value;
+    else out.actionUnits[key] = value;
+  };
+  if (typeof expression === 'string') {
+    // An empty value is a mistake, not 0.
+    for (const [key, text] of new URLSearchParams(expression.trim().replace(/^#/, ''))) add(key, text.trim() === '' ? NaN : Number(text), text);
+  } else if (typeof expression === 'object' && expression !== null && !Array.isArray(expression)) {
+    for (const [key, value] of Object.entries(expression)) add(key, typeof value === 'number' ? value : NaN, value);
+  } else {
+    throw new Error(`${what}: needs text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got ${show(expression)}`);
+  }
+  return out;
+}
+
+/** An expression as the entries of its text: `{ AU12L: 0.5, 'preset:happiness': 0.3 }`. */
+export function expressionEntries(e: HashExpression): Record<string, number> {
+  const out: Record<string, number> = { ...e.actionUnits };
+  for (const [name, weight] of Object.entries(e.presets)) out[PRESET_PREFIX + name] = weight;
+  return out;
+}
+
+function show(x: unknown): string {
+  return typeof x === 'string' ? JSON.stringify(x) : String(x);
+}
+
+/** Slider values have two decimals; four keep the link short without changing them. */
+function round(x: number): number {
+  return Math.round(x * 1e4) / 1e4;
+}

@@ -1,0 +1,105 @@
+import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
+import type { Rig } from '../core/rig-types';
+import type { HashExpression } from './expression-hash';
+
+/** Where a face's muscle contractions go after every change: the solver, the jaw's teeth, the muscle glyphs. */
+export type ContractionSink = (contractions: Float32Array) => void;
+
+/**
+ * A face's expression: the Action Unit sliders, preset weights and overlay of its rig, and the muscle contractions
+ * they add up to, handed to the sink after every change. Bad input throws, naming it, and changes nothing.
+ */
+export class FaceExpression {
+  private readonly state: ExpressionState;
+  /** Contraction per rig muscle, reused for every change. */
+  private readonly contractions: Float32Array;
+
+  constructor(
+    readonly rig: Rig,
+    private readonly sink: ContractionSink,
+  ) {
+    this.state = new ExpressionState(rig.presets);
+    this.contractions = new Float32Array(rig.muscles.length);
+  }
+
+  /** Sets an Action Unit's intensity (clamped to 0..1): `AU12` both sides, `AU12L` / `AU12R` one. */
+  setActionUnit(id: string, value: number): void {
+    this.state.setActionUnit(id, value);
+    this.send();
+  }
+
+  /** Sets a preset's weight (clamped to 0..1). */
+  applyPreset(name: string, weight: number): void {
+    this.state.applyPreset(name, weight);
+    this.send();
+  }
+
+  /** Zeroes every Action Unit and preset; the overlay stays. */
+  reset(): void {
+    this.state.reset();
+    this.send();
+  }
+
+  /**
+   * Replaces the sliders and preset weights by those given (the rest go to 0). Every id, preset name and value is
+   * checked before anything changes.
+   */
+  set(expression: HashExpression, what = 'expression'): void {
+    checkExpression(expression, this.state.listPresets().map((p) => p.name), what);
+    this.state.reset();
+    for (const [id, value] of Object.entries(expression.actionUnits)) this.state.setActionUnit(id, value);
+    for (const [name, weight] of Object.entries(expression.presets)) this.state.applyPreset(name, weight);
+    this.send();
+  }
+
+  /** Sets overlay entries (see FaceHandle.setOverlay); sends only if the overlay changed. Allocates nothing. */
+  setOverlay(ids: readonly string[], values: ArrayLike<number>): void {
+    let changed = false;
+    for (let i = 0; i < ids.length; i++) if (this.state.setOverlay(ids[i], values[i])) changed = true;
+    if (changed) this.send();
+  }
+
+  clearOverlay(): void {
+    if (this.state.clearOverlay()) this.send();
+  }
+
+  getActionUnits(): Record<string, number> {
+    return this.state.getActionUnits();
+  }
+
+  getOverlay(): Record<string, number> {
+    return this.state.getOverlay();
+  }
+
+  /** What each side adds up to with the presets and the overlay, clamped to 0..1. */
+  effective(): Record<string, number> {
+    return this.state.effective();
+  }
+
+  listActionUnits(): ActionUnitListing[] {
+    return this.state.listActionUnits();
+  }
+
+  listPresets(): PresetListing[] {
+    return this.state.listPresets();
+  }
+
+  private send(): void {
+    this.sink(this.state.muscleContractions(this.rig, this.contractions));
+  }
+}
+
+/**
+ * Checks an expression's Action Unit ids against the catalogue and its presets against `presets` (a rig's preset
+ * names), and that every value is finite; throws an error starting with `what` and naming the first bad entry.
+ */
+export function checkExpression(expression: HashExpression, presets: readonly string[], what: string): void {
+  for (const [id, value] of Object.entries(expression.actionUnits)) {
+    if (!isActionUnitId(id)) throw new Error(`${what}: unknown Action Unit id ${JSON.stringify(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
+    if (!Number.isFinite(value)) throw new Error(`${what}: ${id} needs a finite number, got ${String(value)}`);
+  }
+  for (const [name, weight] of Object.entries(expression.presets)) {
+    if (!presets.includes(name)) throw new Error(`${what}: unknown preset ${JSON.stringify(name)} (presets: ${presets.join(', ') || 'none'})`);
+    if (!Number.isFinite(weight)) throw new Error(`${what}: preset ${name} needs a finite weight, got ${String(weight)}`);
+  }
+}

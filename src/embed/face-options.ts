@@ -1,0 +1,134 @@
+import type { Rig } from '../core/rig-types';
+import { LIGHT_DEFAULTS, LIGHT_RANGES, checkOptions, type LightOptions } from '../render/view-options';
+import { readExpression, type ExpressionEntries } from './expression-hash';
+
+export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
+/** The head's mesh resolution: low (4,284 skin vertices), medium (17,091) or high (68,277). */
+export type Resolution = (typeof RESOLUTIONS)[number];
+
+export const SOLVER_CHOICES = ['auto', 'shared', 'transfer', 'main'] as const;
+/**
+ * Where the skin solver runs: `shared` (a worker on SharedArrayBuffers; needs a cross-origin isolated page),
+ * `transfer` (a worker passing buffers back and forth; works anywhere), `main` (on the page's thread, within a time
+ * budget per frame), or `auto`: `shared` where the page is isolated, `transfer` elsewhere.
+ */
+export type SolverChoice = (typeof SOLVER_CHOICES)[number];
+
+/** What `createFace` takes; every option may be left out. */
+export interface FaceOptions {
+  resolution?: Resolution;
+  /** The muscle rig: the URL of a rig document (JSON), or a rig object, checked as a document would be. */
+  rig?: string | URL | Rig | null;
+  /** The URL of a softface head model (GLB) to show instead of the package's head of `resolution`. */
+  model?: string | URL | null;
+  solver?: SolverChoice;
+  /**
+   * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of each length and orientation pass
+   * (the same shape, less time per frame where a core is free for it); `auto` takes 2 on machines with at least 4
+   * cores. Other modes solve on one thread.
+   */
+  workers?: 1 | 2 | 'auto';
+  /** Whether the face has its own lil-gui panels, over its top right corner. */
+  panels?: boolean;
+  /** The expression to start with: `"AU12=0.8&AU6L=0.5&preset:happiness=0.3"` or `{ AU12: 0.8, ... }`. */
+  expression?: string | ExpressionEntries;
+  /** Random blinks and gaze saccades (off by default, so that pictures are repeatable). */
+  eyeSimulation?: boolean;
+  /** Some light options (see `setLight`). */
+  light?: Partial<LightOptions>;
+  /** A colour `"#rrggbb"`, or `"transparent"` to show the page behind the face. */
+  background?: string;
+  /**
+   * Where models (`models/head-<resolution>.glb`) and rigs (`rigs/default.json`) are fetched from, relative to the
+   * page; by default the package's own files, found from the module's own URL.
+   */
+  assetBase?: string | URL | null;
+  /** Called when the user picks another resolution in the panels; without it the panels offer none. */
+  onResolution?: ((resolution: Resolution) => void) | null;
+}
+
+export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
+  resolution: 'medium',
+  rig: null,
+  model: null,
+  solver: 'auto',
+  workers: 'auto',
+  panels: false,
+  expression: '',
+  eyeSimulation: false,
+  light: {},
+  background: '#1d2024',
+  assetBase: null,
+  onResolution: null,
+});
+
+const COLOUR = /^#[0-9a-f]{6}$/i;
+
+function show(x: unknown): string {
+  if (typeof x === 'string') return JSON.stringify(x);
+  if (typeof x === 'function') return 'a function';
+  if (typeof x === 'object' && x !== null) return Array.isArray(x) ? 'an array' : 'an object';
+  return String(x);
+}
+
+function isUrl(x: unknown): x is string | URL {
+  return (typeof x === 'string' && x.trim() !== '') || x instanceof URL;
+}
+
+/**
+ * Checks one option and returns it; throws an error that starts with `what` (the caller: `createFace`, or the
+ * attribute of `<soft-face>` it came from) and names the option and the bad value.
+ */
+export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unknown, what: string): Required<FaceOptions>[K] {
+  const bad = (expected: string): Error => new Error(`${what}: ${key} must be ${expected}, got ${show(value)}`);
+  switch (key) {
+    case 'resolution':
+      if (!RESOLUTIONS.includes(value as Resolution)) throw bad(`one of ${RESOLUTIONS.join(', ')}`);
+      break;
+    case 'solver':
+      if (!SOLVER_CHOICES.includes(value as SolverChoice)) throw bad(`one of ${SOLVER_CHOICES.join(', ')}`);
+      break;
+    case 'workers':
+      if (value !== 1 && value !== 2 && value !== 'auto') throw bad('1, 2 or "auto"');
+      break;
+    case 'panels':
+    case 'eyeSimulation':
+      if (typeof value !== 'boolean') throw bad('true or false');
+      break;
+    case 'background':
+      if (typeof value !== 'string' || !(COLOUR.test(value) || value === 'transparent')) throw bad('a colour "#rrggbb" or "transparent"');
+      break;
+    case 'rig':
+      if (!(value === null || isUrl(value) || (typeof value === 'object' && !Array.isArray(value)))) throw bad('a URL or a rig object');
+      break;
+    case 'model':
+    case 'assetBase':
+      if (!(value === null || isUrl(value))) throw bad('a URL');
+      break;
+    case 'onResolution':
+      if (!(value === null || typeof value === 'function')) throw bad('a function');
+      break;
+    case 'light':
+      checkOptions<LightOptions>(`${what}: light`, value, LIGHT_DEFAULTS, LIGHT_RANGES);
+      break;
+    case 'expression':
+      // Whether its ids and presets exist is checked against the rig, once it is loaded.
+      readExpression(value as string, `${what}: expression`);
+      break;
+    default:
+      throw new Error(`${what}: unknown option ${show(key)} (options: ${Object.keys(FACE_DEFAULTS).join(', ')})`);
+  }
+  return value as Required<FaceOptions>[K];
+}
+
+/** Checks every option given and fills in the defaults; throws naming the first bad one. */
+export function checkFaceOptions(options: unknown, what = 'createFace'): Required<FaceOptions> {
+  if (options === undefined) return { ...FACE_DEFAULTS };
+  if (typeof options !== 'object' || options === null || Array.isArray(options)) throw new Error(`${what}: needs an object of options, got ${show(options)}`);
+  const out: Record<string, unknown> = { ...FACE_DEFAULTS };
+  for (const [key, value] of Object.entries(options)) {
+    // Left out and undefined mean the same.
+    if (value !== undefined) out[key] = checkFaceOption(key as keyof FaceOptions, value, what);
+  }
+  return out as unknown as Required<FaceOptions>;
+}

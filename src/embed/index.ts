@@ -1,0 +1,10 @@
+/** The package's entry: `import { createFace } from 'softface'`. The `<soft-face>` element is in `softface/element`. */
+export { createFace, type Face } from './create-face';
+export { FACE_DEFAULTS, RESOLUTIONS, SOLVER_CHOICES, type FaceOptions, type Resolution, type SolverChoice } from './face-options';
+export type { ExpressionEntries } from './expression-hash';
+export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay, SkinSnapshot } from './face-handle';
+export type { ActionUnitListing, PresetListing } from '../core/facs';
+export type { SkinParameters } from '../core/solver';
+export type { Rig } from '../core/rig-types';
+export type { RenderTiming } from '../render/head-view';
+export type { LightOptions, RenderOptions } from '../render/view-options';

@@ -1,0 +1,8 @@
+/**
+ * Where a face fetches the package's own models and rigs from when no `assetBase` is given. The library build puts
+ * them beside its modules, so they are found from the module's own URL wherever it is served from (node_modules, a
+ * static host, a CDN). This project's own pages, in development and in its app build, serve them from the site's root.
+ */
+export function packageAssetBase(): string {
+  return import.meta.env.MODE === 'library' ? new URL('./', import.meta.url).href : new URL(import.meta.env.BASE_URL, location.origin).href;
+}

@@ -1,0 +1,33 @@
+import { describe, expect, it } from 'vitest';
+import { ATTRIBUTE_DEFAULTS, readAttributes, readPresets, type FaceAttribute } from '../src/embed/element-attributes';
+
+const read = (attributes: Partial<Record<FaceAttribute, string>>) => readAttributes((a) => attributes[a] ?? null, ATTRIBUTE_DEFAULTS);
+
+describe('<soft-face> attributes', () => {
+  it('read as the options they ask for, absent ones as the defaults', () => {
+    expect(ATTRIBUTE_DEFAULTS).toMatchObject({ resolution: 'medium', solver: 'auto', panels: false, eyeSimulation: false, background: '#1d2024' });
+    expect(read({ resolution: 'low', panels: '', 'eye-simulation': 'eye-simulation', background: 'transparent', expression: '#AU12=0.8&preset:happiness=0.3', preset: 'surprise:0.5, fear' })).toEqual({
+      resolution: 'low',
+      solver: 'auto',
+      panels: true,
+      eyeSimulation: true,
+      background: 'transparent',
+      expression: { actionUnits: { AU12: 0.8 }, presets: { happiness: 0.3 } },
+      preset: { actionUnits: {}, presets: { surprise: 0.5, fear: 1 } },
+    });
+    expect(read({ panels: 'false', 'eye-simulation': 'TRUE' })).toMatchObject({ panels: false, eyeSimulation: true });
+  });
+
+  it('read only the attribute asked for, keeping the others', () => {
+    const current = { ...ATTRIBUTE_DEFAULTS, resolution: 'low' as const };
+    expect(readAttributes((a) => (a === 'panels' ? '' : 'bad'), current, 'panels')).toEqual({ ...current, panels: true });
+  });
+
+  it('reject a bad value, naming the attribute', () => {
+    expect(() => read({ resolution: 'ultra' })).toThrow('<soft-face>: resolution must be one of low, medium, high, got "ultra"');
+    expect(() => read({ panels: 'yes' })).toThrow('<soft-face>: panels must be present (on), "true" or "false", got "yes"');
+    expect(() => read({ expression: 'AU12=' })).toThrow('<soft-face> expression: AU12 needs a finite number, got ""');
+    expect(() => readPresets('happiness:lots')).toThrow('<soft-face>: preset "happiness:lots" must be a preset name and a weight, like "happiness:0.5"');
+    expect(() => readPresets(':1')).toThrow('<soft-face>: preset ":1" must be a preset name');
+  });
+});

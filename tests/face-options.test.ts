@@ -1,0 +1,31 @@
+import { describe, expect, it } from 'vitest';
+import { FACE_DEFAULTS, checkFaceOptions } from '../src/embed/face-options';
+
+describe('createFace options', () => {
+  it('fill in the defaults, and keep what is given', () => {
+    expect(checkFaceOptions(undefined)).toEqual(FACE_DEFAULTS);
+    const o = checkFaceOptions({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, resolutionUnused: undefined });
+    expect(o).toMatchObject({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, eyeSimulation: false });
+  });
+
+  it('reject a bad option with a message naming it and the value', () => {
+    const cases: [object, string][] = [
+      [{ resolution: 'ultra' }, 'createFace: resolution must be one of low, medium, high, got "ultra"'],
+      [{ solver: 'gpu' }, 'createFace: solver must be one of auto, shared, transfer, main, got "gpu"'],
+      [{ panels: 'yes' }, 'createFace: panels must be true or false, got "yes"'],
+      [{ eyeSimulation: 1 }, 'createFace: eyeSimulation must be true or false, got 1'],
+      [{ background: 'red' }, 'createFace: background must be a colour "#rrggbb" or "transparent", got "red"'],
+      [{ rig: 42 }, 'createFace: rig must be a URL or a rig object, got 42'],
+      [{ model: {} }, 'createFace: model must be a URL, got an object'],
+      [{ assetBase: '' }, 'createFace: assetBase must be a URL, got ""'],
+      [{ onResolution: 'reload' }, 'createFace: onResolution must be a function, got "reload"'],
+      [{ workers: 3 }, 'createFace: workers must be 1, 2 or "auto", got 3'],
+      [{ light: { keyAzimuth: 400 } }, 'createFace: light: keyAzimuth must be within 0..360, got 400'],
+      [{ expression: 'AU12=much' }, 'createFace: expression: AU12 needs a finite number, got "much"'],
+      [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12 needs a finite number, got "0.5"'],
+      [{ resolutoin: 'low' }, 'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, expression, eyeSimulation, light, background, assetBase, onResolution)'],
+    ];
+    for (const [options, message] of cases) expect(() => checkFaceOptions(options), JSON.stringify(options)).toThrow(message);
+    expect(() => checkFaceOptions('low')).toThrow('createFace: needs an object of options, got "low"');
+  });
+});
