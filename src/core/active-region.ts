@@ -12,6 +12,7 @@
  * that much, and the two solves agree to about that much. The skin's response fades slowly (the tissue under it is
  * soft next to the skin's stretch), so a local expression still reaches several centimetres out at this tolerance.
  */
+import { allocate, type Memory } from './constraint-lists';
 import type { SkinTopology } from './topology';
 
 /** Rings of vertices around the muscle-held ones that join the region when the muscle inputs change. */
@@ -63,12 +64,13 @@ export class ActiveRegion {
   private readonly quiet: Uint8Array;
   private frame = 0;
 
-  constructor(topology: SkinTopology, enabled: boolean) {
+  /** `memory`: where the vertex list lives (shared, for a partner thread to walk it). */
+  constructor(topology: SkinTopology, enabled: boolean, memory: Memory = 'local') {
     const n = topology.vertexCount;
     this.topology = topology;
     this.enabled = enabled;
     this.inside = new Uint8Array(n);
-    this.vertices = new Uint32Array(n);
+    this.vertices = allocate(Uint32Array, n, memory);
     this.ring = new Uint32Array(n);
     this.border = new Uint32Array(n);
     this.onRing = new Uint8Array(n);

@@ -22,11 +22,13 @@ export const BOARD_ARGUMENTS = 2;
 
 /**
  * Jobs: length passes (each thread projects half of each colour, and they meet after each colour), a part of the
- * orientation constraints; or leave the job loop.
+ * orientation constraints, the second half of the position or collision constraints; or leave the job loop.
  */
 export const JOB_LENGTHS = 1;
 export const JOB_ORIENTATION = 2;
-export const JOB_STOP = 3;
+export const JOB_POSITIONS = 3;
+export const JOB_COLLISIONS = 4;
+export const JOB_STOP = 5;
 
 /** Board checks before sleeping: about 20 to 50 microseconds of spinning, longer than a part's projection. */
 const SPIN_LIMIT = 2000;

@@ -2,6 +2,7 @@
  * The solver's heaviest loops as functions of one part of the constraint lists (see constraint-lists.ts): the leader
  * thread's SkinSolver and the partner thread's SolverPartner run the same code on the same shared arrays.
  */
+import { colliderDistance, type Collider } from './colliders';
 import type { EdgeLists, TriangleLists } from './constraint-lists';
 import { meet } from './partner-board';
 
@@ -25,6 +26,109 @@ export interface PartArrays {
    */
   unchecked: Uint8Array;
   listedTriangle: Int32Array;
+  /** The active region's vertices, ascending (see ActiveRegion). */
+  regionVertices: Uint32Array;
+  /**
+   * The colliders, and their current shapes (`COLLIDER_SHAPE` values each: a, b, up, radius), which the leader updates
+   * when an input moves one (the partner's copies of the colliders follow them, see `followShapes`).
+   */
+  colliders: Collider[];
+  colliderShapes: Float64Array;
+  /** Collision candidates: vertex, rest clearance and side of each (see SkinSolver.collisionCandidates). */
+  colliderVertices: Uint32Array;
+  colliderClearance: Float32Array;
+  colliderSide: Int8Array;
+  /** The candidates a frame checks, collider by collider: `activeCandidates[activeCandidateStart[c]..[c + 1]]`. */
+  activeCandidates: Uint32Array;
+  activeCandidateStart: Uint32Array;
+}
+
+/** Values per collider in `colliderShapes`: a, b and up (xyz each, zero when absent) and the radius. */
+export const COLLIDER_SHAPE = 10;
+
+/** Writes a collider's shape into `shapes`; returns whether it changed. */
+export function writeColliderShape(c: Collider, shapes: Float64Array, index: number): boolean {
+  const o = COLLIDER_SHAPE * index;
+  let changed = false;
+  for (let k = 0; k < COLLIDER_SHAPE; k++) {
+    const value = k < 3 ? c.a[k] : k < 6 ? (c.b ? c.b[k - 3] : 0) : k < 9 ? (c.up ? c.up[k - 6] : 0) : c.radius;
+    if (shapes[o + k] !== value) {
+      shapes[o + k] = value;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+/** Moves the colliders to their shapes in `shapes` (the partner's copies, after the leader's colliders moved). */
+export function followShapes(colliders: Collider[], shapes: Float64Array): void {
+  for (let c = 0; c < colliders.length; c++) {
+    const collider = colliders[c];
+    const o = COLLIDER_SHAPE * c;
+    for (let k = 0; k < 3; k++) {
+      collider.a[k] = shapes[o + k];
+      if (collider.b) collider.b[k] = shapes[o + 3 + k];
+      if (collider.up) collider.up[k] = shapes[o + 6 + k];
+    }
+    collider.radius = shapes[o + 9];
+  }
+}
+
+/**
+ * Position constraints (thesis 4.3.2) of the region's vertices `k0..k1`: pull each back toward rest by `stiffness`.
+ * The thesis adds the unit vector from rest to the vertex times the distance, which pushes it away; the stable form
+ * moves a fraction of the way back. Sinking below rest along the normal is resisted harder (by `extra` more), so
+ * folds bulge out rather than in.
+ */
+export function projectPositions(a: PartArrays, stiffness: number, extra: number, k0: number, k1: number): void {
+  const x = a.positions;
+  const X = a.rest;
+  const N = a.restNormals;
+  const V = a.regionVertices;
+  for (let j = k0; j < k1; j++) {
+    const i = 3 * V[j];
+    const ux = X[i] - x[i];
+    const uy = X[i + 1] - x[i + 1];
+    const uz = X[i + 2] - x[i + 2];
+    // Depth below rest along the normal (positive when sunk in).
+    const depth = ux * N[i] + uy * N[i + 1] + uz * N[i + 2];
+    const k = depth > 0 ? extra * depth : 0;
+    x[i] += stiffness * ux + k * N[i];
+    x[i + 1] += stiffness * uy + k * N[i + 1];
+    x[i + 2] += stiffness * uz + k * N[i + 2];
+  }
+}
+
+/**
+ * Collisions: a candidate vertex that was outside a collider at rest keeps its rest clearance. Half `half` (0 or 1)
+ * of each collider's candidates, or all of them when `halves` is 1; each candidate moves only its own vertex.
+ * `direction` is scratch (3 floats).
+ */
+export function projectCollisions(a: PartArrays, half: number, halves: number, direction: Float32Array): void {
+  const x = a.positions;
+  const list = a.activeCandidates;
+  const start = a.activeCandidateStart;
+  for (let c = 0; c < a.colliders.length; c++) {
+    const collider = a.colliders[c];
+    let k0 = start[c];
+    let k1 = start[c + 1];
+    if (halves === 2) {
+      const middle = (k0 + k1) >> 1;
+      if (half === 0) k1 = middle;
+      else k0 = middle;
+    }
+    for (let k = k0; k < k1; k++) {
+      const j = list[k];
+      const i = 3 * a.colliderVertices[j];
+      const d = colliderDistance(collider, x[i], x[i + 1], x[i + 2], direction, a.colliderSide[j]);
+      const push = a.colliderClearance[j] - d;
+      if (push > 0) {
+        x[i] += push * direction[0];
+        x[i + 1] += push * direction[1];
+        x[i + 2] += push * direction[2];
+      }
+    }
+  }
 }
 
 /**

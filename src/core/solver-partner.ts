@@ -1,12 +1,28 @@
-import { BOARD_DONE, BOARD_JOB, BOARD_PART, BOARD_RESULT, BOARD_SEQUENCE, JOB_LENGTHS, JOB_ORIENTATION, JOB_STOP, waitWhile, type Board } from './partner-board';
-import { projectLengths, projectOrientationPart, type PartArrays } from './solver-kernels';
+import {
+  BOARD_DONE,
+  BOARD_JOB,
+  BOARD_PART,
+  BOARD_RESULT,
+  BOARD_SEQUENCE,
+  JOB_COLLISIONS,
+  JOB_LENGTHS,
+  JOB_ORIENTATION,
+  JOB_POSITIONS,
+  JOB_STOP,
+  waitWhile,
+  type Board,
+} from './partner-board';
+import { followShapes, projectCollisions, projectLengths, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
 
 /**
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
- * projects the second half of each colour of a length pass, or the odd part of an orientation pass (see
- * constraint-lists.ts), while the leader projects the rest. The arrays are the leader's own, on shared memory (SkinSolver.partArrays).
+ * projects the second half of each colour of a length pass, of the region's position constraints or of each
+ * collider's candidates, or the odd part of an orientation pass (see constraint-lists.ts), while the leader projects
+ * the rest. The arrays are the leader's own, on shared memory (SkinSolver.partArrays).
  */
 export class SolverPartner {
+  private readonly direction = new Float32Array(3);
+
   constructor(
     private readonly arrays: PartArrays,
     private readonly board: Board,
@@ -26,6 +42,12 @@ export class SolverPartner {
       let result = 0;
       if (job === JOB_LENGTHS) for (let pass = 0; pass < part; pass++) projectLengths(this.arrays, args[0], args[1], words, 1);
       else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0] !== 0) ? 1 : 0;
+      else if (job === JOB_POSITIONS) projectPositions(this.arrays, args[0], args[1], part >> 1, part);
+      else if (job === JOB_COLLISIONS) {
+        // The leader's colliders may have moved with an input (the lower teeth with the jaw).
+        followShapes(this.arrays.colliders, this.arrays.colliderShapes);
+        projectCollisions(this.arrays, 1, 2, this.direction);
+      }
       Atomics.store(words, BOARD_RESULT, result);
       done = sequence;
       Atomics.store(words, BOARD_DONE, done);

@@ -22,9 +22,17 @@ import {
   type Memory,
   type TriangleLists,
 } from './constraint-lists';
-import { JOB_LENGTHS, JOB_ORIENTATION } from './partner-board';
+import { JOB_COLLISIONS, JOB_LENGTHS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
 import type { PartnerLink } from './partner-link';
-import { projectLengths, projectOrientationPart, type PartArrays } from './solver-kernels';
+import {
+  COLLIDER_SHAPE,
+  projectCollisions,
+  projectLengths,
+  projectOrientationPart,
+  projectPositions,
+  writeColliderShape,
+  type PartArrays,
+} from './solver-kernels';
 import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
@@ -232,6 +240,18 @@ export class SkinSolver {
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
     this.neighbourOffsets = neighbourOffsets(topology);
     this.blocks = vertexBlocks(topology);
+    this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory);
+    this.colliders = options.colliders ?? [];
+    const c = this.collisionCandidates(this.colliders);
+    this.colliderStart = c.start;
+    this.colliderVertices = c.vertices;
+    this.colliderClearance = c.clearance;
+    this.colliderSide = c.side;
+    this.activeCandidates = allocate(Uint32Array, c.vertices.length, memory);
+    this.activeCandidateStart = allocate(Uint32Array, this.colliders.length + 1, memory);
+    this.reached = new Uint32Array(c.vertices.length);
+    this.colliderShapes = allocate(Float64Array, COLLIDER_SHAPE * this.colliders.length, memory);
+    for (let k = 0; k < this.colliders.length; k++) writeColliderShape(this.colliders[k], this.colliderShapes, k);
     const triangleCount = topology.triangles.length / 3;
     this.parts = {
       positions: this.buffers.positions,
@@ -245,19 +265,15 @@ export class SkinSolver {
       triangles: this.triangleLists,
       unchecked: allocate(Uint8Array, triangleCount, memory),
       listedTriangle: allocate(Int32Array, triangleCount, memory),
+      regionVertices: this.region.vertices,
+      colliders: this.colliders,
+      colliderShapes: this.colliderShapes,
+      colliderVertices: c.vertices,
+      colliderClearance: c.clearance,
+      colliderSide: c.side,
+      activeCandidates: this.activeCandidates,
+      activeCandidateStart: this.activeCandidateStart,
     };
-    this.region = new ActiveRegion(topology, options.activeRegion ?? true);
-    this.colliders = options.colliders ?? [];
-    const c = this.collisionCandidates(this.colliders);
-    this.colliderStart = c.start;
-    this.colliderVertices = c.vertices;
-    this.colliderClearance = c.clearance;
-    this.colliderSide = c.side;
-    this.activeCandidates = new Uint32Array(c.vertices.length);
-    this.activeCandidateStart = new Uint32Array(this.colliders.length + 1);
-    this.reached = new Uint32Array(c.vertices.length);
-    this.colliderShapes = new Float64Array(COLLIDER_SHAPE * this.colliders.length);
-    for (let k = 0; k < this.colliders.length; k++) colliderShapeChanged(this.colliders[k], this.colliderShapes, k);
     this.setParameters(options.parameters ?? {});
     this.updateMuscles();
   }
@@ -361,7 +377,7 @@ export class SkinSolver {
   }
 
   /**
-   * Hands half of each length and orientation pass to a partner thread from the next pass on (null:
+   * Hands half of each position, length, orientation and collision pass to a partner thread from the next pass on (null:
    * this thread solves alone again). The shape is the same either way: the parts share no vertex.
    */
   attachPartner(link: PartnerLink | null): void {
@@ -529,7 +545,7 @@ export class SkinSolver {
     let count = 0;
     for (let c = 0; c < this.colliders.length; c++) {
       const collider = this.colliders[c];
-      if (!colliderShapeChanged(collider, this.colliderShapes, c) || !r.enabled) continue;
+      if (!writeColliderShape(collider, this.colliderShapes, c) || !r.enabled) continue;
       for (let j = this.colliderStart[c]; j < this.colliderStart[c + 1]; j++) {
         const v = this.colliderVertices[j];
         if (r.inside[v] === 1) continue;
@@ -611,31 +627,16 @@ export class SkinSolver {
     return Math.sqrt(largest2);
   }
 
-  /**
-   * Position constraints (thesis 4.3.2): pull each vertex back toward rest. The thesis adds the unit vector from rest
-   * to the vertex times the distance, which pushes it away; the stable form moves a fraction of the way back.
-   * Sinking below rest along the normal is resisted harder, so folds bulge out rather than in.
-   */
+  /** Position constraints (thesis 4.3.2; see projectPositions in solver-kernels.ts), half on the partner if any. */
   private projectPositions(): void {
-    const x = this.buffers.positions;
-    const X = this.topology.rest;
-    const N = this.topology.restNormals;
     const s = this.params.positionStiffness;
     const extra = s * (this.params.inwardResistance - 1);
-    const V = this.region.vertices;
     const count = this.region.count;
-    for (let j = 0; j < count; j++) {
-      const i = 3 * V[j];
-      const ux = X[i] - x[i];
-      const uy = X[i + 1] - x[i + 1];
-      const uz = X[i + 2] - x[i + 2];
-      // Depth below rest along the normal (positive when sunk in).
-      const depth = ux * N[i] + uy * N[i + 1] + uz * N[i + 2];
-      const k = depth > 0 ? extra * depth : 0;
-      x[i] += s * ux + k * N[i];
-      x[i + 1] += s * uy + k * N[i + 1];
-      x[i + 2] += s * uz + k * N[i + 2];
-    }
+    const partner = this.partner;
+    if (!partner) return projectPositions(this.parts, s, extra, 0, count);
+    partner.start(JOB_POSITIONS, count, s, extra);
+    projectPositions(this.parts, s, extra, 0, count >> 1);
+    partner.finish();
   }
 
   /**
@@ -749,27 +750,14 @@ export class SkinSolver {
 
   /**
    * Collisions: a vertex that was outside a collider at rest keeps at least its rest clearance (capped at 1 mm).
-   * Only the candidates in or next to the active region are checked (see listCandidates).
+   * Only the candidates in or next to the active region are checked (see listCandidates); half on the partner if any.
    */
   private projectCollisions(): void {
-    const x = this.buffers.positions;
-    const dir = this.direction;
-    const list = this.activeCandidates;
-    const start = this.activeCandidateStart;
-    for (let c = 0; c < this.colliders.length; c++) {
-      const collider = this.colliders[c];
-      for (let k = start[c]; k < start[c + 1]; k++) {
-        const j = list[k];
-        const i = 3 * this.colliderVertices[j];
-        const d = colliderDistance(collider, x[i], x[i + 1], x[i + 2], dir, this.colliderSide[j]);
-        const push = this.colliderClearance[j] - d;
-        if (push > 0) {
-          x[i] += push * dir[0];
-          x[i + 1] += push * dir[1];
-          x[i + 2] += push * dir[2];
-        }
-      }
-    }
+    const partner = this.partner;
+    if (!partner) return projectCollisions(this.parts, 0, 1, this.direction);
+    partner.start(JOB_COLLISIONS);
+    projectCollisions(this.parts, 0, 2, this.direction);
+    partner.finish();
   }
 
   /**
@@ -927,23 +915,6 @@ function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Arra
     out[4 * t + 3] = MIN_PROJECTED_AREA * twiceArea;
   }
   return out;
-}
-
-/** Numbers that give a collider's shape: a, b and up (xyz each, 0 when absent) and the radius. */
-const COLLIDER_SHAPE = 10;
-
-/** Stores collider `c`'s shape at its place in `shapes`; returns whether it differs from the one stored there. */
-function colliderShapeChanged(c: Collider, shapes: Float64Array, index: number): boolean {
-  const o = COLLIDER_SHAPE * index;
-  let changed = false;
-  for (let k = 0; k < COLLIDER_SHAPE; k++) {
-    const value = k < 3 ? c.a[k] : k < 6 ? (c.b ? c.b[k - 3] : 0) : k < 9 ? (c.up ? c.up[k - 6] : 0) : c.radius;
-    if (shapes[o + k] !== value) {
-      shapes[o + k] = value;
-      changed = true;
-    }
-  }
-  return changed;
 }
 
 /** A fixed hash of an integer to [0, 1). */

@@ -23,8 +23,8 @@ export interface FaceOptions {
   model?: string | URL | null;
   solver?: SolverChoice;
   /**
-   * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of each length and orientation pass
-   * (the same shape, less time per frame where a core is free for it); `auto` takes 2 on machines with at least 4
+   * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of most passes (the same shape,
+   * less time per frame where a core is free for it); `auto` takes 2 on machines with at least 4
    * cores. Other modes solve on one thread.
    */
   workers?: 1 | 2 | 'auto';

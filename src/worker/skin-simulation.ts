@@ -36,7 +36,7 @@ export interface SkinSimulationOptions {
   /** Defaults to `shared` on cross-origin isolated pages and `transfer` elsewhere. */
   mode?: SolverMode;
   /**
-   * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of each heavy pass (same shape, less
+   * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of most passes (same shape, less
    * time per frame where a core is free for it). `auto` (the default) takes 2 on machines with at least 4 cores.
    * Other modes solve on one thread.
    */
