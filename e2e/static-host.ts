@@ -34,9 +34,9 @@ export const STRICT_CSP = [
 export const ISOLATION_HEADERS = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
 
 /**
- * Serves the static hosts to `page` (through request interception: no server) and returns the paths asked of the
- * static host, in order. HTML pages get `pageHeaders`; every file is served as it is on disk, with the content type
- * of its extension, and a missing one is a 404.
+ * Serves the static host and the other site to `page` (through request interception: no server) and returns the
+ * paths asked of the static host, in order. The static host's HTML pages get `pageHeaders`, the other site's none;
+ * every file is served as it is on disk, with the content type of its extension, and a missing one is a 404.
  */
 export async function serveStatic(page: Page, pageHeaders: Record<string, string> = {}): Promise<string[]> {
   const asked: string[] = [];
@@ -47,7 +47,7 @@ export async function serveStatic(page: Page, pageHeaders: Record<string, string
       const [prefix, folder] = FOLDERS.find(([p]) => pathname.startsWith(p))!;
       const file = folder + decodeURIComponent(pathname.slice(prefix.length));
       if (!existsSync(file) || !statSync(file).isFile()) return route.fulfill({ status: 404, body: 'not found' });
-      return route.fulfill({ path: file, headers: file.endsWith('.html') ? pageHeaders : {} });
+      return route.fulfill({ path: file, headers: origin === STATIC_ORIGIN && file.endsWith('.html') ? pageHeaders : {} });
     });
   }
   return asked;
