@@ -4,5 +4,10 @@
  * static host, a CDN). This project's own pages, in development and in its app build, serve them from the site's root.
  */
 export function packageAssetBase(): string {
-  return import.meta.env.MODE === 'library' ? new URL('./', import.meta.url).href : new URL(import.meta.env.BASE_URL, location.origin).href;
+  const library = import.meta.env.MODE === 'library' || import.meta.env.MODE === 'standalone';
+  if (!library) return new URL(import.meta.env.BASE_URL, location.origin).href;
+  // Through a variable: written out as `new URL('./', import.meta.url)`, the build would take './' for a file of its
+  // own and put that file's contents in its place.
+  const module = import.meta.url;
+  return new URL('./', module).href;
 }

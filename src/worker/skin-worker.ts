@@ -10,6 +10,7 @@ import { controlLayout, controlViews, initControl, slotLayout } from './layout';
 import type { FromWorker, InitMessage, ToWorker } from './protocol';
 import { SharedOutput } from './shared-output';
 import { SolverHost } from './solver-host';
+import { spawnPartnerWorker } from './spawn-partner-worker';
 import { TransferOutput } from './transfer-output';
 
 const scope = self as unknown as DedicatedWorkerGlobalScope;
@@ -73,7 +74,7 @@ function init(m: InitMessage): void {
  */
 function startPartner(h: SolverHost): void {
   const board = createBoard();
-  const partner = new Worker(new URL('./partner-worker.ts', import.meta.url), { type: 'module', name: 'softface skin solver partner' });
+  const partner = spawnPartnerWorker();
   partner.addEventListener('message', () => h.solver.attachPartner(new PartnerLink(board)), { once: true });
   partner.addEventListener('error', (event) => {
     event.preventDefault();

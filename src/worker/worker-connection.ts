@@ -1,4 +1,5 @@
 import type { FromWorker, InitMessage, ReadyMessage, ToWorker } from './protocol';
+import { spawnSkinWorker } from './spawn-skin-worker';
 
 /** The skin worker, started and initialised: its messages, its failure if any, and its end. */
 export class WorkerConnection {
@@ -22,7 +23,7 @@ export class WorkerConnection {
 
   /** Starts a worker and resolves once it has built the skin and written its first frame. */
   static start(init: InitMessage): Promise<{ connection: WorkerConnection; ready: ReadyMessage }> {
-    const worker = new Worker(new URL('./skin-worker.ts', import.meta.url), { type: 'module', name: 'softface skin solver' });
+    const worker = spawnSkinWorker();
     return new Promise((resolve, reject) => {
       const finish = (outcome: () => void): void => {
         worker.removeEventListener('message', onMessage);

@@ -1,0 +1,44 @@
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vite';
+
+/**
+ * The library build (`npm run build:lib`), into `dist-lib/`. Mode `library`: ES modules with three.js left to the
+ * host (`softface.js`, the entry; `element.js`, which registers `<soft-face>`). Mode `standalone`, built second: one
+ * module with three.js inside (`softface.standalone.js`) for a plain `<script type="module">`. The skin worker (and
+ * within it the solver's partner worker) is inlined (started from a Blob URL, no eval), and the models and rigs are copied beside the modules, where a face
+ * looks for them by default (src/embed/package-assets.ts).
+ */
+const path = (p: string): string => fileURLToPath(new URL(p, import.meta.url));
+
+export default defineConfig(({ mode }) => {
+  if (mode !== 'library' && mode !== 'standalone') throw new Error(`vite.lib.config.ts builds in mode library or standalone, not ${mode}`);
+  const standalone = mode === 'standalone';
+  const entry: Record<string, string> = standalone
+    ? { 'softface.standalone': path('src/embed/standalone.ts') }
+    : { softface: path('src/embed/index.ts'), element: path('src/embed/element.ts') };
+  return {
+    base: './',
+    resolve: {
+      alias: [
+        { find: /^\.\/spawn-skin-worker$/, replacement: path('src/worker/spawn-skin-worker-inline.ts') },
+        { find: /^\.\/spawn-partner-worker$/, replacement: path('src/worker/spawn-partner-worker-inline.ts') },
+      ],
+    },
+    worker: { format: 'es' },
+    build: {
+      outDir: 'dist-lib',
+      // The standalone build runs second and adds its module to the first build's output.
+      emptyOutDir: !standalone,
+      copyPublicDir: !standalone,
+      target: 'es2022',
+      // In library mode this mangles names but keeps whitespace (and the pure annotations a host's bundler uses).
+      minify: true,
+      lib: { entry, formats: ['es'] },
+      rollupOptions: {
+        external: standalone ? [] : [/^three($|\/)/],
+        // Every module at the root, side by side: the default asset base is the folder of the module's own URL.
+        output: { chunkFileNames: '[name]-[hash].js' },
+      },
+    },
+  };
+});
