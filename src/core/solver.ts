@@ -80,9 +80,19 @@ export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
 /**
  * Relates the bending stiffness to the wavelength. For the scalar Laplacian constraint on the normal displacement,
  * projected once per outer iteration as the position constraint is, small-slope theory gives
- * lambda = 2 pi h (s_b / (C s_p))^(1/4) for edge spacing h; C was measured on triangle grids (see tests).
+ * lambda = 2 pi h (s_b / (C s_p))^(1/4) for the mesh spacing h across the folds (`SkinTopology.spacing`, the finest
+ * direction's: with the mean edge length, the forehead's long quads got a seventh of the stiffness, and both heads
+ * folded at their own mesh scale); C was measured on triangle grids (see tests).
  */
 export const BENDING_CALIBRATION = 6;
+
+/**
+ * The most bending share one projection takes; a vertex that needs more is projected in passes of equal parts. The
+ * share grows as the spacing to the -4th power, so fine skin asks for whole-strength bending: on the 68k forehead one
+ * such projection an iteration, against the muscles' hold, left vertices circling for good (a loop of some 40 frames,
+ * each move turning a little, which the relaxation cannot tell from progress); the same share in thirds converges.
+ */
+export const MAX_BENDING_SHARE = 0.35;
 
 /**
  * Skin closer than this to a collider at rest (metres) is checked against it: the lids over the eyes, the lips over
@@ -161,6 +171,9 @@ export class SkinSolver {
   private readonly held: Uint32Array;
   private heldCount = 0;
   private readonly bendStiffness: Float32Array;
+  /** Bending projections of each vertex per outer iteration, and the most any vertex takes (see setParameters). */
+  private readonly bendPasses: Uint8Array;
+  private maxBendPasses = 1;
   /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
   private readonly triangleFrames: Float32Array;
   /** The lists the per-frame loops walk (see constraint-lists.ts), part by part. */
@@ -228,6 +241,7 @@ export class SkinSolver {
     this.relaxation = new Float32Array(n).fill(1);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
+    this.bendPasses = new Uint8Array(n);
     // A fixed, deterministic per-vertex value in [-0.25, 0.75): breaks the symmetry of a flat compressed patch so it
     // buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than sink. A larger
     // mean lifts the whole patch in one bulge instead of folding it.
@@ -293,18 +307,26 @@ export class SkinSolver {
     for (let v = 0; v < n; v++) {
       const h = this.topology.spacing[v];
       const ratio = next.wrinkleSpacing > 0 && h > 0 ? next.wrinkleSpacing / (twoPi * h) : 0;
-      this.bendStiffness[v] = Math.min(1, BENDING_CALIBRATION * next.positionStiffness * ratio ** 4);
+      // Up to a whole share, in passes of at most MAX_BENDING_SHARE.
+      const share = Math.min(1, BENDING_CALIBRATION * next.positionStiffness * ratio ** 4);
+      const passes = Math.max(1, Math.ceil(share / MAX_BENDING_SHARE));
+      this.bendPasses[v] = passes;
+      this.bendStiffness[v] = share / passes;
     }
-    // Skin at a collider and the ring around it: see COLLIDER_BENDING_STIFFNESS.
+    // Skin at a collider and the ring around it: one pass, see COLLIDER_BENDING_STIFFNESS.
     const start = this.topology.neighbourStart;
     const nb = this.topology.neighbours;
+    const cap = (v: number): void => {
+      this.bendStiffness[v] = Math.min(COLLIDER_BENDING_STIFFNESS, this.bendPasses[v] * this.bendStiffness[v]);
+      this.bendPasses[v] = 1;
+    };
     for (let j = 0; j < this.colliderVertices.length; j++) {
       const v = this.colliderVertices[j];
-      if (this.bendStiffness[v] > COLLIDER_BENDING_STIFFNESS) this.bendStiffness[v] = COLLIDER_BENDING_STIFFNESS;
-      for (let k = start[v]; k < start[v + 1]; k++) {
-        if (this.bendStiffness[nb[k]] > COLLIDER_BENDING_STIFFNESS) this.bendStiffness[nb[k]] = COLLIDER_BENDING_STIFFNESS;
-      }
+      cap(v);
+      for (let k = start[v]; k < start[v + 1]; k++) cap(nb[k]);
     }
+    this.maxBendPasses = 1;
+    for (let v = 0; v < n; v++) if (this.bendPasses[v] > this.maxBendPasses) this.maxBendPasses = this.bendPasses[v];
     // New parameters start a new motion, as new muscle inputs do.
     this.restartMotion();
   }
@@ -698,10 +720,11 @@ export class SkinSolver {
 
   /**
    * Bending: keeps the Laplacian of the normal displacement near zero (the rest curvature), scaled per vertex by the
-   * local edge spacing so that its balance against the position constraints gives folds of `wrinkleSpacing` at
-   * every mesh resolution (thesis 3.1.2 wishes for such a skin parameter). One sweep in vertex order, on this thread:
-   * the order sets which folds form (a sweep colour by colour, which two threads could share, makes finer folds on
-   * the finer meshes), so it stays as the wrinkle spacing was calibrated with.
+   * local mesh spacing so that its balance against the position constraints gives folds of `wrinkleSpacing` at every
+   * mesh resolution (thesis 3.1.2 wishes for such a skin parameter). A vertex whose share exceeds MAX_BENDING_SHARE
+   * is projected in several passes, one after another over the region, each of an equal part of it. Each pass is one
+   * sweep in vertex order, on this thread: the order sets which folds form (a sweep colour by colour, which two
+   * threads could share, made finer folds on the finer meshes), so it stays as the wrinkle spacing was calibrated with.
    */
   private projectBending(): void {
     if (this.params.wrinkleSpacing <= 0) return;
@@ -711,39 +734,42 @@ export class SkinSolver {
     const start = this.topology.neighbourStart;
     const nb = this.neighbourOffsets;
     const stiffness = this.bendStiffness;
+    const passes = this.bendPasses;
     const V = this.region.vertices;
     const count = this.region.count;
-    for (let k = 0; k < count; k++) {
-      const v = V[k];
-      const s = stiffness[v];
-      const j0 = start[v];
-      const j1 = start[v + 1];
-      const degree = j1 - j0;
-      if (s === 0 || degree === 0) continue;
-      const i = 3 * v;
-      const nx = N[i];
-      const ny = N[i + 1];
-      const nz = N[i + 2];
-      // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal.
-      let mean = 0;
-      for (let j = j0; j < j1; j++) {
-        const k = nb[j];
-        mean += (x[k] - X[k]) * nx + (x[k + 1] - X[k + 1]) * ny + (x[k + 2] - X[k + 2]) * nz;
-      }
-      mean /= degree;
-      const own = (x[i] - X[i]) * nx + (x[i + 1] - X[i + 1]) * ny + (x[i + 2] - X[i + 2]) * nz;
-      const C = mean - own;
-      // Gradient: -n at the vertex, n / degree at each neighbour; squared norm 1 + 1 / degree.
-      const lambda = (s * C) / (1 + 1 / degree);
-      x[i] += lambda * nx;
-      x[i + 1] += lambda * ny;
-      x[i + 2] += lambda * nz;
-      const q = lambda / degree;
-      for (let j = j0; j < j1; j++) {
-        const k = nb[j];
-        x[k] -= q * nx;
-        x[k + 1] -= q * ny;
-        x[k + 2] -= q * nz;
+    for (let pass = 0; pass < this.maxBendPasses; pass++) {
+      for (let r = 0; r < count; r++) {
+        const v = V[r];
+        const s = stiffness[v];
+        const j0 = start[v];
+        const j1 = start[v + 1];
+        const degree = j1 - j0;
+        if (passes[v] <= pass || s === 0 || degree === 0) continue;
+        const i = 3 * v;
+        const nx = N[i];
+        const ny = N[i + 1];
+        const nz = N[i + 2];
+        // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal.
+        let mean = 0;
+        for (let j = j0; j < j1; j++) {
+          const k = nb[j];
+          mean += (x[k] - X[k]) * nx + (x[k + 1] - X[k + 1]) * ny + (x[k + 2] - X[k + 2]) * nz;
+        }
+        mean /= degree;
+        const own = (x[i] - X[i]) * nx + (x[i + 1] - X[i + 1]) * ny + (x[i + 2] - X[i + 2]) * nz;
+        const C = mean - own;
+        // Gradient: -n at the vertex, n / degree at each neighbour; squared norm 1 + 1 / degree.
+        const lambda = (s * C) / (1 + 1 / degree);
+        x[i] += lambda * nx;
+        x[i + 1] += lambda * ny;
+        x[i + 2] += lambda * nz;
+        const q = lambda / degree;
+        for (let j = j0; j < j1; j++) {
+          const k = nb[j];
+          x[k] -= q * nx;
+          x[k + 1] -= q * ny;
+          x[k + 2] -= q * nz;
+        }
       }
     }
   }
