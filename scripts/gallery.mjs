@@ -63,7 +63,7 @@ try {
   }
   await page.evaluate(() => window.face.ready);
   // The page's panel column (280 px on the right) would cover part of the face in this 640 px window.
-  await page.addStyleTag({ content: '#panels, #status { display: none !important; }' });
+  await page.addStyleTag({ content: '.softface-panels, #status { display: none !important; }' });
   const items =
     only.length > 0
       ? only

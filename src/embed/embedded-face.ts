@@ -166,7 +166,8 @@ export class EmbeddedFace {
     });
     this.handle.attach(simulation, expression);
     this.handle.attachMuscles(muscles);
-    // Seeded from the clock: every face blinks differently; the state machine is seeded for its tests.
+    // Seeded from the clock and a random number: every face blinks differently, even two made in the same
+    // millisecond; the state machine takes a seed for its tests.
     const eyes = new EyeDriver(this.handle, this.view, head.eyes, { simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 } });
     this.undo.push(() => eyes.dispose());
     this.handle.attachEyes(eyes);

@@ -91,7 +91,10 @@ export class FaceHandle {
   private resolveReady!: () => void;
   private rejectReady!: (error: Error) => void;
 
-  /** `teardown` stops and frees everything the face is made of; `dispose` calls it once. */
+  /**
+   * `teardown` stops and frees everything the face is made of; `dispose` calls it once.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
   constructor(private readonly teardown: () => void = () => {}) {
     this.ready = new Promise<void>((resolve, reject) => {
       this.resolveReady = resolve;
@@ -101,24 +104,36 @@ export class FaceHandle {
     this.ready.catch(() => {});
   }
 
-  /** Connects the running simulation and the expression that drives its muscles, and resolves `ready`. */
+  /**
+   * Connects the running simulation and the expression that drives its muscles, and resolves `ready`.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
   attach(simulation: SkinSimulation, expression: FaceExpression): void {
     this.simulation = simulation;
     this.expression = expression;
     this.resolveReady();
   }
 
-  /** Connects the view that shows the face, for `setLight` and `setRenderOptions` (usable before `ready`). */
+  /**
+   * Connects the view that shows the face, for `setLight` and `setRenderOptions` (usable before `ready`).
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
   attachView(view: FaceView): void {
     this.view = view;
   }
 
-  /** Connects the eye simulation that `setEyeSimulation` switches. */
+  /**
+   * Connects the eye simulation that `setEyeSimulation` switches.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
   attachEyes(eyes: FaceEyes): void {
     this.eyes = eyes;
   }
 
-  /** Connects the muscle glyphs that `setMuscleDisplay` shows, and shows what was asked for so far. */
+  /**
+   * Connects the muscle glyphs that `setMuscleDisplay` shows, and shows what was asked for so far.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
   attachMuscles(muscles: FaceMuscles): void {
     this.muscles = muscles;
     this.showMuscles();
@@ -134,7 +149,10 @@ export class FaceHandle {
     };
   }
 
-  /** Rejects `ready`: the face could not start. */
+  /**
+   * Rejects `ready`: the face could not start.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
   fail(error: Error): void {
     this.rejectReady(error);
   }
