@@ -1,8 +1,8 @@
 /**
  * Solver benchmark: `npm run bench`. Prints two tables and writes bench-results/solver.json.
  *
- * 1. The loops: for each head resolution, length-iteration count and thread count, solves frames of a held expression (brows
- *    raised, one mouth corner pulled) over the whole mesh and reports the median and 90th-percentile frame time, the
+ * 1. The loops: for each head resolution, length-iteration count and thread count, solves frames of a held
+ *    expression (brows raised, one mouth corner pulled) over the whole mesh and reports the median and 90th-percentile frame time, the
  *    nanoseconds per edge projection and the milliseconds for normals, bending and orientation.
  * 2. The rig: the head as the page simulates it (solver host, colliders, default rig; see
  *    tests/fixtures/head-simulation.ts) from rest to a held expression, with the active region: its size, the median

@@ -12,7 +12,7 @@
  * that much, and the two solves agree to about that much. The skin's response fades slowly (the tissue under it is
  * soft next to the skin's stretch), so a local expression still reaches several centimetres out at this tolerance.
  */
-import { allocate, type Memory } from './constraint-lists';
+import { allocate, type Memory } from './memory';
 import type { SkinTopology } from './topology';
 
 /** Rings of vertices around the muscle-held ones that join the region when the muscle inputs change. */

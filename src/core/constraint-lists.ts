@@ -12,6 +12,7 @@
  * the order. The vertices are in reverse Cuthill-McKee order (see topology.ts): the blocks are bands a few rings wide
  * across the mesh, so any moving patch spans many of them, about as many even as odd.
  */
+import { allocate, type Memory } from './memory';
 import type { SkinTopology } from './topology';
 
 /** The constraints within even blocks, within odd ones, across the boundaries of even blocks and of odd ones. */
@@ -20,15 +21,6 @@ export const PART_ODD = 1;
 export const PART_EVEN_SEAM = 2;
 export const PART_ODD_SEAM = 3;
 export const PARTS = 4;
-
-/** Where memory for lists comes from: plain, or shared so that a partner thread sees the same lists. */
-export type Memory = 'local' | 'shared';
-
-/** A typed array of `length` elements, on a SharedArrayBuffer when `memory` is `shared`. */
-export function allocate<T>(Type: { new (buffer: ArrayBufferLike): T; BYTES_PER_ELEMENT: number }, length: number, memory: Memory): T {
-  const bytes = Type.BYTES_PER_ELEMENT * length;
-  return new Type(memory === 'shared' ? new SharedArrayBuffer(bytes) : new ArrayBuffer(bytes));
-}
 
 /**
  * The length constraints, colour by colour as the topology orders them. Within a colour no two edges share a vertex,

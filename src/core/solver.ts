@@ -2,12 +2,12 @@
  * The skin solver (thesis 3.1.2 and 4.3): every frame, position, muscle and length constraints are projected in
  * that order, a number of times, over flat Float32Arrays. Added to the thesis: a bending constraint that sets the
  * wrinkle spacing in millimetres, collisions with rigid shapes (eyes, teeth), orientation constraints, a per-vertex
- * relaxation that turns cycles into convergence (see `relax`), and the active region: only skin that moves is solved.
+ * relaxation that turns cycles into convergence (see `relax`), the active region: only skin that moves is solved, and
+ * a partner thread that can take half of most passes with the same result (see solver-partner.ts).
  */
 import { ACTIVE_GROW, ActiveRegion } from './active-region';
 import { colliderDistance, slabSide, type Collider } from './colliders';
 import {
-  allocate,
   createEdgeLists,
   createTriangleLists,
   fillEdgeLists,
@@ -19,9 +19,9 @@ import {
   PART_ODD_SEAM,
   vertexBlocks,
   type EdgeLists,
-  type Memory,
   type TriangleLists,
 } from './constraint-lists';
+import { allocate, type Memory } from './memory';
 import { JOB_COLLISIONS, JOB_LENGTHS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import {
@@ -395,7 +395,7 @@ export class SkinSolver {
    */
   partArrays(): PartArrays {
     if (this.memory !== 'shared') throw new Error('only a solver on shared memory can have a partner thread');
-    return { ...this.parts };
+    return this.parts;
   }
 
   /**

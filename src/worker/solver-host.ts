@@ -2,7 +2,7 @@ import type { Collider } from '../core/colliders';
 import { JawFollower } from '../core/jaw-follower';
 import { MuscleRig } from '../core/muscles';
 import type { Muscle } from '../core/rig-types';
-import type { Memory } from '../core/constraint-lists';
+import type { Memory } from '../core/memory';
 import { SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
 import { buildTopology, describeTopology, type SkinTopology } from '../core/topology';
 import { CONSTRAINT_INDEX, CONSTRAINT_KINDS, readParameters, writeFrameHeader, writeSlotBounds, type FrameHeader, type FrameSlot } from './layout';
