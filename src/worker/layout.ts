@@ -34,6 +34,7 @@ export const PARAMETER_INDEX: Readonly<Record<keyof SkinParameters, number>> = {
   inwardResistance: 6,
   bulge: 7,
   sleepTolerance: 8,
+  momentum: 9,
 };
 const PARAMETER_NAMES = Object.keys(PARAMETER_INDEX) as (keyof SkinParameters)[];
 export const PARAMETER_COUNT = PARAMETER_NAMES.length;
