@@ -1,5 +1,6 @@
 import { Quaternion, Vector3 } from 'three';
 import { DEGREES, eulerMatrix } from '../core/math3';
+import { RigDocument } from '../core/rig-document';
 import { parseRig, parseRigText } from '../core/rig-schema';
 import type { Rig } from '../core/rig-types';
 import { headColliders } from '../render/head-colliders';
@@ -11,6 +12,8 @@ import { Panels } from '../ui/panels';
 import type { SolverMode } from '../worker/protocol';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { EyeDriver } from './eye-driver';
+import { FaceEditor } from './face-editor';
+import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
 import { FaceHandle } from './face-handle';
@@ -158,14 +161,32 @@ export class EmbeddedFace {
     const muscles = new MuscleView(rig.muscles, head.skin.matrixWorld);
     this.view.scene.add(muscles.group);
     this.undo.push(() => muscles.dispose());
-    const jaw = jawTurner(head, rig);
+    // The jaw node's rest turn, taken once: an edited jaw muscle turns it from there.
+    const jawRest = head.jaw?.quaternion.clone();
+    let jaw = jawTurner(head, rig, jawRest);
     const expression = new FaceExpression(rig, (contractions) => {
       simulation.setContractions(contractions);
       jaw?.(contractions);
       muscles.setContractions(contractions);
     });
+    const document = new RigDocument(rig);
+    const binding = new RigBinding(document, {
+      simulation,
+      muscles,
+      expression,
+      jawChanged: (edited) => {
+        if (head.jaw && jawRest) head.jaw.quaternion.copy(jawRest);
+        jaw = jawTurner(head, edited, jawRest);
+      },
+    });
+    this.undo.push(() => binding.dispose());
     this.handle.attach(simulation, expression);
     this.handle.attachMuscles(muscles);
+    // After the binding: listeners of the handle's 'rig' change see a face that already shows the edit.
+    this.handle.attachRig(document);
+    const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits());
+    this.undo.push(() => editor.dispose());
+    this.handle.attachEditor(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same
     // millisecond; the state machine takes a seed for its tests.
     const eyes = new EyeDriver(this.handle, this.view, head.eyes, { simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 } });
@@ -228,15 +249,14 @@ async function loadRig(rig: string | URL | Rig | null, base: string): Promise<Ri
  * Turns the lower teeth and tongue (the model's jaw node, placed at the jaw hinge) with the rig's jaw muscle, about
  * the muscle's local x axis, by the angle its contraction asks for. Allocates nothing per call.
  */
-function jawTurner(head: HeadModel, rig: Rig): ((contractions: Float32Array) => void) | undefined {
+function jawTurner(head: HeadModel, rig: Rig, rest: Quaternion | undefined): ((contractions: Float32Array) => void) | undefined {
   const index = rig.muscles.findIndex((m) => m.type === 'jaw');
   const muscle = rig.muscles[index];
-  if (!head.jaw || !muscle || muscle.type !== 'jaw') return undefined;
+  if (!head.jaw || !rest || !muscle || muscle.type !== 'jaw') return undefined;
   const jaw = head.jaw;
   const frame = new Array<number>(9);
   eulerMatrix(muscle.rotation, frame);
   const axis = new Vector3(frame[0], frame[3], frame[6]).normalize();
-  const rest = jaw.quaternion.clone();
   const turn = new Quaternion();
   return (contractions) => {
     turn.setFromAxisAngle(axis, contractions[index] * muscle.maxAngle * DEGREES);

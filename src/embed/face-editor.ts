@@ -1,0 +1,169 @@
+import { Raycaster, Vector2, Vector3, type Camera } from 'three';
+import type { RigDocument } from '../core/rig-document';
+import type { Muscle } from '../core/rig-types';
+import type { HeadView } from '../render/head-view';
+import { MuscleGizmo, type GizmoMode, type GizmoPart } from '../render/muscle-gizmo';
+import type { MuscleView } from '../render/muscle-view';
+import { gizmoParts, type FaceEditorView, type FaceHandle } from './face-handle';
+
+/** A pointer that moves less than this (px) between press and release clicks rather than drags. */
+const CLICK_SLOP = 4;
+
+/** Whether a key event comes from a text field, where keys are typing, not commands. */
+export function typingInto(event: KeyboardEvent): boolean {
+  const t = event.target as HTMLElement | null;
+  return !!t && (t.isContentEditable || t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT');
+}
+
+/**
+ * The muscle editor on a face's canvas: a click on a muscle's glyph selects it (a raycast against the glyphs), the
+ * selected glyph is highlighted, and a TransformControls gizmo holds one of its parts; a drag is one undo step whose
+ * every pointer move updates that muscle alone on the skin. While on, W / E / R switch the gizmo to move / turn /
+ * scale (E only with a muscle selected: without one, E is the editor's own switch in the panels) and Escape clears
+ * the selection. Orbiting pauses while the gizmo drags.
+ */
+export class FaceEditor implements FaceEditorView {
+  private readonly gizmo: MuscleGizmo;
+  private readonly raycaster = new Raycaster();
+  private readonly pointer = new Vector2();
+  private readonly scratch = new Vector3();
+  private on = false;
+  private selected: string | null = null;
+  private down: { x: number; y: number; gizmo: boolean } | null = null;
+  private readonly unsubscribe: () => void;
+  private readonly canvas: HTMLCanvasElement;
+  private readonly camera: Camera;
+
+  constructor(
+    private readonly handle: FaceHandle,
+    private readonly view: HeadView,
+    private readonly muscles: MuscleView,
+    private readonly document: RigDocument,
+    /** Whether edits are mirrored onto the twin (the panel's "mirror edits"). */
+    private readonly mirror: () => boolean = () => false,
+  ) {
+    this.canvas = view.renderer.domElement;
+    this.camera = view.camera;
+    this.gizmo = new MuscleGizmo(this.camera, this.canvas, muscles.group, view.scene, {
+      start: () => document.begin(),
+      change: (partial) => {
+        if (this.selected === null) return;
+        try {
+          document.updateMuscle(this.selected, partial, { mirror: this.mirror() });
+        } catch (error) {
+          // A drag that leaves the schema's ranges (a radius scaled to nothing) stops at the last valid shape.
+          console.warn(`muscle editor: ${(error as Error).message}`);
+        }
+      },
+      end: () => document.end(),
+    });
+    this.gizmo.controls.addEventListener('dragging-changed', (event) => {
+      view.controls.enabled = !(event as unknown as { value: boolean }).value;
+    });
+    this.unsubscribe = document.onChange(() => this.follow());
+    this.canvas.addEventListener('pointerdown', this.onPointerDown);
+    this.canvas.addEventListener('pointerup', this.onPointerUp);
+    window.addEventListener('keydown', this.onKey);
+  }
+
+  setEnabled(on: boolean): void {
+    this.on = on;
+    this.follow();
+  }
+
+  select(name: string | null): void {
+    const changed = name !== this.selected;
+    this.selected = name;
+    this.muscles.setHighlight(name);
+    if (changed) this.attach(this.firstPart());
+  }
+
+  setMode(mode: GizmoMode): void {
+    this.gizmo.setMode(mode);
+  }
+
+  setPart(part: GizmoPart | null): void {
+    this.attach(part);
+  }
+
+  part(): GizmoPart | null {
+    return this.on ? this.gizmo.part : null;
+  }
+
+  gizmoPoint(): { x: number; y: number } | null {
+    if (!this.on) return null;
+    const p = this.gizmo.worldPosition(this.scratch);
+    return p ? this.toClient(p) : null;
+  }
+
+  musclePoint(name: string): { x: number; y: number } | null {
+    const m = this.document.rig.muscles.find((x) => x.name === name);
+    if (!m) return null;
+    const p = m.type === 'linear' ? this.scratch.set(...m.origin).lerp(new Vector3(...m.insertion), 0.5) : this.scratch.set(...m.center);
+    this.muscles.group.updateMatrixWorld(true);
+    return this.toClient(p.applyMatrix4(this.muscles.group.matrixWorld));
+  }
+
+  dispose(): void {
+    this.unsubscribe();
+    this.canvas.removeEventListener('pointerdown', this.onPointerDown);
+    this.canvas.removeEventListener('pointerup', this.onPointerUp);
+    window.removeEventListener('keydown', this.onKey);
+    this.gizmo.dispose();
+    this.view.controls.enabled = true;
+  }
+
+  /** Keeps the gizmo on the selected muscle's part as the rig changes (an undo, a panel edit). */
+  private follow(): void {
+    this.attach(this.gizmo.part ?? this.firstPart());
+  }
+
+  private firstPart(): GizmoPart | null {
+    const m = this.selectedMuscle();
+    return m ? gizmoParts(m)[0] : null;
+  }
+
+  private attach(part: GizmoPart | null): void {
+    const m = this.on ? this.selectedMuscle() : null;
+    const valid = m && part && gizmoParts(m).includes(part) ? part : m ? gizmoParts(m)[0] : null;
+    this.gizmo.attach(m, valid);
+  }
+
+  private selectedMuscle(): Muscle | null {
+    return this.selected === null ? null : (this.document.rig.muscles.find((m) => m.name === this.selected) ?? null);
+  }
+
+  private toClient(world: Vector3): { x: number; y: number } {
+    const p = world.clone().project(this.camera);
+    const r = this.canvas.getBoundingClientRect();
+    return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+  }
+
+  private readonly onPointerDown = (event: PointerEvent): void => {
+    if (!this.on || event.button !== 0) return;
+    this.down = { x: event.clientX, y: event.clientY, gizmo: this.gizmo.dragging || this.gizmo.hovered };
+  };
+
+  /** A click (not a drag, not on the gizmo) selects the muscle under it; a click on nothing keeps the selection. */
+  private readonly onPointerUp = (event: PointerEvent): void => {
+    const down = this.down;
+    this.down = null;
+    if (!this.on || !down || down.gizmo) return;
+    if (Math.hypot(event.clientX - down.x, event.clientY - down.y) > CLICK_SLOP) return;
+    const r = this.canvas.getBoundingClientRect();
+    this.pointer.set(((event.clientX - r.left) / r.width) * 2 - 1, -((event.clientY - r.top) / r.height) * 2 + 1);
+    this.raycaster.setFromCamera(this.pointer, this.camera);
+    const name = this.muscles.pick(this.raycaster);
+    if (name !== null && name !== this.selected) this.handle.selectMuscle(name);
+  };
+
+  private readonly onKey = (event: KeyboardEvent): void => {
+    if (!this.on || typingInto(event) || event.ctrlKey || event.metaKey || event.altKey) return;
+    const key = event.key.toLowerCase();
+    if (key === 'escape' && this.selected !== null) this.handle.selectMuscle(null);
+    else if (this.selected === null) return;
+    else if (key === 'w') this.handle.setGizmoMode('translate');
+    else if (key === 'e') this.handle.setGizmoMode('rotate');
+    else if (key === 'r') this.handle.setGizmoMode('scale');
+  };
+}
