@@ -45,7 +45,7 @@ export class FaceEditor implements FaceEditorView {
     this.canvas = view.renderer.domElement;
     this.camera = view.camera;
     this.gizmo = new MuscleGizmo(this.camera, this.canvas, muscles.group, view.scene, {
-      start: () => document.begin(),
+      start: () => handle.beginEdit(),
       change: (partial) => {
         if (this.selected === null) return;
         try {
@@ -55,7 +55,7 @@ export class FaceEditor implements FaceEditorView {
           console.warn(`muscle editor: ${(error as Error).message}`);
         }
       },
-      end: () => document.end(),
+      end: () => handle.endEdit(),
     });
     this.gizmo.controls.addEventListener('dragging-changed', (event) => {
       view.controls.enabled = !(event as unknown as { value: boolean }).value;
@@ -134,6 +134,8 @@ export class FaceEditor implements FaceEditorView {
   }
 
   private toClient(world: Vector3): { x: number; y: number } {
+    // The camera's matrices are otherwise brought up to date only when a frame renders.
+    this.camera.updateMatrixWorld();
     const p = world.clone().project(this.camera);
     const r = this.canvas.getBoundingClientRect();
     return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
@@ -152,6 +154,7 @@ export class FaceEditor implements FaceEditorView {
     if (Math.hypot(event.clientX - down.x, event.clientY - down.y) > CLICK_SLOP) return;
     const r = this.canvas.getBoundingClientRect();
     this.pointer.set(((event.clientX - r.left) / r.width) * 2 - 1, -((event.clientY - r.top) / r.height) * 2 + 1);
+    this.camera.updateMatrixWorld();
     this.raycaster.setFromCamera(this.pointer, this.camera);
     const name = this.muscles.pick(this.raycaster);
     if (name !== null && name !== this.selected) this.handle.selectMuscle(name);

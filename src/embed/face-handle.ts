@@ -623,6 +623,8 @@ export class FaceHandle {
 
   endEdit(): void {
     this.document().end();
+    // The step is in the history now (the panels' undo counts).
+    this.emit('editor');
   }
 
   /** Undoes the last rig edit; returns whether there was one. */

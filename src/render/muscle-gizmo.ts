@@ -17,7 +17,7 @@ export interface GizmoDrag {
 }
 
 /** Coordinates are written to 0.01 mm and angles to 0.01°, so that saved rigs stay readable. */
-const round = (x: number, step: number): number => Math.round(x / step) * step;
+const round = (x: number, step: number): number => Number((Math.round(x / step) * step).toFixed(Math.max(0, -Math.floor(Math.log10(step)))));
 const point = (v: Vector3): Vec3 => [round(v.x, 1e-5), round(v.y, 1e-5), round(v.z, 1e-5)];
 
 /**
