@@ -13,6 +13,7 @@ import type { SolverMode } from '../worker/protocol';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { EyeDriver } from './eye-driver';
 import { FaceEditor } from './face-editor';
+import { RigAutosave } from './rig-autosave';
 import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
@@ -136,8 +137,16 @@ export class EmbeddedFace {
     const skinView = new SkinView(head.skin);
     this.view.setHead(head);
     signal?.throwIfAborted();
-    const rig = await rigLoading;
+    const original = await rigLoading;
     signal?.throwIfAborted();
+    // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
+    let rig = original;
+    let autosave: RigAutosave | undefined;
+    if (o.autosave !== false) {
+      autosave = new RigAutosave(typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, base)}`, original);
+      rig = (await autosave.load()) ?? original;
+      signal?.throwIfAborted();
+    }
 
     const geometry = head.skin.geometry;
     const simulation = await SkinSimulation.create({
@@ -183,7 +192,20 @@ export class EmbeddedFace {
     this.handle.attach(simulation, expression);
     this.handle.attachMuscles(muscles);
     // After the binding: listeners of the handle's 'rig' change see a face that already shows the edit.
-    this.handle.attachRig(document);
+    this.handle.attachRig(document, original, rigName(o.rig));
+    if (autosave) {
+      const saver = autosave;
+      saver.watch(document);
+      this.handle.attachAutosave(() => saver.status);
+      saver.onStatus = () => this.handle.editorChanged();
+      // A reload right after an edit would otherwise lose it.
+      const leave = (): void => saver.flush();
+      window.addEventListener('pagehide', leave);
+      this.undo.push(() => {
+        window.removeEventListener('pagehide', leave);
+        saver.dispose();
+      });
+    }
     const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits());
     this.undo.push(() => editor.dispose());
     this.handle.attachEditor(editor);
@@ -203,6 +225,19 @@ export class EmbeddedFace {
   private alive(): void {
     if (this.disposed) throw new Error('the face was disposed');
   }
+}
+
+/** The autosave key's part for a rig: its URL's path (the same rig at any host), or `object` for a rig given as one. */
+function rigKey(rig: string | URL | Rig | null, base: string): string {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'object';
+  return new URL(rig === null ? 'rigs/default.json' : String(rig), rig === null ? base : document.baseURI).pathname;
+}
+
+/** A rig's name for its exported file: its file's name without `.json` (`default`), or `rig`. */
+function rigName(rig: string | URL | Rig | null): string {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'rig';
+  const file = rig === null ? 'default.json' : (new URL(String(rig), document.baseURI).pathname.split('/').pop() ?? '');
+  return file.replace(/(\.rig)?\.json$/i, '') || 'rig';
 }
 
 /** `auto` is `shared` on cross-origin isolated pages and `transfer` elsewhere; `shared` needs isolation. */

@@ -52,6 +52,12 @@ export interface EditorState {
   history: { undo: number; redo: number };
   /** Whether edits are mirrored onto the twin. */
   mirror: boolean;
+  /** Whether the rig differs from the one the face was made with. */
+  edited: boolean;
+  /** The autosave: `off`, or whether the edited rig is stored (`clean`: nothing to store). */
+  autosave: 'off' | 'clean' | 'pending' | 'saved' | 'failed';
+  /** The rig's name, for its exported file (`<name>.rig.json`). */
+  rigName: string;
 }
 
 /** The editor's view side the handle drives (FaceEditor): gizmo, picking, highlight. */
@@ -128,6 +134,9 @@ export class FaceHandle {
   private readonly listeners: FaceChangeListener[] = [];
   private expression: FaceExpression | undefined;
   private rigDocument: RigDocument | undefined;
+  private originalRig: Rig | undefined;
+  private rigFileName = 'rig';
+  private autosaveStatus: (() => 'clean' | 'pending' | 'saved' | 'failed') | undefined;
   private editorView: FaceEditorView | undefined;
   private editorOn = false;
   private selected: string | null = null;
@@ -191,8 +200,10 @@ export class FaceHandle {
    * told to listeners as `'rig'`.
    * @internal the face's own wiring, left out of the library's type declarations
    */
-  attachRig(document: RigDocument): void {
+  attachRig(document: RigDocument, original: Rig, name: string): void {
     this.rigDocument = document;
+    this.originalRig = original;
+    this.rigFileName = name;
     document.onChange((_, rig) => {
       if (this.disposed) return;
       // A muscle that is gone (removed, renamed, undone) cannot stay selected.
@@ -201,6 +212,22 @@ export class FaceHandle {
       this.showMuscles();
       this.emit('rig');
     });
+  }
+
+  /**
+   * Connects the autosave, whose status `describeEditor` reports.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachAutosave(status: () => 'clean' | 'pending' | 'saved' | 'failed'): void {
+    this.autosaveStatus = status;
+  }
+
+  /**
+   * Tells listeners that the editor's state changed outside a handle call (the autosave wrote).
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  editorChanged(): void {
+    if (!this.disposed) this.emit('editor');
   }
 
   /**
@@ -546,7 +573,22 @@ export class FaceHandle {
       gizmo: this.editorView?.gizmoPoint() ?? null,
       history: doc.historySizes(),
       mirror: this.mirrorEdits,
+      edited: this.isRigEdited(),
+      autosave: this.autosaveStatus?.() ?? 'off',
+      rigName: this.rigFileName,
     };
+  }
+
+  /** Whether the rig differs from the one the face was made with (its `rig` option, or the package's). */
+  isRigEdited(): boolean {
+    const doc = this.document();
+    return JSON.stringify(doc.rig) !== JSON.stringify(this.originalRig);
+  }
+
+  /** Brings back the rig the face was made with (one undoable step). */
+  revertRig(): void {
+    const doc = this.document();
+    if (this.originalRig) doc.replace(this.originalRig, 'revertRig');
   }
 
   /** Where a shown muscle's glyph can be clicked on the page, in client pixels, or null (read-only: for tests). */
@@ -562,11 +604,13 @@ export class FaceHandle {
 
   /**
    * Replaces the rig by a rig document, as JSON text or an object (one undoable step). It is checked whole first: a
-   * problem throws a `RigError` naming its path (`setRig: muscles[3].radii[1]: expected ...`) and changes nothing.
+   * problem throws a `RigError` naming its path (`setRig: muscles[3].radii[1]: expected ...`; `source`, such as a
+   * file's name, replaces `setRig` there) and changes nothing.
    */
-  setRig(rig: string | Rig): void {
+  setRig(rig: string | Rig, source = 'setRig'): void {
+    if (typeof source !== 'string') throw new Error(`setRig: source must be a string, got ${String(source)}`);
     const doc = this.document();
-    doc.replace(typeof rig === 'string' ? parseRigText(rig, 'setRig') : rig, 'setRig');
+    doc.replace(typeof rig === 'string' ? parseRigText(rig, source) : rig, source);
   }
 
   /**

@@ -53,7 +53,7 @@ export class Panels {
     this.presets = new PresetsPanel(this.gui, face);
     this.rendering = new RenderingPanel(this.gui, face, { resolution: o.resolution, onResolution: o.onResolution });
     this.light = new LightPanel(this.gui, face);
-    this.editor = new EditorPanel(this.gui, face);
+    this.editor = new EditorPanel(this.gui, face, o.container);
     this.outputs = new OutputsPanel(this.gui, face, o.frames);
     this.actionUnits = new ActionUnitsPanel(this.gui, face);
     this.presets.folder.close();
