@@ -206,7 +206,7 @@ export class EmbeddedFace {
         saver.dispose();
       });
     }
-    const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits());
+    const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits(), head.skin);
     this.undo.push(() => editor.dispose());
     this.handle.attachEditor(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same

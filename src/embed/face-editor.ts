@@ -1,4 +1,4 @@
-import { Raycaster, Vector2, Vector3, type Camera } from 'three';
+import { Raycaster, Vector2, Vector3, type Camera, type Object3D } from 'three';
 import type { RigDocument } from '../core/rig-document';
 import type { Muscle } from '../core/rig-types';
 import type { HeadView } from '../render/head-view';
@@ -41,6 +41,8 @@ export class FaceEditor implements FaceEditorView {
     private readonly document: RigDocument,
     /** Whether edits are mirrored onto the twin (the panel's "mirror edits"). */
     private readonly mirror: () => boolean = () => false,
+    /** The skin, where new muscles are placed (under the middle of the view). */
+    private readonly skin?: Object3D,
   ) {
     this.canvas = view.renderer.domElement;
     this.camera = view.camera;
@@ -102,6 +104,16 @@ export class FaceEditor implements FaceEditorView {
     const p = m.type === 'linear' ? this.scratch.set(...m.origin).lerp(new Vector3(...m.insertion), 0.5) : this.scratch.set(...m.center);
     this.muscles.group.updateMatrixWorld(true);
     return this.toClient(p.applyMatrix4(this.muscles.group.matrixWorld));
+  }
+
+  frontPoint(): [number, number, number] {
+    this.camera.updateMatrixWorld();
+    this.raycaster.setFromCamera(this.pointer.set(0, 0), this.camera);
+    const hit = this.skin ? this.raycaster.intersectObject(this.skin, false)[0] : undefined;
+    const world = hit ? hit.point : this.scratch.copy(this.view.controls.target);
+    // Into the rig's frame (the glyphs' group), rounded to 0.1 mm.
+    const p = world.clone().applyMatrix4(this.muscles.group.matrixWorld.clone().invert());
+    return [p.x, p.y, p.z].map((x) => Math.round(x * 1e4) / 1e4) as [number, number, number];
   }
 
   dispose(): void {

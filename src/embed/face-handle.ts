@@ -1,6 +1,6 @@
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
 import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../core/muscle-display';
-import type { RigDocument, UpdateOptions } from '../core/rig-document';
+import { newMuscle, type RigDocument, type UpdateOptions } from '../core/rig-document';
 import { parseRigText } from '../core/rig-schema';
 import type { Muscle, Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
@@ -71,6 +71,8 @@ export interface FaceEditorView {
   gizmoPoint(): { x: number; y: number } | null;
   /** Where a muscle's glyph can be clicked (the middle of a linear muscle's rod, an ellipsoid's or box's centre). */
   musclePoint(name: string): { x: number; y: number } | null;
+  /** The skin point at the middle of the view (or the orbit centre if the skin is not there), in the rig's frame. */
+  frontPoint(): [number, number, number];
 }
 
 export type { MuscleDisplay };
@@ -625,6 +627,23 @@ export class FaceHandle {
   /** Adds a muscle (checked as in a rig document), linked to the Action Unit `actionUnit` on its side if given. */
   addMuscle(muscle: Muscle, actionUnit: string | null = null, weight = 1): void {
     this.document().addMuscle(muscle, actionUnit, weight);
+  }
+
+  /**
+   * Adds a new muscle of `type` (`linear`, `sphincter`, `lid`, `jaw`) where the view looks at the skin, linked to no
+   * Action Unit, and selects it; returns its name (`new-sphincter`, `new-sphincter-2`, ... with `-l` / `-r` off the
+   * midline).
+   */
+  createMuscle(type: Muscle['type']): string {
+    const doc = this.document();
+    const at = this.editorView?.frontPoint() ?? [0, 0.7, 0.1];
+    const suffix = at[0] > 0.005 ? '-l' : at[0] < -0.005 ? '-r' : '';
+    const taken = new Set(doc.rig.muscles.map((m) => m.name));
+    let name = `new-${type}${suffix}`;
+    for (let k = 2; taken.has(name); k++) name = `new-${type}-${k}${suffix}`;
+    doc.addMuscle(newMuscle(type, name, at));
+    this.selectMuscle(name);
+    return name;
   }
 
   /** Removes a muscle and its Action Unit links (refused, naming the unit, if a unit would be left without muscles). */

@@ -36,6 +36,10 @@ export class EditorPanel {
     revert: () => void;
     exportRig: () => void;
     importRig: () => void;
+    newType: 'linear' | 'sphincter' | 'lid' | 'jaw';
+    add: () => void;
+    mirrorLeft: () => void;
+    mirrorRight: () => void;
   };
   private readonly controllers: Controller[] = [];
   private readonly unsubscribe: () => void;
@@ -58,6 +62,10 @@ export class EditorPanel {
       revert: () => this.attempt(() => face.revertRig()),
       exportRig: () => this.exportRig(),
       importRig: () => this.fileInput.click(),
+      newType: 'linear',
+      add: () => this.attempt(() => face.createMuscle(this.state.newType)),
+      mirrorLeft: () => this.attempt(() => face.mirrorSide('left')),
+      mirrorRight: () => this.attempt(() => face.mirrorSide('right')),
     };
     this.folder = parent.addFolder('Editor');
     const s = this.state;
@@ -67,6 +75,10 @@ export class EditorPanel {
     this.folder.$children.append(hint);
     this.add(this.folder.add(s, 'mode', ['translate', 'rotate', 'scale']).name('gizmo').onChange((v: GizmoMode) => face.setGizmoMode(v)), 'gizmo-mode');
     this.add(this.folder.add(s, 'mirror').name('mirror edits').onChange((v: boolean) => face.setMirrorEdits(v)), 'mirror-edits');
+    this.add(this.folder.add(s, 'newType', ['linear', 'sphincter', 'lid', 'jaw']).name('new muscle type'), 'new-type');
+    this.add(this.folder.add(s, 'add').name('add muscle (in front of the view)'), 'add-muscle');
+    this.add(this.folder.add(s, 'mirrorLeft').name('mirror left side → right'), 'mirror-left');
+    this.add(this.folder.add(s, 'mirrorRight').name('mirror right side → left'), 'mirror-right');
     this.undoButton = this.folder.add(s, 'undo');
     this.add(this.undoButton, 'undo');
     this.redoButton = this.folder.add(s, 'redo');

@@ -124,6 +124,12 @@ export class MusclePanel {
       f.add(s, 'part', gizmoParts(muscle)).name('gizmo on').onChange((v: string) => this.face.setGizmoPart(v as never)),
       'muscle-part',
     );
+    s.duplicate = () => this.apply(() => this.face.selectMuscle(this.face.duplicateMuscle(this.shown!)));
+    s.remove = () => this.apply(() => this.face.removeMuscle(this.shown!));
+    s.mirror = () => this.apply(() => this.face.mirrorMuscle(this.shown!));
+    this.add(f.add(s, 'duplicate'), 'muscle-duplicate');
+    this.add(f.add(s, 'remove').name('delete'), 'muscle-delete');
+    if (/-[lr]$/.test(muscle.name)) this.add(f.add(s, 'mirror').name('mirror to twin'), 'muscle-mirror');
     this.add(f.add(s, 'preview', 0, 1, 0.01).name('preview contraction').onChange((v: number) => this.face.setPreviewContraction(v)), 'muscle-preview');
     for (const [key, label, min, max, step] of SCALARS[muscle.type]) {
       if (!(key in s)) continue;
