@@ -172,7 +172,7 @@ describe('replacing the rig', () => {
     old.muscles![0] = { ...old.muscles![0], name: 'renamed' } as LinearMuscle;
     old.actionUnits = old.actionUnits!.map((a) => ({ ...a, muscles: a.muscles.map((l) => (l.muscle === 'frontalis-inner-l' ? { ...l, muscle: 'renamed' } : l)) }));
     doc.replace(old);
-    expect(doc.rig.version).toBe(1);
+    expect(doc.rig.version).toBe(2);
     expect(doc.rig.muscles[0].name).toBe('renamed');
     doc.undo();
     expect(JSON.stringify(doc.rig)).toBe(before);

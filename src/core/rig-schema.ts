@@ -23,7 +23,11 @@ const MAX_TEXT = 200;
 export const MAX_RIG_DISTANCE = 10;
 
 /** The rig document version this code writes; older documents are migrated when read (`migrateRig`). */
-export const RIG_VERSION = 1;
+export const RIG_VERSION = 2;
+/** Most brush spheres a muscle may have, of each kind. */
+export const MAX_BRUSH_SPHERES = 4096;
+/** Largest brush sphere radius, in metres. */
+export const MAX_BRUSH_RADIUS = 0.1;
 
 /** At most this many problems are spelled out in an error's message; `RigError.problems` has them all. */
 const MAX_LISTED_PROBLEMS = 50;
@@ -88,6 +92,12 @@ const falloff = v.pipe(positive, v.maxValue(100, 'expected a positive number of 
 const degrees = v.pipe(number, v.minValue(-360, 'expected an angle from -360 to 360 degrees'), v.maxValue(360, 'expected an angle from -360 to 360 degrees'));
 const position = vec3(coordinate);
 const euler = vec3(degrees);
+const brushRadius = v.pipe(positive, v.maxValue(MAX_BRUSH_RADIUS, `expected a radius of at most ${MAX_BRUSH_RADIUS} m`));
+const spheres = v.pipe(
+  v.array(v.strictTuple([coordinate, coordinate, coordinate, brushRadius], 'expected a sphere [x, y, z, radius]'), 'expected an array of spheres'),
+  v.maxLength(MAX_BRUSH_SPHERES, `expected at most ${MAX_BRUSH_SPHERES} spheres`),
+);
+const brush = v.optional(plainObject({ add: spheres, remove: spheres }, 'expected a brush { add: [...], remove: [...] }'));
 const angle = v.pipe(number, v.minValue(-90, 'expected an angle from -90 to 90 degrees'), v.maxValue(90, 'expected an angle from -90 to 90 degrees'));
 const object = 'expected an object';
 
@@ -95,6 +105,7 @@ const LinearMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('linear'),
     origin: position,
     insertion: position,
@@ -111,6 +122,7 @@ const SphincterMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('sphincter'),
     center: position,
     rotation: euler,
@@ -129,6 +141,7 @@ const LidMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('lid'),
     center: position,
     rotation: euler,
@@ -144,6 +157,7 @@ const JawMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('jaw'),
     center: position,
     rotation: euler,
@@ -210,8 +224,10 @@ export const RigSchema = plainObject(
  */
 export function migrateRig(json: unknown): unknown {
   if (!isObj(json)) return json;
-  if (!('version' in json)) return { ...json, version: 1 };
-  return json;
+  let version = 'version' in json ? json.version : 1;
+  // Version 2 added the muscles' optional `brush`: a version 1 document is a version 2 one as it is.
+  if (version === 1) version = 2;
+  return version === json.version ? json : { ...json, version };
 }
 
 /**

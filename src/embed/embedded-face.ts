@@ -149,6 +149,8 @@ export class EmbeddedFace {
     }
 
     const geometry = head.skin.geometry;
+    // The skin at rest, render order: the vertex brush stores what it paints at rest.
+    const restRender = (geometry.getAttribute('position').array as Float32Array).slice();
     const simulation = await SkinSimulation.create({
       mode: solverMode(o.solver),
       workers: o.workers,
@@ -206,7 +208,7 @@ export class EmbeddedFace {
         saver.dispose();
       });
     }
-    const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits(), head.skin);
+    const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits(), head.skin, restRender);
     this.undo.push(() => editor.dispose());
     this.handle.attachEditor(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same

@@ -1,4 +1,5 @@
-import { Raycaster, Vector2, Vector3, type Camera, type Object3D } from 'three';
+import { Raycaster, Vector2, Vector3, type Camera, type Mesh } from 'three';
+import type { BrushSphere } from '../core/rig-types';
 import type { RigDocument } from '../core/rig-document';
 import type { Muscle } from '../core/rig-types';
 import type { HeadView } from '../render/head-view';
@@ -28,8 +29,12 @@ export class FaceEditor implements FaceEditorView {
   private readonly pointer = new Vector2();
   private readonly scratch = new Vector3();
   private on = false;
+  /** The part chosen for the selected muscle, kept while the gizmo is away (editor off, brush on). */
+  private lastPart: GizmoPart | null = null;
   private selected: string | null = null;
   private down: { x: number; y: number; gizmo: boolean } | null = null;
+  /** While the brush paints: the muscle painted and the last dab (to space them out). */
+  private painting: { name: string; last: BrushSphere | null } | null = null;
   private readonly unsubscribe: () => void;
   private readonly canvas: HTMLCanvasElement;
   private readonly camera: Camera;
@@ -41,8 +46,10 @@ export class FaceEditor implements FaceEditorView {
     private readonly document: RigDocument,
     /** Whether edits are mirrored onto the twin (the panel's "mirror edits"). */
     private readonly mirror: () => boolean = () => false,
-    /** The skin, where new muscles are placed (under the middle of the view). */
-    private readonly skin?: Object3D,
+    /** The skin, where new muscles are placed (under the middle of the view) and the brush paints. */
+    private readonly skin?: Mesh,
+    /** The skin's rest positions in render-vertex order (the brush's dabs are stored at rest). */
+    private readonly restRender?: Float32Array,
   ) {
     this.canvas = view.renderer.domElement;
     this.camera = view.camera;
@@ -65,6 +72,10 @@ export class FaceEditor implements FaceEditorView {
     this.unsubscribe = document.onChange(() => this.follow());
     this.canvas.addEventListener('pointerdown', this.onPointerDown);
     this.canvas.addEventListener('pointerup', this.onPointerUp);
+    // Capture: the brush must claim the press before the orbit controls start turning the view.
+    this.canvas.addEventListener('pointerdown', this.onBrushDown, { capture: true });
+    this.canvas.addEventListener('pointermove', this.onBrushMove);
+    window.addEventListener('pointerup', this.onBrushUp);
     window.addEventListener('keydown', this.onKey);
   }
 
@@ -77,7 +88,10 @@ export class FaceEditor implements FaceEditorView {
     const changed = name !== this.selected;
     this.selected = name;
     this.muscles.setHighlight(name);
-    if (changed) this.attach(this.firstPart());
+    if (changed) {
+      this.lastPart = null;
+      this.attach(this.firstPart());
+    }
   }
 
   setMode(mode: GizmoMode): void {
@@ -85,6 +99,7 @@ export class FaceEditor implements FaceEditorView {
   }
 
   setPart(part: GizmoPart | null): void {
+    this.lastPart = part;
     this.attach(part);
   }
 
@@ -106,6 +121,10 @@ export class FaceEditor implements FaceEditorView {
     return this.toClient(p.applyMatrix4(this.muscles.group.matrixWorld));
   }
 
+  brushChanged(): void {
+    this.follow();
+  }
+
   frontPoint(): [number, number, number] {
     this.camera.updateMatrixWorld();
     this.raycaster.setFromCamera(this.pointer.set(0, 0), this.camera);
@@ -120,6 +139,10 @@ export class FaceEditor implements FaceEditorView {
     this.unsubscribe();
     this.canvas.removeEventListener('pointerdown', this.onPointerDown);
     this.canvas.removeEventListener('pointerup', this.onPointerUp);
+    this.canvas.removeEventListener('pointerdown', this.onBrushDown, { capture: true });
+    this.canvas.removeEventListener('pointermove', this.onBrushMove);
+    window.removeEventListener('pointerup', this.onBrushUp);
+    this.onBrushUp();
     window.removeEventListener('keydown', this.onKey);
     this.gizmo.dispose();
     this.view.controls.enabled = true;
@@ -127,7 +150,7 @@ export class FaceEditor implements FaceEditorView {
 
   /** Keeps the gizmo on the selected muscle's part as the rig changes (an undo, a panel edit). */
   private follow(): void {
-    this.attach(this.gizmo.part ?? this.firstPart());
+    this.attach(this.lastPart ?? this.firstPart());
   }
 
   private firstPart(): GizmoPart | null {
@@ -136,7 +159,8 @@ export class FaceEditor implements FaceEditorView {
   }
 
   private attach(part: GizmoPart | null): void {
-    const m = this.on ? this.selectedMuscle() : null;
+    // While the brush is on, a press on the skin paints: the gizmo steps aside.
+    const m = this.on && this.handle.getBrush().mode === 'off' ? this.selectedMuscle() : null;
     const valid = m && part && gizmoParts(m).includes(part) ? part : m ? gizmoParts(m)[0] : null;
     this.gizmo.attach(m, valid);
   }
@@ -153,9 +177,73 @@ export class FaceEditor implements FaceEditorView {
     return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
   }
 
+  /** The rest point of the skin under a client position, in the rig's frame; null off the skin. */
+  private restPointAt(clientX: number, clientY: number): Vector3 | null {
+    if (!this.skin || !this.restRender) return null;
+    const r = this.canvas.getBoundingClientRect();
+    this.pointer.set(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
+    this.camera.updateMatrixWorld();
+    this.raycaster.setFromCamera(this.pointer, this.camera);
+    const hit = this.raycaster.intersectObject(this.skin, false)[0];
+    if (!hit?.face || !hit.barycoord) return null;
+    // The same spot of the skin at rest: the hit's barycentric weights over the triangle's rest corners.
+    const R = this.restRender;
+    const { a, b, c } = hit.face;
+    const w = hit.barycoord;
+    return new Vector3(
+      w.x * R[3 * a] + w.y * R[3 * b] + w.z * R[3 * c],
+      w.x * R[3 * a + 1] + w.y * R[3 * b + 1] + w.z * R[3 * c + 1],
+      w.x * R[3 * a + 2] + w.y * R[3 * b + 2] + w.z * R[3 * c + 2],
+    );
+  }
+
+  /** Adds a dab at the rest point under the pointer to the painted muscle's brush (spaced a third of a radius apart). */
+  private dab(clientX: number, clientY: number): void {
+    const p = this.painting;
+    if (!p) return;
+    const at = this.restPointAt(clientX, clientY);
+    if (!at) return;
+    const { mode, radius } = this.handle.getBrush();
+    const sphere: BrushSphere = [round(at.x), round(at.y), round(at.z), radius];
+    if (p.last && Math.hypot(sphere[0] - p.last[0], sphere[1] - p.last[1], sphere[2] - p.last[2]) < radius / 3) return;
+    p.last = sphere;
+    const muscle = this.document.rig.muscles.find((m) => m.name === p.name);
+    if (!muscle) return;
+    const brush = { add: [...(muscle.brush?.add ?? [])], remove: [...(muscle.brush?.remove ?? [])] };
+    brush[mode === 'add' ? 'add' : 'remove'].push(sphere);
+    try {
+      this.document.updateMuscle(p.name, { brush });
+    } catch (error) {
+      console.warn(`muscle brush: ${(error as Error).message}`);
+    }
+  }
+
+  private readonly onBrushDown = (event: PointerEvent): void => {
+    // Before the gizmo's own handler (this one captures): its handles must be where they are drawn.
+    if (this.on) this.gizmo.refresh(this.camera);
+    if (!this.on || event.button !== 0 || this.selected === null || this.handle.getBrush().mode === 'off') return;
+    if (this.gizmo.hovered || !this.restPointAt(event.clientX, event.clientY)) return;
+    this.view.controls.enabled = false;
+    this.handle.beginEdit();
+    this.painting = { name: this.selected, last: null };
+    this.dab(event.clientX, event.clientY);
+  };
+
+  private readonly onBrushMove = (event: PointerEvent): void => {
+    if (this.painting) this.dab(event.clientX, event.clientY);
+  };
+
+  private readonly onBrushUp = (): void => {
+    if (!this.painting) return;
+    this.painting = null;
+    this.view.controls.enabled = true;
+    this.handle.endEdit();
+  };
+
   private readonly onPointerDown = (event: PointerEvent): void => {
     if (!this.on || event.button !== 0) return;
-    this.down = { x: event.clientX, y: event.clientY, gizmo: this.gizmo.dragging || this.gizmo.hovered };
+    // A brush stroke is not a click either.
+    this.down = { x: event.clientX, y: event.clientY, gizmo: this.gizmo.dragging || this.gizmo.hovered || this.painting !== null };
   };
 
   /** A click (not a drag, not on the gizmo) selects the muscle under it; a click on nothing keeps the selection. */
@@ -181,4 +269,9 @@ export class FaceEditor implements FaceEditorView {
     else if (key === 'e') this.handle.setGizmoMode('rotate');
     else if (key === 'r') this.handle.setGizmoMode('scale');
   };
+}
+
+/** Metres to 0.01 mm, so that saved brushes stay readable. */
+function round(x: number): number {
+  return Math.round(x * 1e5) / 1e5;
 }

@@ -38,6 +38,15 @@ export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | '
  */
 export type { GizmoMode, GizmoPart };
 
+/**
+ * The vertex brush: off, or painting skin into (`add`) or out of (`remove`) the selected muscle's influence with
+ * spheres of `radius` metres, stored in the rig in rest space.
+ */
+export interface BrushOptions {
+  mode: 'off' | 'add' | 'remove';
+  radius: number;
+}
+
 /** The editor's state, as `describeEditor` reports it (read-only). */
 export interface EditorState {
   on: boolean;
@@ -58,6 +67,7 @@ export interface EditorState {
   autosave: 'off' | 'clean' | 'pending' | 'saved' | 'failed';
   /** The rig's name, for its exported file (`<name>.rig.json`). */
   rigName: string;
+  brush: BrushOptions;
 }
 
 /** The editor's view side the handle drives (FaceEditor): gizmo, picking, highlight. */
@@ -71,6 +81,8 @@ export interface FaceEditorView {
   gizmoPoint(): { x: number; y: number } | null;
   /** Where a muscle's glyph can be clicked (the middle of a linear muscle's rod, an ellipsoid's or box's centre). */
   musclePoint(name: string): { x: number; y: number } | null;
+  /** The brush was switched on or off: the gizmo makes way for it. */
+  brushChanged(): void;
   /** The skin point at the middle of the view (or the orbit centre if the skin is not there), in the rig's frame. */
   frontPoint(): [number, number, number];
 }
@@ -145,6 +157,7 @@ export class FaceHandle {
   private gizmoMode: GizmoMode = 'translate';
   private previewValue = 0;
   private mirrorEdits = false;
+  private brush: BrushOptions = { mode: 'off', radius: 0.006 };
   private disposed = false;
   private resolveReady!: () => void;
   private rejectReady!: (error: Error) => void;
@@ -563,6 +576,26 @@ export class FaceHandle {
     return this.mirrorEdits;
   }
 
+  /**
+   * Sets the vertex brush (see BrushOptions; `radius` from 0.001 to 0.05 m): while it is on, dragging over the skin
+   * paints the selected muscle's influence instead of turning the view. Bad input throws and changes nothing.
+   */
+  setBrush(partial: Partial<BrushOptions>): void {
+    this.alive();
+    const next = { ...this.brush, ...partial };
+    if (!['off', 'add', 'remove'].includes(next.mode)) throw new Error(`setBrush: mode must be "off", "add" or "remove", got ${JSON.stringify(next.mode)}`);
+    if (typeof next.radius !== 'number' || !(next.radius >= 0.001 && next.radius <= 0.05)) throw new Error(`setBrush: radius must be a number of metres from 0.001 to 0.05, got ${String(next.radius)}`);
+    for (const key of Object.keys(partial)) if (key !== 'mode' && key !== 'radius') throw new Error(`setBrush: unknown option ${JSON.stringify(key)}`);
+    this.brush = next;
+    this.editorView?.brushChanged();
+    this.emit('editor');
+  }
+
+  getBrush(): BrushOptions {
+    this.alive();
+    return { ...this.brush };
+  }
+
   /** The editor's state and where its gizmo is on the page (read-only: for tests and tools). */
   describeEditor(): EditorState {
     const doc = this.document();
@@ -578,6 +611,7 @@ export class FaceHandle {
       edited: this.isRigEdited(),
       autosave: this.autosaveStatus?.() ?? 'off',
       rigName: this.rigFileName,
+      brush: { ...this.brush },
     };
   }
 

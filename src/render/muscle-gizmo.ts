@@ -61,6 +61,15 @@ export class MuscleGizmo {
     });
   }
 
+  /**
+   * Brings the camera's and the gizmo's matrices up to date: they are otherwise updated when a frame renders, and a
+   * press that comes before the first frame after the gizmo moved (a slow software renderer) would miss its handles.
+   */
+  refresh(camera: Camera): void {
+    camera.updateMatrixWorld();
+    this.controls.getHelper().updateMatrixWorld(true);
+  }
+
   /** Whether a drag runs. */
   get dragging(): boolean {
     return this.controls.dragging;

@@ -130,6 +130,10 @@ export class MusclePanel {
     this.add(f.add(s, 'duplicate'), 'muscle-duplicate');
     this.add(f.add(s, 'remove').name('delete'), 'muscle-delete');
     if (/-[lr]$/.test(muscle.name)) this.add(f.add(s, 'mirror').name('mirror to twin'), 'muscle-mirror');
+    s.clearBrush = () => this.apply(() => this.face.updateMuscle(this.shown!, { brush: undefined }));
+    this.add(f.add(s, 'brushMode', ['off', 'add', 'remove']).name('vertex brush').onChange((v: 'off' | 'add' | 'remove') => this.face.setBrush({ mode: v })), 'brush-mode');
+    this.add(f.add(s, 'brushRadius', 1, 50, 0.5).name('brush radius mm').onChange((v: number) => this.face.setBrush({ radius: v / 1000 })), 'brush-radius');
+    this.add(f.add(s, 'clearBrush').name('clear brush'), 'brush-clear');
     this.add(f.add(s, 'preview', 0, 1, 0.01).name('preview contraction').onChange((v: number) => this.face.setPreviewContraction(v)), 'muscle-preview');
     for (const [key, label, min, max, step] of SCALARS[muscle.type]) {
       if (!(key in s)) continue;
@@ -154,6 +158,8 @@ export class MusclePanel {
       .actionUnits.flatMap((a) => a.muscles.filter((l) => l.muscle === muscle.name).map((l) => ({ id: a.id, weight: l.weight })))[0];
     Object.assign(s, { name: muscle.name, type: muscle.type, side: muscle.side, actionUnit: link?.id ?? NO_UNIT, weight: link?.weight ?? 1 });
     s.part = editor.part ?? gizmoParts(muscle)[0];
+    s.brushMode = editor.brush.mode;
+    s.brushRadius = editor.brush.radius * 1000;
     s.preview = editor.preview;
     for (const [key, value] of Object.entries(muscle)) {
       if (typeof value === 'number') s[key] = value;
