@@ -23,7 +23,9 @@ describe('createFace options', () => {
       [{ light: { keyAzimuth: 400 } }, 'createFace: light: keyAzimuth must be within 0..360, got 400'],
       [{ expression: 'AU12=much' }, 'createFace: expression: AU12 needs a finite number, got "much"'],
       [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12 needs a finite number, got "0.5"'],
-      [{ resolutoin: 'low' }, 'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, expression, eyeSimulation, light, background, assetBase, onResolution)'],
+      [{ resolutoin: 'low' }, 'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, expression, eyeSimulation, light, background, assetBase, onResolution, autosave)'],
+      [{ autosave: 1 }, 'createFace: autosave must be true, false or a key, got 1'],
+      [{ autosave: ' ' }, 'createFace: autosave must be true, false or a key, got " "'],
     ];
     for (const [options, message] of cases) expect(() => checkFaceOptions(options), JSON.stringify(options)).toThrow(message);
     expect(() => checkFaceOptions('low')).toThrow('createFace: needs an object of options, got "low"');

@@ -13,7 +13,7 @@ function linear(name: string, side: MuscleSide): LinearMuscle {
 /** A small rig: AU12 on two muscles per side with different weights, AU26 and AU27 sharing one jaw-like muscle. */
 const SMALL_RIG: Rig = {
   format: 'softface-rig',
-  version: 1,
+  version: 2,
   muscles: [linear('zyg-l', 'left'), linear('zyg-r', 'right'), linear('ris-l', 'left'), linear('ris-r', 'right'), linear('jaw', 'mid')],
   actionUnits: [
     {

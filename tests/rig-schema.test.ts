@@ -156,11 +156,11 @@ describe('parseRig', () => {
 
   it('lists every problem, one line each, under the given source name', () => {
     const e = rejection((doc) => {
-      (doc as { version: number }).version = 2;
+      (doc as { version: number }).version = 3;
       doc.presets[0].actionUnits.AU12 = 1.5;
     }, 'rigs/custom.json');
     expect(e.message.split('\n')).toEqual([
-      'rigs/custom.json: version: expected version 1, got 2',
+      'rigs/custom.json: version: expected version 2, got 3',
       'rigs/custom.json: presets[0].actionUnits.AU12: expected a number from 0 to 1, got 1.5',
     ]);
   });

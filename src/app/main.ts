@@ -41,6 +41,8 @@ try {
     panels: true,
     assetBase: import.meta.env.BASE_URL,
     onResolution: switchResolution,
+    // The app keeps an edited rig across visits; embedding pages opt in.
+    autosave: true,
   });
   window.face = face;
   const vertices = face.stats().vertices;

@@ -7,7 +7,7 @@
  * below says which of its ideas it implements and uses the smooth form that was meant.
  */
 import { DEGREES, eulerMatrix, rotationOffset } from './math3';
-import type { Muscle, Vec3 } from './rig-types';
+import type { BrushSphere, Muscle, Vec3 } from './rig-types';
 
 const HALF_PI = Math.PI / 2;
 
@@ -68,6 +68,18 @@ export function validateMuscle(m: Muscle): void {
     }
     return a;
   };
+  if (m?.brush !== undefined) {
+    for (const kind of ['add', 'remove'] as const) {
+      const list = (m.brush as unknown as Record<string, unknown> | null)?.[kind];
+      if (!Array.isArray(list)) fail(`brush.${kind} must be an array of spheres`);
+      (list as unknown[]).forEach((s, i) => {
+        if (!Array.isArray(s) || s.length !== 4) fail(`brush.${kind}[${i}] must be [x, y, z, radius]`);
+        const sphere = s as number[];
+        for (let k = 0; k < 3; k++) finite(sphere[k], `brush.${kind}[${i}][${k}]`);
+        if (!(finite(sphere[3], `brush.${kind}[${i}][3]`) > 0)) fail(`brush.${kind}[${i}] radius must be greater than 0, got ${sphere[3]}`);
+      });
+    }
+  }
   switch (m?.type) {
     case 'linear': {
       const o = vector(m.origin, 'origin');
@@ -308,6 +320,63 @@ function displaceSphincter(P: Float64Array, o: number, c: number, qx: number, qy
 }
 
 /**
+ * The displacement packed muscle `o` gives (x, y, z) as if its falloff there were 1, at contraction `c`: every field
+ * is its falloff times this (the turn's angle, for the rotation muscles), so `c` times a falloff gives the field at
+ * that falloff. Used where a brush sets the falloff, also outside the muscle's zone. Allocates nothing.
+ */
+function displaceAtFalloff(P: Float64Array, o: number, c: number, x: number, y: number, z: number, out: Float64Array | number[], rx: number, ry: number, rz: number): void {
+  const type = P[o + TYPE];
+  const F = o + FRAME;
+  if (type === LINEAR) {
+    const k = -c * P[o + STRENGTH];
+    out[0] = k * (x - P[o + ANCHOR]);
+    out[1] = k * (y - P[o + ANCHOR + 1]);
+    out[2] = k * (z - P[o + ANCHOR + 2]);
+    return;
+  }
+  const rotates = type === LID || type === JAW;
+  const dx = (rotates ? rx : x) - P[o + ANCHOR];
+  const dy = (rotates ? ry : y) - P[o + ANCHOR + 1];
+  const dz = (rotates ? rz : z) - P[o + ANCHOR + 2];
+  const qx = P[F] * dx + P[F + 3] * dy + P[F + 6] * dz;
+  const qy = P[F + 1] * dx + P[F + 4] * dy + P[F + 7] * dz;
+  const qz = P[F + 2] * dx + P[F + 5] * dy + P[F + 8] * dz;
+  if (type === SPHINCTER) {
+    const k = -c * P[o + STRENGTH];
+    const wx = k * P[o + SCALE] * qx;
+    const wy = k * P[o + SCALE + 1] * qy;
+    const wz = k * P[o + SCALE + 2] * qz;
+    out[0] = P[F] * wx + P[F + 1] * wy + P[F + 2] * wz;
+    out[1] = P[F + 3] * wx + P[F + 4] * wy + P[F + 5] * wz;
+    out[2] = P[F + 6] * wx + P[F + 7] * wy + P[F + 8] * wz;
+    return;
+  }
+  let angle = c * P[o + MAX_ANGLE];
+  if (type === JAW) {
+    const across = Math.max(-1, Math.min(1, qx / P[o + HALF_SIZE]));
+    angle *= 1 + P[o + CURVE] * (1 - across * across);
+  }
+  rotationOffset(x, y, z, P[o + JOINT], P[o + JOINT + 1], P[o + JOINT + 2], P[F], P[F + 3], P[F + 6], angle, out);
+}
+
+/**
+ * A brush sphere's weight at a rest point: 1 in its inner half, fading (cosine) to 0 at its surface, so painted
+ * influence has no step at a dab's edge.
+ */
+function sphereWeight(s: BrushSphere, x: number, y: number, z: number): number {
+  const d = Math.hypot(x - s[0], y - s[1], z - s[2]);
+  const r = s[3];
+  if (d >= r) return 0;
+  if (d <= r / 2) return 1;
+  return Math.cos(((d - r / 2) / (r / 2)) * HALF_PI);
+}
+
+/** The falloff a brushed vertex gets: at least what the add spheres give, less what the remove spheres take. */
+function brushed(falloff: number, add: number, keep: number): number {
+  return (falloff > add ? falloff : add) * keep;
+}
+
+/**
  * The lid muscle's share of its turn (thesis 4.4.3.1): the whole turn inside `innerFraction` of the ellipsoid (squared
  * normalised distances, as for the sphincter), fading (cosine) to none at its surface, none outside. The thesis turns
  * every vertex inside by the full angle, a step at the surface.
@@ -486,6 +555,15 @@ export class MuscleRig {
   private readonly muscleList: Muscle[];
   private readonly packed: Float64Array;
   private readonly candidateLists: Uint32Array[];
+  /**
+   * Per muscle, per candidate (in candidate order): the falloff its brush's add spheres give at least, and the share
+   * of its hold its remove spheres leave; null for a muscle without a brush.
+   */
+  private readonly brushAdd: (Float32Array | null)[];
+  private readonly brushKeep: (Float32Array | null)[];
+  /** The same, in the order of `vertexMuscles` (0 and 1 where no brush reaches). */
+  private rowAdd: Float32Array = new Float32Array(0);
+  private rowKeep: Float32Array = new Float32Array(0);
   /** Muscles of vertex v (those it is a candidate of) are `vertexMuscles[vertexMuscleStart[v]..vertexMuscleStart[v+1]]`. */
   private readonly vertexMuscleStart: Uint32Array;
   private vertexMuscles: Uint32Array;
@@ -519,6 +597,8 @@ export class MuscleRig {
     this.muscleList = [...muscles];
     this.packed = new Float64Array(count * STRIDE);
     this.candidateLists = new Array<Uint32Array>(count);
+    this.brushAdd = new Array<Float32Array | null>(count).fill(null);
+    this.brushKeep = new Array<Float32Array | null>(count).fill(null);
     this.candidateCounts = new Uint32Array(count);
     for (let m = 0; m < count; m++) this.place(m, muscles[m]);
     this.vertexMuscleStart = new Uint32Array(n + 1);
@@ -614,6 +694,8 @@ export class MuscleRig {
 
     const rowStart = this.vertexMuscleStart;
     const row = this.vertexMuscles;
+    const rowAdd = this.rowAdd;
+    const rowKeep = this.rowKeep;
     const step = this.step;
     const marginSquared = this.margin * this.margin;
     let held = 0;
@@ -641,7 +723,11 @@ export class MuscleRig {
             const c = stepContraction[m];
             if (c === 0) continue;
             const o = m * STRIDE;
-            const falloff = displace(P, o, c, x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+            let falloff = displace(P, o, c, x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+            if (rowAdd[j] !== 0 || rowKeep[j] !== 1) {
+              falloff = brushed(falloff, rowAdd[j], rowKeep[j]);
+              displaceAtFalloff(P, o, c * falloff, x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+            }
             if (k === 0 && falloff > 0) {
               const hold = falloff * holdScale[m];
               weight += hold;
@@ -655,7 +741,13 @@ export class MuscleRig {
           // Slid farther: it may have entered any zone, so every active muscle is asked (most reject at their bound).
           for (let a = 0; a < activeCount; a++) {
             const m = this.active[a];
-            displace(P, m * STRIDE, stepContraction[m], x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+            const falloff = displace(P, m * STRIDE, stepContraction[m], x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+            // A brush on this vertex for this muscle (found in its row; rows are short) sets the falloff here too.
+            for (let j = j0; j < j1; j++) {
+              if (row[j] !== m) continue;
+              if (rowAdd[j] !== 0 || rowKeep[j] !== 1) displaceAtFalloff(P, m * STRIDE, stepContraction[m] * brushed(falloff, rowAdd[j], rowKeep[j]), x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+              break;
+            }
             sx += step[0];
             sy += step[1];
             sz += step[2];
@@ -692,12 +784,25 @@ export class MuscleRig {
     for (const list of this.candidateLists) for (let j = 0; j < list.length; j++) start[list[j] + 1]++;
     for (let v = 0; v < n; v++) start[v + 1] += start[v];
     const muscles = new Uint32Array(start[n]);
+    const add = new Float32Array(start[n]);
+    const keep = new Float32Array(start[n]).fill(1);
     const fill = start.slice(0, n);
     for (let m = 0; m < this.candidateLists.length; m++) {
       const list = this.candidateLists[m];
-      for (let j = 0; j < list.length; j++) muscles[fill[list[j]]++] = m;
+      const a = this.brushAdd[m];
+      const k = this.brushKeep[m];
+      for (let j = 0; j < list.length; j++) {
+        const at = fill[list[j]]++;
+        muscles[at] = m;
+        if (a && k) {
+          add[at] = a[j];
+          keep[at] = k[j];
+        }
+      }
     }
     this.vertexMuscles = muscles;
+    this.rowAdd = add;
+    this.rowKeep = keep;
   }
 
   /** Packs muscle `m` and chooses its candidates from the rest positions. */
@@ -707,14 +812,39 @@ export class MuscleRig {
     packMuscle(muscle, P, o);
     const X = this.rest;
     const n = X.length / 3;
+    const add = muscle.brush?.add ?? [];
+    const remove = muscle.brush?.remove ?? [];
+    // Skin in an add sphere is a candidate wherever the muscle's zone is.
+    const painted = (x: number, y: number, z: number): number => {
+      let w = 0;
+      for (const s of add) w = Math.max(w, sphereWeight(s, x, y, z));
+      return w;
+    };
+    const candidate = (v: number): boolean =>
+      reaches(P, o, this.margin, X[3 * v], X[3 * v + 1], X[3 * v + 2]) || (add.length > 0 && painted(X[3 * v], X[3 * v + 1], X[3 * v + 2]) > 0);
     let count = 0;
-    for (let v = 0; v < n; v++) if (reaches(P, o, this.margin, X[3 * v], X[3 * v + 1], X[3 * v + 2])) count++;
+    for (let v = 0; v < n; v++) if (candidate(v)) count++;
     const list = new Uint32Array(count);
     count = 0;
-    for (let v = 0; v < n; v++) if (reaches(P, o, this.margin, X[3 * v], X[3 * v + 1], X[3 * v + 2])) list[count++] = v;
+    for (let v = 0; v < n; v++) if (candidate(v)) list[count++] = v;
     this.candidateLists[m] = list;
     this.candidateCounts[m] = count;
     this.muscleList[m] = muscle;
+    if (add.length === 0 && remove.length === 0) {
+      this.brushAdd[m] = null;
+      this.brushKeep[m] = null;
+      return;
+    }
+    const a = new Float32Array(count);
+    const k = new Float32Array(count).fill(1);
+    for (let j = 0; j < count; j++) {
+      const v = list[j];
+      const [x, y, z] = [X[3 * v], X[3 * v + 1], X[3 * v + 2]];
+      if (add.length > 0) a[j] = painted(x, y, z);
+      for (const s of remove) k[j] = Math.min(k[j], 1 - sphereWeight(s, x, y, z));
+    }
+    this.brushAdd[m] = a;
+    this.brushKeep[m] = k;
   }
 }
 

@@ -10,6 +10,25 @@ import type { Rig } from './rig-types';
 /** Largest rig document `parseRigText` accepts, in bytes of UTF-8 (the default rig is about 20 kB). */
 export const MAX_RIG_BYTES = 5 * 1024 * 1024;
 
+/** Most muscles, Action Units and presets a rig may hold (the default rig has 37, 21 and 12). */
+export const MAX_RIG_MUSCLES = 256;
+export const MAX_RIG_ACTION_UNITS = 64;
+export const MAX_RIG_PRESETS = 256;
+/** Longest name or note, in characters. */
+const MAX_TEXT = 200;
+/**
+ * Farthest a muscle point may lie from the model's origin, and largest radius or box edge, in metres. The head is
+ * about 0.25 m across; a point kilometres away would make the solver's targets (and the skin) run off to infinity.
+ */
+export const MAX_RIG_DISTANCE = 10;
+
+/** The rig document version this code writes; older documents are migrated when read (`migrateRig`). */
+export const RIG_VERSION = 2;
+/** Most brush spheres a muscle may have, of each kind. */
+export const MAX_BRUSH_SPHERES = 4096;
+/** Largest brush sphere radius, in metres. */
+export const MAX_BRUSH_RADIUS = 0.1;
+
 /** At most this many problems are spelled out in an error's message; `RigError.problems` has them all. */
 const MAX_LISTED_PROBLEMS = 50;
 
@@ -44,7 +63,7 @@ const isObj = (x: unknown): x is Obj => typeof x === 'object' && x !== null && !
 const number = v.pipe(v.number('expected a number'), v.finite('expected a finite number'));
 const positive = v.pipe(number, v.gtValue(0, 'expected a positive number'));
 const fraction = v.pipe(number, v.minValue(0, 'expected a number from 0 to 1'), v.maxValue(1, 'expected a number from 0 to 1'));
-const text = v.string('expected a string');
+const text = v.pipe(v.string('expected a string'), v.maxLength(MAX_TEXT, `expected at most ${MAX_TEXT} characters`));
 const name = v.pipe(text, v.nonEmpty('expected a non-empty name'));
 const side = v.picklist(['left', 'right', 'mid'], 'expected "left", "right" or "mid"');
 
@@ -61,8 +80,24 @@ function plainObject<const E extends v.ObjectEntries>(entries: E, message: strin
   return v.pipe(v.custom<Obj>(isObj, message), v.strictObject(entries, message));
 }
 
-const position = vec3(number);
-const euler = vec3(number);
+const coordinate = v.pipe(
+  number,
+  v.minValue(-MAX_RIG_DISTANCE, `expected a coordinate within ±${MAX_RIG_DISTANCE} m`),
+  v.maxValue(MAX_RIG_DISTANCE, `expected a coordinate within ±${MAX_RIG_DISTANCE} m`),
+);
+/** A radius, box edge or fade: positive and at most MAX_RIG_DISTANCE. */
+const extent = v.pipe(positive, v.maxValue(MAX_RIG_DISTANCE, `expected a length of at most ${MAX_RIG_DISTANCE} m`));
+/** A falloff as a fraction of a linear muscle's length. */
+const falloff = v.pipe(positive, v.maxValue(100, 'expected a positive number of at most 100'));
+const degrees = v.pipe(number, v.minValue(-360, 'expected an angle from -360 to 360 degrees'), v.maxValue(360, 'expected an angle from -360 to 360 degrees'));
+const position = vec3(coordinate);
+const euler = vec3(degrees);
+const brushRadius = v.pipe(positive, v.maxValue(MAX_BRUSH_RADIUS, `expected a radius of at most ${MAX_BRUSH_RADIUS} m`));
+const spheres = v.pipe(
+  v.array(v.strictTuple([coordinate, coordinate, coordinate, brushRadius], 'expected a sphere [x, y, z, radius]'), 'expected an array of spheres'),
+  v.maxLength(MAX_BRUSH_SPHERES, `expected at most ${MAX_BRUSH_SPHERES} spheres`),
+);
+const brush = v.optional(plainObject({ add: spheres, remove: spheres }, 'expected a brush { add: [...], remove: [...] }'));
 const angle = v.pipe(number, v.minValue(-90, 'expected an angle from -90 to 90 degrees'), v.maxValue(90, 'expected an angle from -90 to 90 degrees'));
 const object = 'expected an object';
 
@@ -70,12 +105,13 @@ const LinearMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('linear'),
     origin: position,
     insertion: position,
     angle: v.pipe(number, v.minValue(0, 'expected an angle from 0 to 90 degrees'), v.maxValue(90, 'expected an angle from 0 to 90 degrees')),
-    falloffStart: positive,
-    falloffEnd: positive,
+    falloffStart: falloff,
+    falloffEnd: falloff,
     strength: fraction,
     normalWeight: fraction,
   },
@@ -86,14 +122,15 @@ const SphincterMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('sphincter'),
     center: position,
     rotation: euler,
-    radii: vec3(positive),
+    radii: vec3(extent),
     // Positive: the pull inside the inner ellipsoid is scaled by the distance over these radii.
-    innerRadii: vec3(positive),
+    innerRadii: vec3(extent),
     // Negative pushes away from the center along that axis (a pucker thrusts the lips forward).
-    scale: vec3(number),
+    scale: vec3(v.pipe(number, v.minValue(-10, 'expected a number from -10 to 10'), v.maxValue(10, 'expected a number from -10 to 10'))),
     strength: fraction,
     normalWeight: fraction,
   },
@@ -104,10 +141,11 @@ const LidMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('lid'),
     center: position,
     rotation: euler,
-    radii: vec3(positive),
+    radii: vec3(extent),
     maxAngle: angle,
     // Below 1: the fade runs from innerFraction to the surface, and must have a width.
     innerFraction: v.pipe(number, v.minValue(0, 'expected a number from 0 to below 1'), v.ltValue(1, 'expected a number from 0 to below 1')),
@@ -119,16 +157,17 @@ const JawMuscleSchema = v.strictObject(
   {
     name,
     side,
+    brush,
     type: v.literal('jaw'),
     center: position,
     rotation: euler,
-    size: vec3(positive),
+    size: vec3(extent),
     joint: v.optional(position),
     maxAngle: angle,
     curve: fraction,
     // Positive: without a fade the turn would stop in a step at the box's faces.
-    fade: positive,
-    lipFade: v.optional(positive),
+    fade: extent,
+    lipFade: v.optional(extent),
   },
   object,
 );
@@ -143,8 +182,9 @@ const ActionUnitSchema = plainObject(
     name,
     bilateral: v.boolean('expected true or false'),
     muscles: v.pipe(
-      v.array(plainObject({ muscle: name, side, weight: positive }, object), 'expected an array'),
+      v.array(plainObject({ muscle: name, side, weight: v.pipe(positive, v.maxValue(10, 'expected a weight of at most 10')) }, object), 'expected an array'),
       v.minLength(1, 'expected at least one muscle'),
+      v.maxLength(MAX_RIG_MUSCLES, `expected at most ${MAX_RIG_MUSCLES} muscles`),
     ),
   },
   object,
@@ -155,7 +195,7 @@ const PresetSchema = plainObject(
     name,
     source: text,
     actionUnits: v.record(v.string(), fraction, 'expected an object of Action Unit intensities, like { "AU12": 0.5 }'),
-    note: v.optional(text),
+    note: v.optional(v.pipe(v.string('expected a string'), v.maxLength(10 * MAX_TEXT, `expected at most ${10 * MAX_TEXT} characters`))),
   },
   object,
 );
@@ -164,10 +204,13 @@ const PresetSchema = plainObject(
 export const RigSchema = plainObject(
   {
     format: v.literal('softface-rig', 'expected "softface-rig"'),
-    version: v.literal(1, 'expected version 1'),
-    muscles: v.array(MuscleSchema, 'expected an array of muscles'),
-    actionUnits: v.array(ActionUnitSchema, 'expected an array of Action Units'),
-    presets: v.array(PresetSchema, 'expected an array of presets'),
+    version: v.literal(RIG_VERSION, `expected version ${RIG_VERSION}`),
+    muscles: v.pipe(v.array(MuscleSchema, 'expected an array of muscles'), v.maxLength(MAX_RIG_MUSCLES, `expected at most ${MAX_RIG_MUSCLES} muscles`)),
+    actionUnits: v.pipe(
+      v.array(ActionUnitSchema, 'expected an array of Action Units'),
+      v.maxLength(MAX_RIG_ACTION_UNITS, `expected at most ${MAX_RIG_ACTION_UNITS} Action Units`),
+    ),
+    presets: v.pipe(v.array(PresetSchema, 'expected an array of presets'), v.maxLength(MAX_RIG_PRESETS, `expected at most ${MAX_RIG_PRESETS} presets`)),
   },
   'expected a rig document (a JSON object)',
 );
@@ -175,8 +218,30 @@ export const RigSchema = plainObject(
 // ---------------------------------------------------------------------------------------------------------------
 // Parsing.
 
-/** Checks a rig document (parsed JSON) and returns it as a `Rig`; throws a `RigError` listing every problem. */
-export function parseRig(json: unknown, source = 'rig'): Rig {
+/**
+ * Brings an older rig document up to `RIG_VERSION` (a shallow copy; the input is not changed). A document without a
+ * `version` is taken as version 1, the first one; anything else is left for the schema to judge.
+ */
+export function migrateRig(json: unknown): unknown {
+  if (!isObj(json)) return json;
+  let version = 'version' in json ? json.version : 1;
+  // Version 2 added the muscles' optional `brush`: a version 1 document is a version 2 one as it is.
+  if (version === 1) version = 2;
+  return version === json.version ? json : { ...json, version };
+}
+
+/**
+ * Checks a rig document (parsed JSON) and returns it as a `Rig`; throws a `RigError` listing every problem. Older
+ * versions are migrated first (`migrateRig`).
+ */
+export function parseRig(input: unknown, source = 'rig'): Rig {
+  const json = migrateRig(input);
+  // Cheap refusals before the schema walks anything: a list far over its limit is not read item by item.
+  if (isObj(json)) {
+    const limits: [string, number][] = [['muscles', MAX_RIG_MUSCLES], ['actionUnits', MAX_RIG_ACTION_UNITS], ['presets', MAX_RIG_PRESETS]];
+    const over = limits.filter(([key, max]) => Array.isArray(json[key]) && (json[key] as unknown[]).length > max);
+    if (over.length > 0) throw new RigError(source, over.map(([key, max]) => ({ path: key, message: `expected at most ${max} items, got ${(json[key] as unknown[]).length}` })));
+  }
   const result = v.safeParse(RigSchema, json, { abortPipeEarly: true });
   const problems = result.success ? [] : result.issues.map(problemOf);
   problems.push(...crossChecks(json));
@@ -315,7 +380,9 @@ function checkActionUnitMuscles(u: Obj, at: string, muscleSides: Map<string, unk
     if (!isObj(e) || typeof e.muscle !== 'string') return;
     const here = `${at}.muscles[${j}]`;
     sidesPresent.add(e.side);
-    const key = `${e.muscle}\u0000${String(e.side)}`;
+    // Only a string side can be a duplicate; anything else is the schema's to report (and String() of a deeply nested
+    // array would overflow the stack).
+    const key = `${e.muscle}\u0000${typeof e.side === 'string' ? e.side : '?'}`;
     if (seen.has(key)) problems.push({ path: `${here}.muscle`, message: `"${e.muscle}" is listed twice for this side` });
     seen.add(key);
     if (!muscleSides.has(e.muscle)) {
@@ -326,7 +393,7 @@ function checkActionUnitMuscles(u: Obj, at: string, muscleSides: Map<string, unk
     if (u.bilateral && e.side === 'mid') {
       problems.push({ path: `${here}.side`, message: `expected "left" or "right" for bilateral ${label}, got "mid"` });
     } else if (u.bilateral && (e.side === 'left' || e.side === 'right') && muscleSide !== e.side) {
-      const where = muscleSide === 'mid' ? 'the midline' : `the ${String(muscleSide)} side`;
+      const where = muscleSide === 'mid' ? 'the midline' : `the ${typeof muscleSide === 'string' ? muscleSide : 'unknown'} side`;
       problems.push({ path: `${here}.side`, message: `"${e.side}" does not match muscle "${e.muscle}", which is on ${where}` });
     } else if (!u.bilateral && (e.side === 'left' || e.side === 'right')) {
       problems.push({ path: `${here}.side`, message: `expected "mid" for midline ${label}, got "${e.side}"` });

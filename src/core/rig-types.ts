@@ -15,10 +15,26 @@ export type EulerDegrees = [number, number, number];
 /** Which side of the face a muscle sits on (the subject's left is +x). */
 export type MuscleSide = 'left' | 'right' | 'mid';
 
+/** A brush dab: a sphere at rest, centre xyz and radius, in metres in the head model's frame. */
+export type BrushSphere = [x: number, y: number, z: number, radius: number];
+
+/**
+ * Skin painted into or out of a muscle's influence (thesis: assigning vertices to muscles), as spheres in rest space,
+ * so that it holds at every mesh resolution. Skin in an `add` sphere is held at least as strongly as the sphere
+ * gives (full in its inner half, fading to none at its surface), even outside the muscle's zone; skin in a `remove`
+ * sphere loses as much of its hold. Removal wins where both overlap.
+ */
+export interface MuscleBrush {
+  add: BrushSphere[];
+  remove: BrushSphere[];
+}
+
 interface MuscleCommon {
   /** Unique within the rig, e.g. `zygomaticus-major-l`. */
   name: string;
   side: MuscleSide;
+  /** Painted influence, on top of the muscle's own zone. */
+  brush?: MuscleBrush;
 }
 
 /**
@@ -128,7 +144,8 @@ export interface PresetDefinition {
 /** A whole rig document. */
 export interface Rig {
   format: 'softface-rig';
-  version: 1;
+  /** 2 added the muscles' `brush`; version 1 documents are read as version 2. */
+  version: 2;
   muscles: Muscle[];
   actionUnits: ActionUnitDefinition[];
   presets: PresetDefinition[];

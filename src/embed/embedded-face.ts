@@ -1,5 +1,6 @@
 import { Quaternion, Vector3 } from 'three';
 import { DEGREES, eulerMatrix } from '../core/math3';
+import { RigDocument } from '../core/rig-document';
 import { parseRig, parseRigText } from '../core/rig-schema';
 import type { Rig } from '../core/rig-types';
 import { headColliders } from '../render/head-colliders';
@@ -11,6 +12,9 @@ import { Panels } from '../ui/panels';
 import type { SolverMode } from '../worker/protocol';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { EyeDriver } from './eye-driver';
+import { FaceEditor } from './face-editor';
+import { RigAutosave } from './rig-autosave';
+import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
 import { FaceHandle } from './face-handle';
@@ -133,10 +137,20 @@ export class EmbeddedFace {
     const skinView = new SkinView(head.skin);
     this.view.setHead(head);
     signal?.throwIfAborted();
-    const rig = await rigLoading;
+    const original = await rigLoading;
     signal?.throwIfAborted();
+    // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
+    let rig = original;
+    let autosave: RigAutosave | undefined;
+    if (o.autosave !== false) {
+      autosave = new RigAutosave(typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, base)}`, original);
+      rig = (await autosave.load()) ?? original;
+      signal?.throwIfAborted();
+    }
 
     const geometry = head.skin.geometry;
+    // The skin at rest, render order: the vertex brush stores what it paints at rest.
+    const restRender = (geometry.getAttribute('position').array as Float32Array).slice();
     const simulation = await SkinSimulation.create({
       mode: solverMode(o.solver),
       workers: o.workers,
@@ -158,14 +172,45 @@ export class EmbeddedFace {
     const muscles = new MuscleView(rig.muscles, head.skin.matrixWorld);
     this.view.scene.add(muscles.group);
     this.undo.push(() => muscles.dispose());
-    const jaw = jawTurner(head, rig);
+    // The jaw node's rest turn, taken once: an edited jaw muscle turns it from there.
+    const jawRest = head.jaw?.quaternion.clone();
+    let jaw = jawTurner(head, rig, jawRest);
     const expression = new FaceExpression(rig, (contractions) => {
       simulation.setContractions(contractions);
       jaw?.(contractions);
       muscles.setContractions(contractions);
     });
+    const document = new RigDocument(rig);
+    const binding = new RigBinding(document, {
+      simulation,
+      muscles,
+      expression,
+      jawChanged: (edited) => {
+        if (head.jaw && jawRest) head.jaw.quaternion.copy(jawRest);
+        jaw = jawTurner(head, edited, jawRest);
+      },
+    });
+    this.undo.push(() => binding.dispose());
     this.handle.attach(simulation, expression);
     this.handle.attachMuscles(muscles);
+    // After the binding: listeners of the handle's 'rig' change see a face that already shows the edit.
+    this.handle.attachRig(document, original, rigName(o.rig));
+    if (autosave) {
+      const saver = autosave;
+      saver.watch(document);
+      this.handle.attachAutosave(() => saver.status);
+      saver.onStatus = () => this.handle.editorChanged();
+      // A reload right after an edit would otherwise lose it.
+      const leave = (): void => saver.flush();
+      window.addEventListener('pagehide', leave);
+      this.undo.push(() => {
+        window.removeEventListener('pagehide', leave);
+        saver.dispose();
+      });
+    }
+    const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits(), head.skin, restRender);
+    this.undo.push(() => editor.dispose());
+    this.handle.attachEditor(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same
     // millisecond; the state machine takes a seed for its tests.
     const eyes = new EyeDriver(this.handle, this.view, head.eyes, { simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 } });
@@ -182,6 +227,19 @@ export class EmbeddedFace {
   private alive(): void {
     if (this.disposed) throw new Error('the face was disposed');
   }
+}
+
+/** The autosave key's part for a rig: its URL's path (the same rig at any host), or `object` for a rig given as one. */
+function rigKey(rig: string | URL | Rig | null, base: string): string {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'object';
+  return new URL(rig === null ? 'rigs/default.json' : String(rig), rig === null ? base : document.baseURI).pathname;
+}
+
+/** A rig's name for its exported file: its file's name without `.json` (`default`), or `rig`. */
+function rigName(rig: string | URL | Rig | null): string {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'rig';
+  const file = rig === null ? 'default.json' : (new URL(String(rig), document.baseURI).pathname.split('/').pop() ?? '');
+  return file.replace(/(\.rig)?\.json$/i, '') || 'rig';
 }
 
 /** `auto` is `shared` on cross-origin isolated pages and `transfer` elsewhere; `shared` needs isolation. */
@@ -228,15 +286,14 @@ async function loadRig(rig: string | URL | Rig | null, base: string): Promise<Ri
  * Turns the lower teeth and tongue (the model's jaw node, placed at the jaw hinge) with the rig's jaw muscle, about
  * the muscle's local x axis, by the angle its contraction asks for. Allocates nothing per call.
  */
-function jawTurner(head: HeadModel, rig: Rig): ((contractions: Float32Array) => void) | undefined {
+function jawTurner(head: HeadModel, rig: Rig, rest: Quaternion | undefined): ((contractions: Float32Array) => void) | undefined {
   const index = rig.muscles.findIndex((m) => m.type === 'jaw');
   const muscle = rig.muscles[index];
-  if (!head.jaw || !muscle || muscle.type !== 'jaw') return undefined;
+  if (!head.jaw || !rest || !muscle || muscle.type !== 'jaw') return undefined;
   const jaw = head.jaw;
   const frame = new Array<number>(9);
   eulerMatrix(muscle.rotation, frame);
   const axis = new Vector3(frame[0], frame[3], frame[6]).normalize();
-  const rest = jaw.quaternion.clone();
   const turn = new Quaternion();
   return (contractions) => {
     turn.setFromAxisAngle(axis, contractions[index] * muscle.maxAngle * DEGREES);

@@ -10,16 +10,48 @@ export type ContractionSink = (contractions: Float32Array) => void;
  * they add up to, handed to the sink after every change. Bad input throws, naming it, and changes nothing.
  */
 export class FaceExpression {
-  private readonly state: ExpressionState;
+  private state: ExpressionState;
   /** Contraction per rig muscle, reused for every change. */
-  private readonly contractions: Float32Array;
+  private contractions: Float32Array;
+  /** A muscle contracted on its own while it is edited (index and contraction), on top of the Action Units. */
+  private preview: { index: number; value: number } | null = null;
 
   constructor(
-    readonly rig: Rig,
+    private rigNow: Rig,
     private readonly sink: ContractionSink,
   ) {
-    this.state = new ExpressionState(rig.presets);
-    this.contractions = new Float32Array(rig.muscles.length);
+    this.state = new ExpressionState(rigNow.presets);
+    this.contractions = new Float32Array(rigNow.muscles.length);
+  }
+
+  /** The rig the expression drives. */
+  get rig(): Rig {
+    return this.rigNow;
+  }
+
+  /**
+   * Drives an edited rig from now on and sends its contractions (unless `send` is false: the muscles' shapes alone
+   * changed, not what drives them). The sliders stay; preset weights stay when the
+   * presets did not change (they start from 0 otherwise); a preview is dropped if its muscle is gone.
+   */
+  setRig(rig: Rig, send = true): void {
+    if (JSON.stringify(rig.presets) !== JSON.stringify(this.rigNow.presets)) {
+      const sliders = this.state.getActionUnits();
+      const overlay = this.state.getOverlay();
+      this.state = new ExpressionState(rig.presets);
+      for (const [id, value] of Object.entries(sliders)) this.state.setActionUnit(id, value);
+      for (const [id, value] of Object.entries(overlay)) this.state.setOverlay(id, value);
+    }
+    this.rigNow = rig;
+    if (this.contractions.length !== rig.muscles.length) this.contractions = new Float32Array(rig.muscles.length);
+    if (this.preview && this.preview.index >= rig.muscles.length) this.preview = null;
+    if (send) this.send();
+  }
+
+  /** Contracts muscle `index` by at least `value` (0..1) while it is edited; null ends the preview. */
+  setPreview(index: number | null, value = 0): void {
+    this.preview = index === null ? null : { index, value: Math.min(1, Math.max(0, value)) };
+    this.send();
   }
 
   /** Sets an Action Unit's intensity (clamped to 0..1): `AU12` both sides, `AU12L` / `AU12R` one. */
@@ -85,7 +117,9 @@ export class FaceExpression {
   }
 
   private send(): void {
-    this.sink(this.state.muscleContractions(this.rig, this.contractions));
+    const c = this.state.muscleContractions(this.rigNow, this.contractions);
+    if (this.preview && this.preview.index < c.length) c[this.preview.index] = Math.max(c[this.preview.index], this.preview.value);
+    this.sink(c);
   }
 }
 

@@ -1,7 +1,11 @@
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
 import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../core/muscle-display';
+import { newMuscle, type RigDocument, type UpdateOptions } from '../core/rig-document';
+import { parseRigText } from '../core/rig-schema';
+import type { Muscle, Rig } from '../core/rig-types';
 import type { SkinParameters } from '../core/solver';
 import type { RenderTiming } from '../render/head-view';
+import type { GizmoMode, GizmoPart } from '../render/muscle-gizmo';
 import type { MaterialDescription } from '../render/materials';
 import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
@@ -23,9 +27,65 @@ export type FaceStats = SkinSimulationStats;
 
 /**
  * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters,
- * whether the eye simulation runs, or which muscles are shown.
+ * whether the eye simulation runs, which muscles are shown, the rig (an edit, undo or redo, a new rig), or the
+ * editor (on or off, the selected muscle, its gizmo's mode or part, the preview contraction).
  */
-export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles';
+export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor';
+
+/**
+ * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
+ * muscle's `insertion` or `origin` (its bone end), a sphincter's or lid's `ellipsoid`, the jaw's `box` or `hinge`.
+ */
+export type { GizmoMode, GizmoPart };
+
+/**
+ * The vertex brush: off, or painting skin into (`add`) or out of (`remove`) the selected muscle's influence with
+ * spheres of `radius` metres, stored in the rig in rest space.
+ */
+export interface BrushOptions {
+  mode: 'off' | 'add' | 'remove';
+  radius: number;
+}
+
+/** The editor's state, as `describeEditor` reports it (read-only). */
+export interface EditorState {
+  on: boolean;
+  selected: string | null;
+  mode: GizmoMode;
+  part: GizmoPart | null;
+  /** Contraction of the selected muscle while it is edited, 0..1 (on top of the Action Units). */
+  preview: number;
+  /** Where the gizmo is on the page (client pixels), if it shows. */
+  gizmo: { x: number; y: number } | null;
+  /** Undo and redo steps available. */
+  history: { undo: number; redo: number };
+  /** Whether edits are mirrored onto the twin. */
+  mirror: boolean;
+  /** Whether the rig differs from the one the face was made with. */
+  edited: boolean;
+  /** The autosave: `off`, or whether the edited rig is stored (`clean`: nothing to store). */
+  autosave: 'off' | 'clean' | 'pending' | 'saved' | 'failed';
+  /** The rig's name, for its exported file (`<name>.rig.json`). */
+  rigName: string;
+  brush: BrushOptions;
+}
+
+/** The editor's view side the handle drives (FaceEditor): gizmo, picking, highlight. */
+export interface FaceEditorView {
+  setEnabled(on: boolean): void;
+  select(name: string | null): void;
+  setMode(mode: GizmoMode): void;
+  setPart(part: GizmoPart | null): void;
+  part(): GizmoPart | null;
+  /** Where the gizmo is on the page, in client pixels; null when it does not show. */
+  gizmoPoint(): { x: number; y: number } | null;
+  /** Where a muscle's glyph can be clicked (the middle of a linear muscle's rod, an ellipsoid's or box's centre). */
+  musclePoint(name: string): { x: number; y: number } | null;
+  /** The brush was switched on or off: the gizmo makes way for it. */
+  brushChanged(): void;
+  /** The skin point at the middle of the view (or the orbit centre if the skin is not there), in the rig's frame. */
+  frontPoint(): [number, number, number];
+}
 
 export type { MuscleDisplay };
 
@@ -87,6 +147,17 @@ export class FaceHandle {
   private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
   private readonly listeners: FaceChangeListener[] = [];
   private expression: FaceExpression | undefined;
+  private rigDocument: RigDocument | undefined;
+  private originalRig: Rig | undefined;
+  private rigFileName = 'rig';
+  private autosaveStatus: (() => 'clean' | 'pending' | 'saved' | 'failed') | undefined;
+  private editorView: FaceEditorView | undefined;
+  private editorOn = false;
+  private selected: string | null = null;
+  private gizmoMode: GizmoMode = 'translate';
+  private previewValue = 0;
+  private mirrorEdits = false;
+  private brush: BrushOptions = { mode: 'off', radius: 0.006 };
   private disposed = false;
   private resolveReady!: () => void;
   private rejectReady!: (error: Error) => void;
@@ -137,6 +208,52 @@ export class FaceHandle {
   attachMuscles(muscles: FaceMuscles): void {
     this.muscles = muscles;
     this.showMuscles();
+  }
+
+  /**
+   * Connects the rig document the editing methods change; its changes (from the handle, the panels or the gizmo) are
+   * told to listeners as `'rig'`.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachRig(document: RigDocument, original: Rig, name: string): void {
+    this.rigDocument = document;
+    this.originalRig = original;
+    this.rigFileName = name;
+    document.onChange((_, rig) => {
+      if (this.disposed) return;
+      // A muscle that is gone (removed, renamed, undone) cannot stay selected.
+      if (this.selected !== null && !rig.muscles.some((m) => m.name === this.selected)) this.setSelection(null);
+      else this.applyPreview();
+      this.showMuscles();
+      this.emit('rig');
+    });
+  }
+
+  /**
+   * Connects the autosave, whose status `describeEditor` reports.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachAutosave(status: () => 'clean' | 'pending' | 'saved' | 'failed'): void {
+    this.autosaveStatus = status;
+  }
+
+  /**
+   * Tells listeners that the editor's state changed outside a handle call (the autosave wrote).
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  editorChanged(): void {
+    if (!this.disposed) this.emit('editor');
+  }
+
+  /**
+   * Connects the editor's view side (gizmo, picking, highlight).
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachEditor(view: FaceEditorView): void {
+    this.editorView = view;
+    view.setMode(this.gizmoMode);
+    view.setEnabled(this.editorOn);
+    view.select(this.selected);
   }
 
   /** Calls `listener` after every change made through the handle; returns the function that stops it. */
@@ -381,11 +498,277 @@ export class FaceHandle {
     return this.shown().snapshot();
   }
 
+  // ---- the rig editor ----------------------------------------------------------------------------------------
+
+  /**
+   * Switches the muscle editor on or off: on, every muscle is drawn, a click on one selects it and a gizmo moves,
+   * turns or scales the selected muscle's part; off, the display is as `setMuscleDisplay` asked.
+   */
+  setEditor(on: boolean): void {
+    if (typeof on !== 'boolean') throw new Error(`setEditor: needs a boolean, got ${String(on)}`);
+    this.document();
+    this.editorOn = on;
+    this.editorView?.setEnabled(on);
+    this.showMuscles();
+    this.emit('editor');
+  }
+
+  /** Whether the editor is on. */
+  getEditor(): boolean {
+    this.alive();
+    return this.editorOn;
+  }
+
+  /** Selects a muscle by name for the gizmo and the Muscle panel, or `null` for none; an unknown name throws. */
+  selectMuscle(name: string | null): void {
+    const doc = this.document();
+    if (name !== null) doc.indexOf(name, 'selectMuscle');
+    this.setSelection(name);
+    this.emit('editor');
+  }
+
+  /** The selected muscle's name, or null. */
+  getSelectedMuscle(): string | null {
+    this.alive();
+    return this.selected;
+  }
+
+  /** What the gizmo does: `translate`, `rotate` or `scale` (what a part cannot do, it ignores). */
+  setGizmoMode(mode: GizmoMode): void {
+    if (!['translate', 'rotate', 'scale'].includes(mode)) throw new Error(`setGizmoMode: expected "translate", "rotate" or "scale", got ${JSON.stringify(mode)}`);
+    this.alive();
+    this.gizmoMode = mode;
+    this.editorView?.setMode(mode);
+    this.emit('editor');
+  }
+
+  /** Attaches the gizmo to a part of the selected muscle (see GizmoPart); a part it does not have throws. */
+  setGizmoPart(part: GizmoPart): void {
+    const muscle = this.selectedMuscle('setGizmoPart');
+    const parts = gizmoParts(muscle);
+    if (!parts.includes(part)) throw new Error(`setGizmoPart: a ${muscle.type} muscle has the parts ${parts.join(', ')}, got ${JSON.stringify(part)}`);
+    this.editorView?.setPart(part);
+    this.emit('editor');
+  }
+
+  /**
+   * Contracts the selected muscle by at least `value` (0..1) while it is edited, on top of the Action Units (0 ends
+   * it); it follows the selection.
+   */
+  setPreviewContraction(value: number): void {
+    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`setPreviewContraction: needs a finite number, got ${String(value)}`);
+    this.document();
+    this.previewValue = Math.min(1, Math.max(0, value));
+    this.applyPreview();
+    this.emit('editor');
+  }
+
+  /** With `on`, the gizmo's and the Muscle panel's edits also reflect the muscle onto its left/right twin. */
+  setMirrorEdits(on: boolean): void {
+    if (typeof on !== 'boolean') throw new Error(`setMirrorEdits: needs a boolean, got ${String(on)}`);
+    this.alive();
+    this.mirrorEdits = on;
+    this.emit('editor');
+  }
+
+  getMirrorEdits(): boolean {
+    this.alive();
+    return this.mirrorEdits;
+  }
+
+  /**
+   * Sets the vertex brush (see BrushOptions; `radius` from 0.001 to 0.05 m): while it is on, dragging over the skin
+   * paints the selected muscle's influence instead of turning the view. Bad input throws and changes nothing.
+   */
+  setBrush(partial: Partial<BrushOptions>): void {
+    this.alive();
+    const next = { ...this.brush, ...partial };
+    if (!['off', 'add', 'remove'].includes(next.mode)) throw new Error(`setBrush: mode must be "off", "add" or "remove", got ${JSON.stringify(next.mode)}`);
+    if (typeof next.radius !== 'number' || !(next.radius >= 0.001 && next.radius <= 0.05)) throw new Error(`setBrush: radius must be a number of metres from 0.001 to 0.05, got ${String(next.radius)}`);
+    for (const key of Object.keys(partial)) if (key !== 'mode' && key !== 'radius') throw new Error(`setBrush: unknown option ${JSON.stringify(key)}`);
+    this.brush = next;
+    this.editorView?.brushChanged();
+    this.emit('editor');
+  }
+
+  getBrush(): BrushOptions {
+    this.alive();
+    return { ...this.brush };
+  }
+
+  /** The editor's state and where its gizmo is on the page (read-only: for tests and tools). */
+  describeEditor(): EditorState {
+    const doc = this.document();
+    return {
+      on: this.editorOn,
+      selected: this.selected,
+      mode: this.gizmoMode,
+      part: this.editorView?.part() ?? null,
+      preview: this.previewValue,
+      gizmo: this.editorView?.gizmoPoint() ?? null,
+      history: doc.historySizes(),
+      mirror: this.mirrorEdits,
+      edited: this.isRigEdited(),
+      autosave: this.autosaveStatus?.() ?? 'off',
+      rigName: this.rigFileName,
+      brush: { ...this.brush },
+    };
+  }
+
+  /** Whether the rig differs from the one the face was made with (its `rig` option, or the package's). */
+  isRigEdited(): boolean {
+    const doc = this.document();
+    return JSON.stringify(doc.rig) !== JSON.stringify(this.originalRig);
+  }
+
+  /** Brings back the rig the face was made with (one undoable step). */
+  revertRig(): void {
+    const doc = this.document();
+    if (this.originalRig) doc.replace(this.originalRig, 'revertRig');
+  }
+
+  /** Where a shown muscle's glyph can be clicked on the page, in client pixels, or null (read-only: for tests). */
+  locateMuscle(name: string): { x: number; y: number } | null {
+    this.document().indexOf(name, 'locateMuscle');
+    return this.editorView?.musclePoint(name) ?? null;
+  }
+
+  /** A plain copy of the current rig document (changing it changes nothing). */
+  getRig(): Rig {
+    return structuredClone(this.document().rig) as Rig;
+  }
+
+  /**
+   * Replaces the rig by a rig document, as JSON text or an object (one undoable step). It is checked whole first: a
+   * problem throws a `RigError` naming its path (`setRig: muscles[3].radii[1]: expected ...`; `source`, such as a
+   * file's name, replaces `setRig` there) and changes nothing.
+   */
+  setRig(rig: string | Rig, source = 'setRig'): void {
+    if (typeof source !== 'string') throw new Error(`setRig: source must be a string, got ${String(source)}`);
+    const doc = this.document();
+    doc.replace(typeof rig === 'string' ? parseRigText(rig, source) : rig, source);
+  }
+
+  /**
+   * Changes some fields of a muscle (`{ insertion: [x, y, z] }`, `{ strength: 0.3 }`, `{ name: 'new-name' }`); with
+   * `{ mirror: true }` its left/right twin follows across x = 0. Only that muscle is recomputed on the skin. A bad
+   * value throws naming its path and changes nothing.
+   */
+  updateMuscle(name: string, partial: Partial<Muscle>, options: UpdateOptions = {}): void {
+    this.document().updateMuscle(name, partial, options);
+  }
+
+  /** Adds a muscle (checked as in a rig document), linked to the Action Unit `actionUnit` on its side if given. */
+  addMuscle(muscle: Muscle, actionUnit: string | null = null, weight = 1): void {
+    this.document().addMuscle(muscle, actionUnit, weight);
+  }
+
+  /**
+   * Adds a new muscle of `type` (`linear`, `sphincter`, `lid`, `jaw`) where the view looks at the skin, linked to no
+   * Action Unit, and selects it; returns its name (`new-sphincter`, `new-sphincter-2`, ... with `-l` / `-r` off the
+   * midline).
+   */
+  createMuscle(type: Muscle['type']): string {
+    const doc = this.document();
+    const at = this.editorView?.frontPoint() ?? [0, 0.7, 0.1];
+    const suffix = at[0] > 0.005 ? '-l' : at[0] < -0.005 ? '-r' : '';
+    const taken = new Set(doc.rig.muscles.map((m) => m.name));
+    let name = `new-${type}${suffix}`;
+    for (let k = 2; taken.has(name); k++) name = `new-${type}-${k}${suffix}`;
+    doc.addMuscle(newMuscle(type, name, at));
+    this.selectMuscle(name);
+    return name;
+  }
+
+  /** Removes a muscle and its Action Unit links (refused, naming the unit, if a unit would be left without muscles). */
+  removeMuscle(name: string): void {
+    this.document().removeMuscle(name);
+  }
+
+  /** Renames a muscle; its links and the selection follow. */
+  renameMuscle(name: string, newName: string): void {
+    const doc = this.document();
+    const wasSelected = this.selected === name;
+    doc.renameMuscle(name, newName);
+    if (wasSelected) this.selectMuscle(newName);
+  }
+
+  /** Adds a copy of a muscle, 4 mm higher and linked to no Action Unit; returns its name. */
+  duplicateMuscle(name: string): string {
+    return this.document().duplicateMuscle(name);
+  }
+
+  /** Links a muscle to one Action Unit (on its own side for a bilateral unit) with `weight`, or to none (`null`). */
+  assignMuscle(name: string, actionUnit: string | null, weight = 1): void {
+    this.document().assignMuscle(name, actionUnit, weight);
+  }
+
+  /** Reflects a muscle onto its left/right twin across x = 0 (replaced, or added); returns the twin's name. */
+  mirrorMuscle(name: string): string {
+    return this.document().mirrorMuscle(name);
+  }
+
+  /** Reflects every muscle of one side onto the other. */
+  mirrorSide(from: 'left' | 'right'): void {
+    this.document().mirrorSide(from);
+  }
+
+  /** Starts one undo step made of several edits (a drag); `endEdit` closes it. */
+  beginEdit(): void {
+    this.document().begin();
+  }
+
+  endEdit(): void {
+    this.document().end();
+    // The step is in the history now (the panels' undo counts).
+    this.emit('editor');
+  }
+
+  /** Undoes the last rig edit; returns whether there was one. */
+  undo(): boolean {
+    return this.document().undo();
+  }
+
+  /** Redoes the last undone rig edit; returns whether there was one. */
+  redo(): boolean {
+    return this.document().redo();
+  }
+
+  /** The current rig as a JSON document (the text a rig file holds). */
+  exportRig(): string {
+    return this.document().toJSON();
+  }
+
+  private setSelection(name: string | null): void {
+    this.selected = name;
+    this.editorView?.select(name);
+    this.applyPreview();
+  }
+
+  /** Gives the preview contraction to the selected muscle (or none). */
+  private applyPreview(): void {
+    if (!this.expression || !this.rigDocument) return;
+    const index = this.selected === null ? -1 : this.rigDocument.rig.muscles.findIndex((m) => m.name === this.selected);
+    this.expression.setPreview(index >= 0 && this.previewValue > 0 ? index : null, this.previewValue);
+  }
+
+  private selectedMuscle(what: string): Muscle {
+    const doc = this.document();
+    if (this.selected === null) throw new Error(`${what}: no muscle is selected`);
+    return doc.muscle(this.selected);
+  }
+
+  private document(): RigDocument {
+    this.alive();
+    if (!this.rigDocument) throw new Error('the face is not ready yet: await face.ready first');
+    return this.rigDocument;
+  }
+
   /** Makes the glyphs show the muscles the display asks for (none until the glyphs and the expression are attached). */
   private showMuscles(): void {
     if (!this.muscles) return;
     const d = this.muscleDisplay;
-    if (d.all) this.muscles.setVisible('all');
+    if (d.all || this.editorOn) this.muscles.setVisible('all');
     else if (!this.expression || d.actionUnits.length === 0) this.muscles.setVisible('none');
     else this.muscles.setVisible(new Set(shownMuscleNames(this.expression.rig, d)));
   }
@@ -420,5 +803,17 @@ export class FaceHandle {
 
   private alive(): void {
     if (this.disposed) throw new Error('the face was disposed');
+  }
+}
+
+/** The parts of a muscle the gizmo can hold, the first being where it goes on selection. */
+export function gizmoParts(muscle: Muscle): GizmoPart[] {
+  switch (muscle.type) {
+    case 'linear':
+      return ['insertion', 'origin'];
+    case 'jaw':
+      return ['box', 'hinge'];
+    default:
+      return ['ellipsoid'];
   }
 }

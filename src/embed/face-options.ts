@@ -45,6 +45,11 @@ export interface FaceOptions {
   assetBase?: string | URL | null;
   /** Called when the user picks another resolution in the panels; without it the panels offer none. */
   onResolution?: ((resolution: Resolution) => void) | null;
+  /**
+   * Keeps an edited rig in the browser (IndexedDB) and starts from it next time: `true` under a key made from the
+   * rig's source, or a key of one's own. Off by default, so that an embedding page always shows its own rig.
+   */
+  autosave?: boolean | string;
 }
 
 export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
@@ -60,6 +65,7 @@ export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
   background: '#1d2024',
   assetBase: null,
   onResolution: null,
+  autosave: false,
 });
 
 const COLOUR = /^#[0-9a-f]{6}$/i;
@@ -107,6 +113,9 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
       break;
     case 'onResolution':
       if (!(value === null || typeof value === 'function')) throw bad('a function');
+      break;
+    case 'autosave':
+      if (!(typeof value === 'boolean' || (typeof value === 'string' && value.trim() !== ''))) throw bad('true, false or a key');
       break;
     case 'light':
       checkOptions<LightOptions>(`${what}: light`, value, LIGHT_DEFAULTS, LIGHT_RANGES);

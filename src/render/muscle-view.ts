@@ -10,9 +10,11 @@ import {
   LineBasicMaterial,
   LineLoop,
   LineSegments,
+  Line,
   Mesh,
   MeshBasicMaterial,
   Quaternion,
+  Raycaster,
   SphereGeometry,
   Vector3,
   type Matrix4,
@@ -37,6 +39,10 @@ const ROD_RADIUS = 0.0009;
 const MARKER_RADIUS = 0.0025;
 /** Colour at rest, as a share of the type's colour: dimmer, so that contracting muscles stand out brighter. */
 const REST_LEVEL = 0.7;
+/** How far (metres) from a glyph's lines a click still picks it. */
+const PICK_THRESHOLD = 0.003;
+
+type Shapes = Record<'sphere' | 'rod' | 'ring' | 'ellipsoid' | 'principal' | 'box', BufferGeometry>;
 
 /** One muscle's glyphs and its own materials (its colour follows its own contraction). */
 interface MuscleGlyph {
@@ -46,6 +52,11 @@ interface MuscleGlyph {
   materials: (MeshBasicMaterial | LineBasicMaterial)[];
   /** The contraction its colour shows, so that an unchanged one costs nothing. */
   level: number;
+  /** Invisible shapes clicks are tested against: lines first, then volumes (a click inside an ellipsoid or box). */
+  pickLines: Object3D[];
+  pickVolumes: Object3D[];
+  /** Its own geometries (the pick line), freed with it. */
+  own: BufferGeometry[];
 }
 
 /**
@@ -60,6 +71,13 @@ export class MuscleView {
   private readonly glyphs: MuscleGlyph[] = [];
   private readonly geometries: BufferGeometry[] = [];
   private readonly white = new Color(1, 1, 1);
+  private readonly shapes: Shapes;
+  /** Not drawn: pick shapes are only raycast. */
+  private readonly hidden = new MeshBasicMaterial({ visible: false });
+  private readonly hiddenLine = new LineBasicMaterial({ visible: false });
+  /** What `setVisible` was last given, so rebuilt glyphs show as before. */
+  private visibleNames: ReadonlySet<string> | 'all' | 'none' = 'none';
+  private highlighted: string | null = null;
 
   /** `muscles` are positioned in the frame `frame` maps to the scene's (the skin's world matrix). */
   constructor(muscles: readonly Muscle[], frame?: Matrix4) {
@@ -70,20 +88,77 @@ export class MuscleView {
       this.group.matrixAutoUpdate = false;
       this.group.matrix.copy(frame);
     }
-    const shapes = {
+    this.shapes = {
       sphere: this.keep(new SphereGeometry(1, 10, 8)),
       rod: this.keep(new CylinderGeometry(1, 1, 1, 8, 1)),
       ring: this.keep(circle('y')),
       ellipsoid: this.keep(latLongLines(6, 5, 32)),
       principal: this.keep(mergeLines([circle('x'), circle('y'), circle('z')])),
-      box: this.keep(new EdgesGeometry(new BoxGeometry(1, 1, 1))),
+      box: this.keep(new BoxGeometry(1, 1, 1)),
     };
-    for (const muscle of muscles) this.glyphs.push(this.build(muscle, shapes));
-    this.group.traverse((o) => (o.renderOrder = RENDER_ORDER));
+    this.boxEdges = this.keep(new EdgesGeometry(this.shapes.box));
+    this.setMuscles(muscles);
+  }
+
+  private readonly boxEdges: BufferGeometry;
+
+  /** Rebuilds every glyph for a new muscle list (an edited rig); what is shown and highlighted stays, by name. */
+  setMuscles(muscles: readonly Muscle[]): void {
+    for (const g of this.glyphs) this.drop(g);
+    this.glyphs.length = 0;
+    for (const muscle of muscles) this.glyphs.push(this.build(muscle));
+    this.setVisible(this.visibleNames);
+    this.paintAll();
+  }
+
+  /** Rebuilds the glyph of muscle `index` (an edited muscle), keeping its visibility and colour. */
+  updateMuscle(index: number, muscle: Muscle): void {
+    const old = this.glyphs[index];
+    if (!old) throw new Error(`MuscleView.updateMuscle: no muscle ${index}`);
+    const glyph = this.build(muscle);
+    glyph.object.visible = old.object.visible;
+    glyph.level = old.level;
+    this.drop(old);
+    this.glyphs[index] = glyph;
+    this.paint(glyph);
+  }
+
+  /** Draws the named muscle brighter and whiter than the others (null: none). */
+  setHighlight(name: string | null): void {
+    if (name === this.highlighted) return;
+    this.highlighted = name;
+    this.paintAll();
+  }
+
+  /**
+   * The shown muscle whose glyph the ray hits first: its lines (rods, wireframes) within a few millimetres, else the
+   * inside of an ellipsoid or box. Null if none.
+   */
+  pick(raycaster: Raycaster): string | null {
+    if (!this.group.visible) return null;
+    this.group.updateMatrixWorld(true);
+    const shown = this.glyphs.filter((g) => g.object.visible);
+    const threshold = raycaster.params.Line.threshold;
+    raycaster.params.Line.threshold = PICK_THRESHOLD;
+    try {
+      for (const kind of ['pickLines', 'pickVolumes'] as const) {
+        let best: { name: string; distance: number } | null = null;
+        for (const g of shown) {
+          for (const hit of raycaster.intersectObjects(g[kind], false)) {
+            if (!best || hit.distance < best.distance) best = { name: g.name, distance: hit.distance };
+          }
+        }
+        if (best) return best.name;
+      }
+      return null;
+    } finally {
+      raycaster.params.Line.threshold = threshold;
+    }
   }
 
   /** Shows the named muscles (unknown names are ignored), every muscle, or none. */
   setVisible(names: ReadonlySet<string> | 'all' | 'none'): void {
+    this.visibleNames = names;
     let any = false;
     for (const g of this.glyphs) {
       g.object.visible = names === 'all' || (names !== 'none' && names.has(g.name));
@@ -106,15 +181,37 @@ export class MuscleView {
       // Colour changes are cheap but not free; the eye simulation reports contractions every frame.
       if (Math.abs(c - g.level) < 0.01) continue;
       g.level = c;
-      for (const m of g.materials) m.color.copy(g.base).multiplyScalar(REST_LEVEL + (1 - REST_LEVEL) * c).lerp(this.white, 0.55 * c);
+      this.paint(g);
     }
+  }
+
+  private paintAll(): void {
+    for (const g of this.glyphs) this.paint(g);
+  }
+
+  /** Colours a glyph for its contraction, and whitens the highlighted one. */
+  private paint(g: MuscleGlyph): void {
+    const c = g.level;
+    const selected = g.name === this.highlighted;
+    for (const m of g.materials) {
+      m.color.copy(g.base).multiplyScalar(REST_LEVEL + (1 - REST_LEVEL) * c).lerp(this.white, selected ? 0.6 : 0.55 * c);
+    }
+  }
+
+  /** Takes a glyph out of the group and frees what is its own. */
+  private drop(g: MuscleGlyph): void {
+    g.object.removeFromParent();
+    for (const m of g.materials) m.dispose();
+    for (const geometry of g.own) geometry.dispose();
   }
 
   /** Frees every geometry and material and detaches the group. */
   dispose(): void {
     this.group.removeFromParent();
-    for (const g of this.glyphs) for (const m of g.materials) m.dispose();
+    for (const g of this.glyphs) this.drop(g);
     for (const geometry of this.geometries) geometry.dispose();
+    this.hidden.dispose();
+    this.hiddenLine.dispose();
     this.glyphs.length = 0;
     this.geometries.length = 0;
   }
@@ -124,7 +221,11 @@ export class MuscleView {
     return geometry;
   }
 
-  private build(muscle: Muscle, shapes: Record<'sphere' | 'rod' | 'ring' | 'ellipsoid' | 'principal' | 'box', BufferGeometry>): MuscleGlyph {
+  private build(muscle: Muscle): MuscleGlyph {
+    const shapes = this.shapes;
+    const pickLines: Object3D[] = [];
+    const pickVolumes: Object3D[] = [];
+    const own: BufferGeometry[] = [];
     const base = new Color(MUSCLE_COLOURS[muscle.type]);
     const overlay = { transparent: true, depthTest: false, depthWrite: false, toneMapped: false };
     const solid = new MeshBasicMaterial({ ...overlay, opacity: 0.9 });
@@ -148,18 +249,24 @@ export class MuscleView {
       add(object, new Mesh(shapes.sphere, solid), [0, 0, 0], [MARKER_RADIUS, MARKER_RADIUS, MARKER_RADIUS]);
       const cone = length * Math.tan(muscle.angle * DEGREES);
       add(object, new LineLoop(shapes.ring, faint), [0, length, 0], [cone, 1, cone]);
+      const axisLine = new BufferGeometry().setAttribute('position', new Float32BufferAttribute([0, 0, 0, 0, length, 0], 3));
+      own.push(axisLine);
+      pickLines.push(add(object, new Line(axisLine, this.hiddenLine), [0, 0, 0], [1, 1, 1]));
     } else {
       const frame = new Group();
       frame.position.set(...muscle.center);
       frame.quaternion.copy(rotationOf(muscle.rotation));
       object.add(frame);
       if (muscle.type === 'sphincter') {
-        add(frame, new LineSegments(shapes.ellipsoid, line), [0, 0, 0], muscle.radii);
+        pickLines.push(add(frame, new LineSegments(shapes.ellipsoid, line), [0, 0, 0], muscle.radii));
         add(frame, new LineSegments(shapes.principal, faint), [0, 0, 0], muscle.innerRadii);
+        pickVolumes.push(add(frame, new Mesh(shapes.sphere, this.hidden), [0, 0, 0], muscle.radii));
       } else if (muscle.type === 'lid') {
-        add(frame, new LineSegments(shapes.ellipsoid, line), [0, 0, 0], muscle.radii);
+        pickLines.push(add(frame, new LineSegments(shapes.ellipsoid, line), [0, 0, 0], muscle.radii));
+        pickVolumes.push(add(frame, new Mesh(shapes.sphere, this.hidden), [0, 0, 0], muscle.radii));
       } else {
-        add(frame, new LineSegments(shapes.box, line), [0, 0, 0], muscle.size);
+        pickLines.push(add(frame, new LineSegments(this.boxEdges, line), [0, 0, 0], muscle.size));
+        pickVolumes.push(add(frame, new Mesh(shapes.box, this.hidden), [0, 0, 0], muscle.size));
       }
       const joint = field.joint();
       const turn = field.axis();
@@ -172,8 +279,9 @@ export class MuscleView {
         }
       }
     }
+    object.traverse((o) => (o.renderOrder = RENDER_ORDER));
     this.group.add(object);
-    return { name: muscle.name, object, base, materials, level: 0 };
+    return { name: muscle.name, object, base, materials, level: 0, pickLines, pickVolumes, own };
   }
 }
 

@@ -1,6 +1,6 @@
 import type { ChangedInputs } from './input-staging';
 import type { FrameSlot } from './layout';
-import type { SolverMode } from './protocol';
+import type { RigEdit, SolverMode } from './protocol';
 
 /** How SkinSimulation reaches a solver: where it runs, how inputs get there and how frames come back. */
 export interface SolverBackend {
@@ -9,6 +9,8 @@ export interface SolverBackend {
   latest(): FrameSlot;
   /** Delivers a published input batch (`transfer` mode sends it; the other modes read the control block). */
   publish(seq: number, changed: ChangedInputs): void;
+  /** Hands a rig edit to the solver (a message to the worker; `main` mode applies it at once). */
+  editRig(revision: number, edit: RigEdit): void;
   /** Solves on the calling thread for up to `budgetMs` (`main` mode); the worker modes do nothing here. */
   advance(budgetMs: number): void;
   /** Why the solver stopped, if it failed. */

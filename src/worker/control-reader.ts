@@ -3,6 +3,7 @@ import {
   CONTROL_INPUT_SEQ,
   CONTROL_MUSCLE_REVISION,
   CONTROL_PARAMETER_REVISION,
+  CONTROL_RIG_REVISION,
   PARAMETER_COUNT,
   type ControlViews,
 } from './layout';
@@ -72,6 +73,8 @@ export class ControlReader {
     const words = this.control.words;
     const seq = Atomics.load(words, CONTROL_INPUT_SEQ);
     if ((seq & 1) === 1 || seq === this.appliedSeq) return false;
+    // Written for a rig edit whose message has not arrived yet: wait for it (the worker's next turns poll again).
+    if (Atomics.load(words, CONTROL_RIG_REVISION) !== this.host.rigRevision) return false;
     const muscleRevision = Atomics.load(words, CONTROL_MUSCLE_REVISION);
     const parameterRevision = Atomics.load(words, CONTROL_PARAMETER_REVISION);
     const contractionRevision = Atomics.load(words, CONTROL_CONTRACTION_REVISION);

@@ -4,6 +4,7 @@ import {
   CONTROL_INPUT_SEQ,
   CONTROL_MUSCLE_REVISION,
   CONTROL_PARAMETER_REVISION,
+  CONTROL_RIG_REVISION,
   PARAMETER_INDEX,
   readParameters,
   writeParameters,
@@ -39,8 +40,23 @@ export class InputStaging {
     private readonly control: ControlViews,
     private readonly rest: Float32Array,
     private readonly onPublish: PublishInputs,
+    /** Muscles of the rig: `setContractions` takes one contraction each (the block may hold more). */
+    private muscleCount = control.contractions.length,
   ) {
     this.current = readParameters(control.parameters, { ...SKIN_DEFAULTS });
+  }
+
+  /**
+   * Counts a rig edit into the batch being written: the solver applies the batch only once it has edit `revision`.
+   * A new muscle count (muscles added or removed) takes effect for the contractions set from here on.
+   */
+  touchRig(revision: number, muscleCount = this.muscleCount): void {
+    if (muscleCount > this.control.contractions.length) {
+      throw new Error(`the rig may have at most ${this.control.contractions.length} muscles, got ${muscleCount}`);
+    }
+    this.begin();
+    this.muscleCount = muscleCount;
+    Atomics.store(this.control.words, CONTROL_RIG_REVISION, revision);
   }
 
   /**
@@ -64,14 +80,16 @@ export class InputStaging {
   /** Sets the contraction (0..1, clamped) of every rig muscle, in the rig's order; a non-finite one throws by index. */
   setContractions(values: ArrayLike<number>): void {
     const C = this.control.contractions;
-    if (!isArrayLike(values) || values.length !== C.length) {
-      throw new Error(`setContractions: expected ${C.length} contractions (one per rig muscle), got ${isArrayLike(values) ? values.length : values}`);
+    const count = this.muscleCount;
+    if (!isArrayLike(values) || values.length !== count) {
+      throw new Error(`setContractions: expected ${count} contractions (one per rig muscle), got ${isArrayLike(values) ? values.length : values}`);
     }
     for (let i = 0; i < values.length; i++) {
       if (typeof values[i] !== 'number' || !Number.isFinite(values[i])) throw new Error(`setContractions: contraction ${i} is not a finite number: ${values[i]}`);
     }
     this.begin();
     for (let i = 0; i < values.length; i++) C[i] = Math.min(1, Math.max(0, values[i]));
+    C.fill(0, count);
     Atomics.add(this.control.words, CONTROL_CONTRACTION_REVISION, 1);
     this.contractionsChanged = true;
   }

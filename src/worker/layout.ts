@@ -9,6 +9,7 @@
  * Output block (solver writes, main thread reads): an Int32 header, then two frame slots. Each slot has its own
  * header (frame number, sleep state, solve time, bounds...) so that metadata always matches the vertices beside it.
  */
+import { MAX_RIG_MUSCLES } from '../core/rig-schema';
 import type { ConstraintCounts, SkinParameters } from '../core/solver';
 
 // ---- control block -------------------------------------------------------------------------------------------
@@ -21,6 +22,11 @@ export const CONTROL_MUSCLE_REVISION = 1;
 export const CONTROL_PARAMETER_REVISION = 2;
 /** Bumped whenever the rig's muscle contractions change. */
 export const CONTROL_CONTRACTION_REVISION = 3;
+/**
+ * The rig edit the batch belongs to: a batch is applied only once the solver has the rig edits up to it (they come
+ * as messages, which may arrive after the batch is published).
+ */
+export const CONTROL_RIG_REVISION = 4;
 const CONTROL_HEADER_BYTES = 64;
 
 /** Where each skin parameter sits in the control block's Float64 parameter array. Exhaustive by type. */
@@ -51,6 +57,14 @@ export interface ControlLayout {
   byteLength: number;
 }
 
+/**
+ * Room for contractions in the control block: a rig being edited may grow up to the schema's limit, and the block
+ * (shared with the worker) cannot grow, so it holds that many from the start.
+ */
+export function contractionCapacity(muscleCount: number): number {
+  return Math.max(muscleCount, MAX_RIG_MUSCLES);
+}
+
 export function controlLayout(vertexCount: number, muscleCount = 0): ControlLayout {
   const parametersByteOffset = CONTROL_HEADER_BYTES;
   const targetsByteOffset = align(parametersByteOffset + 8 * PARAMETER_COUNT, 16);
@@ -75,7 +89,7 @@ export interface ControlViews {
   targets: Float32Array;
   weights: Float32Array;
   normalWeights: Float32Array;
-  /** Contraction of each rig muscle, 0..1, in the rig's muscle order. */
+  /** Contraction of each rig muscle, 0..1, in the rig's muscle order (the rig may use fewer than there are). */
   contractions: Float32Array;
 }
 

@@ -1,6 +1,7 @@
 import type { SolverBackend } from './backend';
 import { ControlReader } from './control-reader';
 import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
+import type { RigEdit } from './protocol';
 import type { SolverHost } from './solver-host';
 
 /**
@@ -28,6 +29,10 @@ export class MainBackend implements SolverBackend {
 
   publish(): void {
     // advance() reads the control block.
+  }
+
+  editRig(revision: number, edit: RigEdit): void {
+    this.host.editRig(revision, edit);
   }
 
   /** Applies new inputs, then solves frames until the budget is spent or the skin sleeps; at least one if awake. */

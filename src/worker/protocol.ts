@@ -20,6 +20,20 @@ export interface InitMessage {
   workers: 1 | 2;
 }
 
+/**
+ * A change of the rig's muscles: one muscle replaced in place (an editor dragging it; only its candidates and the
+ * muscle targets are recomputed), or the whole list (muscles added, removed or reordered; the contractions of the
+ * new list follow in the next input batch).
+ */
+export type RigEdit = { index: number; muscle: Muscle } | { muscles: Muscle[] };
+
+/** Main to worker: a rig edit; `revision` counts them, and input batches name the revision they were written for. */
+export interface RigMessage {
+  type: 'rig';
+  revision: number;
+  edit: RigEdit;
+}
+
 /** Worker to main, once the topology is built and the first frame (the rest shape) is written. */
 export interface ReadyMessage {
   type: 'ready';
@@ -57,5 +71,5 @@ export interface ErrorMessage {
   message: string;
 }
 
-export type ToWorker = InitMessage | InputsMessage | FrameMessage;
+export type ToWorker = InitMessage | InputsMessage | FrameMessage | RigMessage;
 export type FromWorker = ReadyMessage | FrameMessage | ErrorMessage;

@@ -1,5 +1,6 @@
 import type { SolverBackend } from './backend';
 import { OUTPUT_COMPLETED_SLOT, OUTPUT_FRAME_SEQ, frameSlot, outputHeader, slotByteOffset, type FrameSlot, type SlotLayout } from './layout';
+import type { RigEdit } from './protocol';
 import type { WorkerConnection } from './worker-connection';
 
 /** Tries to copy a frame this many times when the worker keeps publishing during the copy, then keeps the last. */
@@ -38,6 +39,10 @@ export class SharedBackend implements SolverBackend {
 
   publish(): void {
     // The worker watches the control block's input sequence number itself.
+  }
+
+  editRig(revision: number, edit: RigEdit): void {
+    this.connection.post({ type: 'rig', revision, edit });
   }
 
   advance(): void {}

@@ -1,9 +1,11 @@
 import type { Collider } from '../core/colliders';
+import { validateMuscle } from '../core/muscles';
 import type { Muscle } from '../core/rig-types';
 import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../core/solver';
 import type { SolverBackend } from './backend';
 import { InputStaging } from './input-staging';
 import {
+  contractionCapacity,
   controlLayout,
   controlViews,
   initControl,
@@ -18,7 +20,7 @@ import {
   type ControlViews,
 } from './layout';
 import { MainBackend } from './main-backend';
-import type { SolverMode } from './protocol';
+import type { RigEdit, SolverMode } from './protocol';
 import { SharedBackend } from './shared-backend';
 import { SolverHost } from './solver-host';
 import { TransferBackend } from './transfer-backend';
@@ -75,6 +77,9 @@ export class SkinSimulation {
   private readonly staging: InputStaging;
   private readFrames = -1;
   private disposed = false;
+  /** Rig edits handed to the solver so far. */
+  private rigRevision = 0;
+  private muscleCount: number;
 
   private constructor(
     private readonly backend: SolverBackend,
@@ -85,8 +90,10 @@ export class SkinSimulation {
     readonly triangles: Uint32Array,
     readonly edgeCount: number,
     readonly renderVertexCount: number,
+    muscleCount: number,
   ) {
-    this.staging = new InputStaging(control, rest, (seq, changed) => backend.publish(seq, changed));
+    this.muscleCount = muscleCount;
+    this.staging = new InputStaging(control, rest, (seq, changed) => backend.publish(seq, changed), muscleCount);
   }
 
   /** Builds the skin's topology and solver (in a worker unless `mode` is `main`) and resolves once it is running. */
@@ -101,11 +108,11 @@ export class SkinSimulation {
     if (mode === 'main') {
       const host = new SolverHost({ renderPositions: options.renderPositions, indices: options.indices, colliders, parameters, muscles });
       const t = host.topology;
-      const mainLayout = controlLayout(t.vertexCount, muscles.length);
+      const mainLayout = controlLayout(t.vertexCount, contractionCapacity(muscles.length));
       const control = controlViews(new ArrayBuffer(mainLayout.byteLength), mainLayout);
       initControl(control, t.rest, parameters);
       const backend = new MainBackend(host, control, slotLayout(renderCount, t.vertexCount));
-      return new SkinSimulation(backend, control, t.rest.slice(), t.triangles.slice(), t.restLength.length, renderCount);
+      return new SkinSimulation(backend, control, t.rest.slice(), t.triangles.slice(), t.restLength.length, renderCount, muscles.length);
     }
     const workers = options.workers ?? 'auto';
     const cores = typeof navigator === 'undefined' ? 1 : navigator.hardwareConcurrency || 1;
@@ -120,15 +127,15 @@ export class SkinSimulation {
       muscles,
     });
     const layout = slotLayout(renderCount, ready.vertexCount);
-    const cLayout = controlLayout(ready.vertexCount, muscles.length);
+    const cLayout = controlLayout(ready.vertexCount, contractionCapacity(muscles.length));
     if (mode === 'shared') {
       const backend = new SharedBackend(connection, ready.output!, layout);
-      return new SkinSimulation(backend, controlViews(ready.control!, cLayout), ready.rest, ready.triangles, ready.edgeCount, renderCount);
+      return new SkinSimulation(backend, controlViews(ready.control!, cLayout), ready.rest, ready.triangles, ready.edgeCount, renderCount, muscles.length);
     }
     const control = controlViews(new ArrayBuffer(cLayout.byteLength), cLayout);
     initControl(control, ready.rest, parameters);
     const backend = new TransferBackend(connection, control, ready.frame!, layout);
-    return new SkinSimulation(backend, control, ready.rest, ready.triangles, ready.edgeCount, renderCount);
+    return new SkinSimulation(backend, control, ready.rest, ready.triangles, ready.edgeCount, renderCount, muscles.length);
   }
 
   get mode(): SolverMode {
@@ -153,6 +160,28 @@ export class SkinSimulation {
   setContractions(values: ArrayLike<number>): void {
     this.checkAlive();
     this.staging.setContractions(values);
+  }
+
+  /**
+   * Replaces rig muscle `index` (an editor moving it): the solver chooses that muscle's skin again and recomputes the
+   * targets with the current contractions, without rebuilding anything else. Throws, changing nothing, if the muscle
+   * is not valid.
+   */
+  updateMuscle(index: number, muscle: Muscle): void {
+    this.checkAlive();
+    if (!Number.isInteger(index) || index < 0 || index >= this.muscleCount) throw new Error(`updateMuscle: index ${index} is not one of the rig's ${this.muscleCount} muscles`);
+    validateMuscle(muscle);
+    this.sendRigEdit({ index, muscle }, this.muscleCount);
+  }
+
+  /**
+   * Replaces the rig's whole muscle list (muscles added, removed or reordered); `setContractions` takes the new
+   * list's contractions from then on, and should follow at once (until it does, the skin keeps its targets).
+   */
+  setMuscles(muscles: Muscle[]): void {
+    this.checkAlive();
+    for (const m of muscles) validateMuscle(m);
+    this.sendRigEdit({ muscles }, muscles.length);
   }
 
   /** Releases every muscle pull. */
@@ -248,6 +277,15 @@ export class SkinSimulation {
     if (this.disposed) return;
     this.disposed = true;
     this.backend.dispose();
+  }
+
+  /** Counts the edit into the input batch (so `settle` waits for it) and hands it to the solver. */
+  private sendRigEdit(edit: RigEdit, muscleCount: number): void {
+    const revision = this.rigRevision + 1;
+    this.staging.touchRig(revision, muscleCount);
+    this.rigRevision = revision;
+    this.muscleCount = muscleCount;
+    this.backend.editRig(revision, edit);
   }
 
   private checkAlive(): void {

@@ -6,7 +6,7 @@
 import { createBoard } from '../core/partner-board';
 import { PartnerLink } from '../core/partner-link';
 import { ControlReader } from './control-reader';
-import { controlLayout, controlViews, initControl, slotLayout } from './layout';
+import { contractionCapacity, controlLayout, controlViews, initControl, slotLayout } from './layout';
 import type { FromWorker, InitMessage, ToWorker } from './protocol';
 import { SharedOutput } from './shared-output';
 import { SolverHost } from './solver-host';
@@ -36,6 +36,9 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
       const muscles = m.targets && m.weights && m.normalWeights ? { targets: m.targets, weights: m.weights, normalWeights: m.normalWeights } : null;
       host?.apply(m.seq, muscles, m.parameters ?? null, m.contractions ?? null);
       schedule();
+    } else if (m.type === 'rig') {
+      host?.editRig(m.revision, m.edit);
+      schedule();
     } else if (m.type === 'frame-buffer') transferOutput?.giveBack(m.buffer);
   } catch (error) {
     fail(error);
@@ -52,7 +55,7 @@ function init(m: InitMessage): void {
   const layout = slotLayout(m.renderPositions.length / 3, topology.vertexCount);
   host = h;
   if (m.mode === 'shared') {
-    const cLayout = controlLayout(topology.vertexCount, m.muscles.length);
+    const cLayout = controlLayout(topology.vertexCount, contractionCapacity(m.muscles.length));
     const control = new SharedArrayBuffer(cLayout.byteLength);
     const views = controlViews(control, cLayout);
     initControl(views, topology.rest, m.parameters);

@@ -1,4 +1,5 @@
 import type { Collider } from '../core/colliders';
+import type { RigEdit } from './protocol';
 import { JawFollower } from '../core/jaw-follower';
 import { MuscleRig } from '../core/muscles';
 import type { Muscle } from '../core/rig-types';
@@ -39,9 +40,16 @@ export class SolverHost {
   readonly topology: SkinTopology;
   readonly solver: SkinSolver;
   /** Turns contractions into the solver's muscle targets and weights; absent without muscles. */
-  private readonly rig: MuscleRig | undefined;
+  private rig: MuscleRig | undefined;
   /** Moves the lower teeth's colliders with the jaw muscle; null without a jaw or lower teeth. */
-  private readonly jaw: JawFollower | null;
+  private jaw: JawFollower | null;
+  /** The rig edits applied so far (see RigMessage). */
+  rigRevision = 0;
+  private readonly colliders: Collider[];
+  /** The colliders as the model placed them, to put the jaw's back before a new jaw takes them. */
+  private readonly restColliders: Collider[];
+  /** The contractions last applied, for recomputing the targets after a muscle changes; null until some arrive. */
+  private contractions: Float32Array | null = null;
   private readonly header: FrameHeader = { frames: 0, sleeping: true, appliedInput: 0, solveMs: 0, workers: 1 };
   /** Constraint counts change only when inputs do, so they are counted per input batch, not per frame. */
   private readonly constraints = new Int32Array(CONSTRAINT_KINDS.length);
@@ -52,6 +60,8 @@ export class SolverHost {
     console.info(describeTopology(this.topology));
     this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders, activeRegion: input.activeRegion, memory: input.memory });
     this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
+    this.colliders = input.colliders;
+    this.restColliders = structuredClone(input.colliders);
     this.jaw = JawFollower.create(input.muscles, input.colliders);
     // Start from the skin's own equilibrium (the float32 rest lengths move it by a hair), so that every mode starts
     // from the same sleeping shape however many frames pass before the first input arrives.
@@ -67,14 +77,42 @@ export class SolverHost {
       this.solver.buffers.normalWeights.set(muscles.normalWeights);
       this.solver.updateMuscles();
     }
-    // Rig contractions replace directly set targets: the rig computes every vertex's target and weights.
+    // Rig contractions replace directly set targets: the rig computes every vertex's target and weights. The block
+    // holds room for more muscles than the rig may have now; the rig's come first.
     if (contractions && this.rig) {
-      this.jaw?.update(contractions);
-      this.rig.compute(contractions, this.solver.buffers);
-      this.solver.updateMuscles();
+      this.contractions = Float32Array.from(contractions.subarray(0, this.rig.muscles.length));
+      this.computeMuscles();
     }
     if (parameters) this.solver.setParameters(readParameters(parameters, this.parameterScratch));
     this.header.appliedInput = seq;
+    this.countConstraints();
+  }
+
+  /**
+   * Applies a rig edit (as of `revision`): one muscle replaced, whose candidates alone are chosen again and the targets
+   * recomputed with the last contractions (an editor's drag, every pointer move); or a new muscle list, whose
+   * contractions come with the next input batch (until then the skin keeps its targets). Throws, changing nothing, if
+   * a muscle is not valid.
+   */
+  editRig(revision: number, edit: RigEdit): void {
+    if ('index' in edit) {
+      if (!this.rig) throw new Error('editRig: the rig has no muscles to replace');
+      const before = this.rig.muscles[edit.index];
+      this.rig.setMuscle(edit.index, edit.muscle);
+      if (before?.type === 'jaw' || edit.muscle.type === 'jaw') this.newJaw(this.rig.muscles);
+      if (this.contractions) this.computeMuscles();
+    } else {
+      this.rig = edit.muscles.length > 0 ? new MuscleRig(this.topology.rest, edit.muscles) : undefined;
+      this.newJaw(edit.muscles);
+      this.contractions = null;
+      if (!this.rig) {
+        // No muscles hold anything now.
+        this.solver.buffers.weights.fill(0);
+        this.solver.buffers.normalWeights.fill(0);
+        this.solver.updateMuscles();
+      }
+    }
+    this.rigRevision = revision;
     this.countConstraints();
   }
 
@@ -109,6 +147,27 @@ export class SolverHost {
     this.header.sleeping = this.solver.sleeping;
     this.header.workers = this.solver.threads;
     writeFrameHeader(slot, this.header, this.constraints);
+  }
+
+  /** The muscle targets of the last contractions, and the jaw's teeth turned to match. */
+  private computeMuscles(): void {
+    if (!this.rig || !this.contractions) return;
+    this.jaw?.update(this.contractions);
+    this.rig.compute(this.contractions, this.solver.buffers);
+    this.solver.updateMuscles();
+  }
+
+  /** Puts the teeth back where the model placed them and lets the rig's jaw (if any) turn them from there. */
+  private newJaw(muscles: readonly Muscle[]): void {
+    this.restColliders.forEach((rest, k) => {
+      const c = this.colliders[k];
+      for (let i = 0; i < 3; i++) {
+        c.a[i] = rest.a[i];
+        if (rest.b && c.b) c.b[i] = rest.b[i];
+        if (rest.up && c.up) c.up[i] = rest.up[i];
+      }
+    });
+    this.jaw = JawFollower.create(muscles, this.colliders);
   }
 
   private countConstraints(): void {

@@ -1,6 +1,7 @@
 import type { SolverBackend } from './backend';
 import type { ChangedInputs } from './input-staging';
 import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
+import type { RigEdit } from './protocol';
 import type { WorkerConnection } from './worker-connection';
 
 /**
@@ -33,6 +34,10 @@ export class TransferBackend implements SolverBackend {
     const muscleContractions = contractions ? this.control.contractions.slice() : undefined;
     const transfer = [targets?.buffer, weights?.buffer, normalWeights?.buffer, params?.buffer, muscleContractions?.buffer].filter((b): b is ArrayBuffer => b !== undefined);
     this.connection.post({ type: 'inputs', seq, targets, weights, normalWeights, parameters: params, contractions: muscleContractions }, transfer);
+  }
+
+  editRig(revision: number, edit: RigEdit): void {
+    this.connection.post({ type: 'rig', revision, edit });
   }
 
   advance(): void {}

@@ -1,0 +1,209 @@
+import type GUI from 'lil-gui';
+import type { Controller } from 'lil-gui';
+import { ACTION_UNITS } from '../core/facs';
+import type { Muscle } from '../core/rig-types';
+import { gizmoParts, type FaceChange, type FaceHandle } from '../embed/face-handle';
+
+/** Number fields by muscle type: key, label, min, max, step. Vectors get one field per axis. */
+const SCALARS: Record<Muscle['type'], [string, string, number, number, number][]> = {
+  linear: [
+    ['strength', 'strength', 0, 1, 0.01],
+    ['normalWeight', 'normal weight', 0, 1, 0.01],
+    ['angle', 'cone angle °', 0, 90, 0.5],
+    ['falloffStart', 'falloff start', 0.01, 3, 0.01],
+    ['falloffEnd', 'falloff end', 0.01, 3, 0.01],
+  ],
+  sphincter: [
+    ['strength', 'strength', 0, 1, 0.01],
+    ['normalWeight', 'normal weight', 0, 1, 0.01],
+  ],
+  lid: [
+    ['maxAngle', 'max angle °', -90, 90, 0.5],
+    ['innerFraction', 'inner fraction', 0, 0.99, 0.01],
+  ],
+  jaw: [
+    ['maxAngle', 'max angle °', -90, 90, 0.5],
+    ['curve', 'curve', 0, 1, 0.01],
+    ['fade', 'fade (m)', 0.001, 0.05, 0.0005],
+  ],
+};
+
+const VECTORS: Record<Muscle['type'], [string, string, number][]> = {
+  linear: [
+    ['insertion', 'insertion', 0.0005],
+    ['origin', 'bone end', 0.0005],
+  ],
+  sphincter: [
+    ['center', 'centre', 0.0005],
+    ['rotation', 'rotation °', 0.5],
+    ['radii', 'radii', 0.0005],
+    ['innerRadii', 'inner radii', 0.0005],
+    ['scale', 'scale', 0.01],
+  ],
+  lid: [
+    ['center', 'centre', 0.0005],
+    ['rotation', 'rotation °', 0.5],
+    ['radii', 'radii', 0.0005],
+  ],
+  jaw: [
+    ['center', 'centre', 0.0005],
+    ['rotation', 'rotation °', 0.5],
+    ['size', 'size', 0.0005],
+  ],
+};
+
+const NO_UNIT = '(none)';
+
+/**
+ * The Muscle folder: the selected muscle's fields (name, type, side, Action Unit and weight, the gizmo's part, a
+ * preview contraction, then its numbers). A field applies as soon as it changes; a slider's whole drag is one undo
+ * step; a value the rig refuses is shown under the fields and the field goes back. Rebuilt when the selection
+ * changes, refreshed when the rig does.
+ */
+export class MusclePanel {
+  readonly folder: GUI;
+  private controllers: Controller[] = [];
+  private state: Record<string, unknown> = {};
+  private shown: string | null = null;
+  private editing = false;
+  private readonly message: HTMLDivElement;
+  private readonly unsubscribe: () => void;
+
+  constructor(parent: GUI, private readonly face: FaceHandle) {
+    this.folder = parent.addFolder('Muscle');
+    this.folder.domElement.dataset.control = 'muscle-folder';
+    this.message = document.createElement('div');
+    this.message.className = 'softface-editor-message';
+    this.message.dataset.control = 'muscle-message';
+    Object.assign(this.message.style, { padding: '4px 8px', color: '#ff8a80', whiteSpace: 'pre-wrap', fontSize: '11px' });
+    this.folder.domElement.append(this.message);
+    this.unsubscribe = face.onChange((change) => this.changed(change));
+    this.rebuild();
+  }
+
+  dispose(): void {
+    this.unsubscribe();
+    if (this.editing) this.face.endEdit();
+    this.folder.destroy();
+  }
+
+  private changed(change: FaceChange): void {
+    if (change !== 'rig' && change !== 'editor') return;
+    const selected = this.face.getSelectedMuscle();
+    const rig = this.face.getRig();
+    const muscle = rig.muscles.find((m) => m.name === selected);
+    // A new selection, or a muscle whose type changed, needs other fields; otherwise the values are refreshed.
+    if (selected !== this.shown || (muscle && muscle.type !== this.state.type)) this.rebuild();
+    else if (muscle) {
+      this.fill(muscle);
+      for (const c of this.controllers) c.updateDisplay();
+    }
+  }
+
+  /** The fields of the selected muscle, or a hidden folder when none is. */
+  private rebuild(): void {
+    for (const c of this.controllers) c.destroy();
+    this.controllers = [];
+    const name = this.face.getSelectedMuscle();
+    this.shown = name;
+    this.message.textContent = '';
+    const muscle = name === null ? undefined : this.face.getRig().muscles.find((m) => m.name === name);
+    this.folder.show(!!muscle);
+    if (!muscle) return;
+    this.state = {};
+    this.fill(muscle);
+    const s = this.state;
+    const f = this.folder;
+    this.add(f.add(s, 'name').onFinishChange((v: string) => this.apply(() => this.face.renameMuscle(this.shown!, v))), 'muscle-name');
+    this.add(f.add(s, 'type').disable(), 'muscle-type');
+    this.add(f.add(s, 'side', ['left', 'right', 'mid']).onChange((v: string) => this.apply(() => this.face.updateMuscle(this.shown!, { side: v } as Partial<Muscle>))), 'muscle-side');
+    const units = [NO_UNIT, ...ACTION_UNITS.map((a) => a.id)];
+    this.add(f.add(s, 'actionUnit', units).name('Action Unit').onChange(() => this.assign()), 'muscle-action-unit');
+    this.add(f.add(s, 'weight', 0.05, 2, 0.05).name('AU weight').onFinishChange(() => this.assign()), 'muscle-weight');
+    this.add(
+      f.add(s, 'part', gizmoParts(muscle)).name('gizmo on').onChange((v: string) => this.face.setGizmoPart(v as never)),
+      'muscle-part',
+    );
+    s.duplicate = () => this.apply(() => this.face.selectMuscle(this.face.duplicateMuscle(this.shown!)));
+    s.remove = () => this.apply(() => this.face.removeMuscle(this.shown!));
+    s.mirror = () => this.apply(() => this.face.mirrorMuscle(this.shown!));
+    this.add(f.add(s, 'duplicate'), 'muscle-duplicate');
+    this.add(f.add(s, 'remove').name('delete'), 'muscle-delete');
+    if (/-[lr]$/.test(muscle.name)) this.add(f.add(s, 'mirror').name('mirror to twin'), 'muscle-mirror');
+    s.clearBrush = () => this.apply(() => this.face.updateMuscle(this.shown!, { brush: undefined }));
+    this.add(f.add(s, 'brushMode', ['off', 'add', 'remove']).name('vertex brush').onChange((v: 'off' | 'add' | 'remove') => this.face.setBrush({ mode: v })), 'brush-mode');
+    this.add(f.add(s, 'brushRadius', 1, 50, 0.5).name('brush radius mm').onChange((v: number) => this.face.setBrush({ radius: v / 1000 })), 'brush-radius');
+    this.add(f.add(s, 'clearBrush').name('clear brush'), 'brush-clear');
+    this.add(f.add(s, 'preview', 0, 1, 0.01).name('preview contraction').onChange((v: number) => this.face.setPreviewContraction(v)), 'muscle-preview');
+    for (const [key, label, min, max, step] of SCALARS[muscle.type]) {
+      if (!(key in s)) continue;
+      this.add(f.add(s, key, min, max, step).name(label).onChange(() => this.drag(key)).onFinishChange(() => this.finish()), `muscle-${key}`);
+    }
+    for (const [key, label, step] of VECTORS[muscle.type]) {
+      ['x', 'y', 'z'].forEach((axis) => {
+        const field = `${key}.${axis}`;
+        this.add(f.add(s, field).step(step).name(`${label} ${axis}`).onChange(() => this.drag(key)).onFinishChange(() => this.finish()), `muscle-${key}-${axis}`);
+      });
+    }
+    // The message stays last, under the fields.
+    f.$children.after(this.message);
+  }
+
+  /** Copies the muscle into the panel's state: scalars by key, vectors as `key.x`, `key.y`, `key.z`. */
+  private fill(muscle: Muscle): void {
+    const s = this.state;
+    const editor = this.face.describeEditor();
+    const link = this.face
+      .getRig()
+      .actionUnits.flatMap((a) => a.muscles.filter((l) => l.muscle === muscle.name).map((l) => ({ id: a.id, weight: l.weight })))[0];
+    Object.assign(s, { name: muscle.name, type: muscle.type, side: muscle.side, actionUnit: link?.id ?? NO_UNIT, weight: link?.weight ?? 1 });
+    s.part = editor.part ?? gizmoParts(muscle)[0];
+    s.brushMode = editor.brush.mode;
+    s.brushRadius = editor.brush.radius * 1000;
+    s.preview = editor.preview;
+    for (const [key, value] of Object.entries(muscle)) {
+      if (typeof value === 'number') s[key] = value;
+      else if (Array.isArray(value)) ['x', 'y', 'z'].forEach((axis, i) => (s[`${key}.${axis}`] = value[i]));
+    }
+  }
+
+  /** Applies the field `key` from the panel's state; the first change of a drag opens its undo step. */
+  private drag(key: string): void {
+    if (!this.editing) {
+      this.face.beginEdit();
+      this.editing = true;
+    }
+    const s = this.state;
+    const value = `${key}.x` in s ? [s[`${key}.x`], s[`${key}.y`], s[`${key}.z`]] : s[key];
+    this.apply(() => this.face.updateMuscle(this.shown!, { [key]: value } as Partial<Muscle>, { mirror: this.face.getMirrorEdits() }));
+  }
+
+  private finish(): void {
+    if (!this.editing) return;
+    this.editing = false;
+    this.face.endEdit();
+  }
+
+  private assign(): void {
+    const unit = this.state.actionUnit as string;
+    this.apply(() => this.face.assignMuscle(this.shown!, unit === NO_UNIT ? null : unit, this.state.weight as number));
+  }
+
+  /** Runs an edit; a refusal is shown under the fields and the fields show the rig as it is. */
+  private apply(edit: () => void): void {
+    try {
+      edit();
+      this.message.textContent = '';
+    } catch (error) {
+      this.message.textContent = (error as Error).message;
+      const muscle = this.face.getRig().muscles.find((m) => m.name === this.shown);
+      if (muscle) this.fill(muscle);
+      for (const c of this.controllers) c.updateDisplay();
+    }
+  }
+
+  private add(controller: Controller, name: string): void {
+    controller.domElement.dataset.control = name;
+    this.controllers.push(controller);
+  }
+}
