@@ -61,6 +61,8 @@ try {
       await new Promise((r) => setTimeout(r, 200));
     }
   }
+  // The app sets window.face once its face is up (or marks the page as failed).
+  await page.waitForFunction(() => document.documentElement.dataset.state !== undefined, null, { timeout: 120_000 });
   await page.evaluate(() => window.face.ready);
   // The page's panel column (280 px on the right) would cover part of the face in this 640 px window.
   await page.addStyleTag({ content: '.softface-panels, #status { display: none !important; }' });

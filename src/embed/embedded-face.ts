@@ -172,8 +172,8 @@ export class EmbeddedFace {
     const muscles = new MuscleView(rig.muscles, head.skin.matrixWorld);
     this.view.scene.add(muscles.group);
     this.undo.push(() => muscles.dispose());
-    // The jaw node's rest turn, taken once: an edited jaw muscle turns it from there.
-    const jawRest = head.jaw?.quaternion.clone();
+    // The jaw node's rest pose and the loaded rig's hinge, taken once: an edited jaw muscle turns it from there.
+    const jawRest = head.jaw ? { quaternion: head.jaw.quaternion.clone(), position: head.jaw.position.clone(), hinge: jawHinge(rig) } : undefined;
     let jaw = jawTurner(head, rig, jawRest);
     const expression = new FaceExpression(rig, (contractions) => {
       simulation.setContractions(contractions);
@@ -186,7 +186,10 @@ export class EmbeddedFace {
       muscles,
       expression,
       jawChanged: (edited) => {
-        if (head.jaw && jawRest) head.jaw.quaternion.copy(jawRest);
+        if (head.jaw && jawRest) {
+          head.jaw.quaternion.copy(jawRest.quaternion);
+          head.jaw.position.copy(jawRest.position);
+        }
         jaw = jawTurner(head, edited, jawRest);
       },
     });
@@ -282,11 +285,30 @@ async function loadRig(rig: string | URL | Rig | null, base: string): Promise<Ri
   return parseRigText(text, url);
 }
 
+/** The jaw node's rest pose and the hinge of the rig it was loaded with. */
+interface JawRest {
+  quaternion: Quaternion;
+  position: Vector3;
+  hinge: Vector3 | undefined;
+}
+
+/** The rig's jaw hinge: its jaw muscle's joint, by default the centre of the box's back face (as the solver takes it). */
+function jawHinge(rig: Rig): Vector3 | undefined {
+  const muscle = rig.muscles.find((m) => m.type === 'jaw');
+  if (!muscle || muscle.type !== 'jaw') return undefined;
+  if (muscle.joint) return new Vector3(...muscle.joint);
+  const frame = new Array<number>(9);
+  eulerMatrix(muscle.rotation, frame);
+  const back = muscle.size[2] / 2;
+  return new Vector3(muscle.center[0] - back * frame[2], muscle.center[1] - back * frame[5], muscle.center[2] - back * frame[8]);
+}
+
 /**
  * Turns the lower teeth and tongue (the model's jaw node, placed at the jaw hinge) with the rig's jaw muscle, about
- * the muscle's local x axis, by the angle its contraction asks for. Allocates nothing per call.
+ * the muscle's local x axis, by the angle its contraction asks for. A hinge moved in the editor moves the pivot by as
+ * much (the models put the jaw node at the root, in the rig's frame). Allocates nothing per call.
  */
-function jawTurner(head: HeadModel, rig: Rig, rest: Quaternion | undefined): ((contractions: Float32Array) => void) | undefined {
+function jawTurner(head: HeadModel, rig: Rig, rest: JawRest | undefined): ((contractions: Float32Array) => void) | undefined {
   const index = rig.muscles.findIndex((m) => m.type === 'jaw');
   const muscle = rig.muscles[index];
   if (!head.jaw || !rest || !muscle || muscle.type !== 'jaw') return undefined;
@@ -294,9 +316,13 @@ function jawTurner(head: HeadModel, rig: Rig, rest: Quaternion | undefined): ((c
   const frame = new Array<number>(9);
   eulerMatrix(muscle.rotation, frame);
   const axis = new Vector3(frame[0], frame[3], frame[6]).normalize();
+  const hinge = jawHinge(rig);
+  const pivot = rest.position.clone();
+  if (hinge && rest.hinge) pivot.add(hinge).sub(rest.hinge);
   const turn = new Quaternion();
   return (contractions) => {
     turn.setFromAxisAngle(axis, contractions[index] * muscle.maxAngle * DEGREES);
-    jaw.quaternion.multiplyQuaternions(turn, rest);
+    jaw.quaternion.multiplyQuaternions(turn, rest.quaternion);
+    jaw.position.copy(rest.position).sub(pivot).applyQuaternion(turn).add(pivot);
   };
 }
