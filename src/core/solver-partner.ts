@@ -12,7 +12,7 @@ import {
   waitWhile,
   type Board,
 } from './partner-board';
-import { followShapes, projectCollisions, projectLengths, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
+import { projectCollisions, projectLengths, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
 
 /**
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
@@ -43,11 +43,7 @@ export class SolverPartner {
       if (job === JOB_LENGTHS) for (let pass = 0; pass < part; pass++) projectLengths(this.arrays, args[0], args[1], words, 1);
       else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0] !== 0) ? 1 : 0;
       else if (job === JOB_POSITIONS) projectPositions(this.arrays, args[0], args[1], part >> 1, part);
-      else if (job === JOB_COLLISIONS) {
-        // The leader's colliders may have moved with an input (the lower teeth with the jaw).
-        followShapes(this.arrays.colliders, this.arrays.colliderShapes);
-        projectCollisions(this.arrays, 1, 2, this.direction);
-      }
+      else if (job === JOB_COLLISIONS) projectCollisions(this.arrays, 1, 2, this.direction);
       Atomics.store(words, BOARD_RESULT, result);
       done = sequence;
       Atomics.store(words, BOARD_DONE, done);
