@@ -33,6 +33,21 @@ export const JOB_STOP = 5;
 /** Board checks before sleeping: about 20 to 50 microseconds of spinning, longer than a part's projection. */
 const SPIN_LIMIT = 2000;
 
+/**
+ * How long a thread waits for the other within a job before it gives up, in ms. A job takes well under 100 ms even on
+ * the densest head, so a thread that has not answered in this time has died (or its worker was ended), and waiting
+ * on would hang the solver for good.
+ */
+export const PARTNER_TIMEOUT_MS = 3000;
+
+/** Thrown when the other solver thread did not answer within a job (see PARTNER_TIMEOUT_MS). */
+export class PartnerTimeoutError extends Error {
+  constructor(timeoutMs: number) {
+    super(`the solver's partner thread did not answer within ${timeoutMs} ms`);
+    this.name = 'PartnerTimeoutError';
+  }
+}
+
 /** The board's two views. */
 export interface Board {
   words: Int32Array;
@@ -49,22 +64,36 @@ export function boardViews(buffer: SharedArrayBuffer): Board {
   return { words: new Int32Array(buffer, 0, BOARD_WORDS), args: new Float64Array(buffer, 4 * BOARD_WORDS, BOARD_ARGUMENTS) };
 }
 
-/** Returns once `words[index]` is no longer `value`: spins a while, then sleeps until notified. */
-export function waitWhile(words: Int32Array, index: number, value: number): void {
+/**
+ * Returns once `words[index]` is no longer `value`: spins a while, then sleeps until notified; throws a
+ * PartnerTimeoutError after `timeoutMs` (by default it waits for good, as an idle partner waits for its next job).
+ */
+export function waitWhile(words: Int32Array, index: number, value: number, timeoutMs = Infinity): void {
   for (let spin = 0; Atomics.load(words, index) === value; spin++) {
-    if (spin >= SPIN_LIMIT) Atomics.wait(words, index, value);
+    if (spin < SPIN_LIMIT) continue;
+    if (timeoutMs === Infinity) {
+      Atomics.wait(words, index, value);
+      continue;
+    }
+    const deadline = performance.now() + timeoutMs;
+    while (Atomics.load(words, index) === value) {
+      const left = deadline - performance.now();
+      if (left <= 0) throw new PartnerTimeoutError(timeoutMs);
+      Atomics.wait(words, index, value, left);
+    }
+    return;
   }
 }
 
 /**
  * A barrier for the two threads: returns once both have called it. The second to arrive opens it by bumping the
- * generation, which the first waits on.
+ * generation, which the first waits on, for at most `timeoutMs` (see waitWhile).
  */
-export function meet(words: Int32Array): void {
+export function meet(words: Int32Array, timeoutMs = PARTNER_TIMEOUT_MS): void {
   const generation = Atomics.load(words, BARRIER_GENERATION);
   if (Atomics.add(words, BARRIER_COUNT, 1) === 1) {
     Atomics.store(words, BARRIER_COUNT, 0);
     Atomics.add(words, BARRIER_GENERATION, 1);
     Atomics.notify(words, BARRIER_GENERATION);
-  } else waitWhile(words, BARRIER_GENERATION, generation);
+  } else waitWhile(words, BARRIER_GENERATION, generation, timeoutMs);
 }

@@ -1,10 +1,14 @@
-import { BOARD_DONE, BOARD_JOB, BOARD_PART, BOARD_RESULT, BOARD_SEQUENCE, JOB_STOP, waitWhile, type Board } from './partner-board';
+import { BOARD_DONE, BOARD_JOB, BOARD_PART, BOARD_RESULT, BOARD_SEQUENCE, JOB_STOP, PARTNER_TIMEOUT_MS, waitWhile, type Board } from './partner-board';
 
 /** The leader's side of the board (see partner-board.ts): posts a job to the partner thread and waits for its end. */
 export class PartnerLink {
   private sequence = 0;
 
-  constructor(readonly board: Board) {}
+  /** `timeoutMs`: how long finish() waits for the partner before it throws a PartnerTimeoutError. */
+  constructor(
+    readonly board: Board,
+    private readonly timeoutMs = PARTNER_TIMEOUT_MS,
+  ) {}
 
   /** Posts a job on one part of the lists, with up to two arguments; the partner starts at once. */
   start(job: number, part = 0, a = 0, b = 0): void {
@@ -18,10 +22,10 @@ export class PartnerLink {
     Atomics.notify(words, BOARD_SEQUENCE);
   }
 
-  /** Waits until the posted job is done and returns its result. */
+  /** Waits until the posted job is done and returns its result; throws a PartnerTimeoutError if it never is. */
   finish(): number {
     const words = this.board.words;
-    waitWhile(words, BOARD_DONE, this.sequence - 1);
+    waitWhile(words, BOARD_DONE, this.sequence - 1, this.timeoutMs);
     return Atomics.load(words, BOARD_RESULT);
   }
 

@@ -3,7 +3,7 @@
  * inputs while it sleeps. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
-import { createBoard } from '../core/partner-board';
+import { createBoard, PartnerTimeoutError } from '../core/partner-board';
 import { PartnerLink } from '../core/partner-link';
 import { ControlReader } from './control-reader';
 import { contractionCapacity, controlLayout, controlViews, initControl, slotLayout } from './layout';
@@ -26,6 +26,8 @@ let transferOutput: TransferOutput | undefined;
 // handled between frames.
 const channel = new MessageChannel();
 let scheduled = false;
+/** The partner worker, while one takes half of the passes. */
+let partnerWorker: Worker | undefined;
 channel.port1.onmessage = tick;
 
 scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
@@ -41,7 +43,7 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
       schedule();
     } else if (m.type === 'frame-buffer') transferOutput?.giveBack(m.buffer);
   } catch (error) {
-    fail(error);
+    failed(error);
   }
 });
 
@@ -77,11 +79,12 @@ function init(m: InitMessage): void {
  */
 function startPartner(h: SolverHost): void {
   const board = createBoard();
-  const partner = spawnPartnerWorker();
+  const partner = (partnerWorker = spawnPartnerWorker());
   partner.addEventListener('message', () => h.solver.attachPartner(new PartnerLink(board)), { once: true });
   partner.addEventListener('error', (event) => {
     event.preventDefault();
     h.solver.attachPartner(null);
+    partnerWorker = undefined;
     console.warn(`the solver's partner worker failed (${event.message || 'it could not be loaded'}); solving on one worker`);
   });
   partner.postMessage({ arrays: h.solver.partArrays(), board: board.words.buffer });
@@ -108,8 +111,21 @@ function tick(): void {
       reader?.waitForInput(schedule);
     }
   } catch (error) {
-    fail(error);
+    failed(error);
   }
+}
+
+/**
+ * A partner that stopped answering mid-job (it died, or its worker was ended) is ended for good and the solver goes on
+ * alone from the skin as it is, which the next frames finish solving; any other error ends the worker's solving.
+ */
+function failed(error: unknown): void {
+  if (!(error instanceof PartnerTimeoutError) || !partnerWorker || !host) return fail(error);
+  host.solver.attachPartner(null);
+  partnerWorker.terminate();
+  partnerWorker = undefined;
+  console.warn(`${error.message}; solving on one worker`);
+  schedule();
 }
 
 function fail(error: unknown): void {
