@@ -164,8 +164,10 @@ export class EmbeddedFace {
     skinView.connect(simulation);
     this.view.onFrame(() => {
       simulation.advance();
-      skinView.update();
+      return skinView.update();
     });
+    // Whatever the handle changes (expression, jaw, glyphs, editor, light) is drawn.
+    this.undo.push(this.handle.onChange(this.view.invalidate));
 
     // The rig is in the model's frame, which the solver treats as the skin's own: the glyphs take the skin's transform.
     head.root.updateMatrixWorld(true);

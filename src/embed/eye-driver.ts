@@ -77,8 +77,9 @@ export class EyeDriver implements FaceEyes {
     this.on = false;
   }
 
-  private frame(now: number): void {
-    if (!this.on) return;
+  /** Moves the eyes (and lids) to the frame's time; returns whether they moved, which they do every frame while on. */
+  private frame(now: number): boolean {
+    if (!this.on) return false;
     if (Number.isNaN(this.startedAt)) this.startedAt = now;
     const s = this.simulation;
     s.advance(now - this.startedAt);
@@ -86,10 +87,11 @@ export class EyeDriver implements FaceEyes {
     this.euler.set(-s.pitch * DEGREES, s.yaw * DEGREES, 0);
     this.turn.setFromEuler(this.euler);
     for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.multiplyQuaternions(this.turn, this.rest[i]);
-    if (!this.o.lids) return;
+    if (!this.o.lids) return true;
     this.lidValues[0] = s.lidClose();
     this.lidValues[1] = s.lidRaise();
     this.face.setOverlay(LID_IDS, this.lidValues);
+    return true;
   }
 
   private putBack(): void {

@@ -39,8 +39,11 @@ export interface HeadViewOptions {
   maxPixelRatio: number;
 }
 
-/** Work done before each rendered frame; `now` is the frame's timestamp in ms. */
-export type FrameHook = (now: number) => void;
+/**
+ * Work done at each animation frame while the view is in view; `now` is the frame's timestamp in ms. It returns true
+ * when it changed what the frame shows (new skin, turned eyes), so that the view draws it.
+ */
+export type FrameHook = (now: number) => boolean | void;
 
 /** What `measureRender` reports: main-thread time of `renderer.render` and what the last frame drew. */
 export interface RenderTiming {
@@ -59,6 +62,13 @@ export interface RenderTiming {
 
 /** How far the key light sits from the head's centre, in metres (a directional light: only its direction counts). */
 const KEY_DISTANCE = 1.3;
+/**
+ * How long, and at least how many frames, the view keeps drawing after it was told of a change: covers what lands a
+ * frame or two later (the environment map, shader compiles, a panel's change applied in the next task), on a page
+ * whose frames come slowly too.
+ */
+const DRAW_AFTER_CHANGE_MS = 250;
+const DRAW_AFTER_CHANGE_FRAMES = 3;
 const DEGREES = Math.PI / 180;
 
 export const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({ background: 0x1d2024, fov: 28, maxPixelRatio: 2 });
@@ -78,6 +88,13 @@ export class HeadView {
   private readonly render: Required<RenderOptions> = { ...RENDER_DEFAULTS };
   private frame = 0;
   private readonly frameHooks: FrameHook[] = [];
+  private readonly renderHooks: (() => void)[] = [];
+  /**
+   * The view draws at animation frames until this time (ms, performance.now()) and for this many more frames, and
+   * whenever a hook changed something.
+   */
+  private drawUntil = 0;
+  private drawFrames = 0;
   private readonly resizeObserver: ResizeObserver;
   /**
    * Whether any of the canvas is in view: a view scrolled away or in a hidden element renders nothing (and runs no
@@ -120,9 +137,22 @@ export class HeadView {
     this.resize();
     this.viewObserver = new IntersectionObserver((entries) => {
       this.inView = entries[entries.length - 1].isIntersecting;
+      this.invalidate();
     });
     this.viewObserver.observe(this.renderer.domElement);
+    // Pointer and keys may change what is drawn in ways no setter sees (a gizmo's hover, the editor's tools).
+    for (const type of INPUT_EVENTS) this.renderer.domElement.addEventListener(type, this.invalidate);
+    window.addEventListener('keydown', this.invalidate);
   }
+
+  /**
+   * Asks for new pictures: the view draws only when something changed (a battery on a laptop should not pay for a face
+   * that stands still), so whatever changes the scene outside the view's own setters and frame hooks calls this.
+   */
+  readonly invalidate = (): void => {
+    this.drawUntil = performance.now() + DRAW_AFTER_CHANGE_MS;
+    this.drawFrames = DRAW_AFTER_CHANGE_FRAMES;
+  };
 
   /** Shows a head (replacing the one shown) and frames it from the front. */
   setHead(head: HeadModel): void {
@@ -131,6 +161,7 @@ export class HeadView {
     this.scene.add(head.root);
     this.frame_(head);
     this.applyRender();
+    this.invalidate();
   }
 
   /** Shows a background colour, or the page behind the canvas. */
@@ -139,12 +170,14 @@ export class HeadView {
       this.scene.background = null;
       this.renderer.setClearColor(0x000000, 0);
     } else this.scene.background = new Color(background);
+    this.invalidate();
   }
 
   /** Changes some light options; throws, changing nothing, on an unknown option or a value of the wrong type or range. */
   setLight(partial: Partial<LightOptions>): void {
     Object.assign(this.light, checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, LIGHT_RANGES));
     this.applyLight();
+    this.invalidate();
   }
 
   /** A copy of the current light options. */
@@ -156,6 +189,7 @@ export class HeadView {
   setRenderOptions(partial: Partial<RenderOptions>): void {
     Object.assign(this.render, checkOptions<RenderOptions>('setRenderOptions', partial, RENDER_DEFAULTS));
     this.applyRender();
+    this.invalidate();
   }
 
   /** A copy of the current render options. */
@@ -174,15 +208,16 @@ export class HeadView {
   }
 
   /**
-   * Runs `hook` before each rendered frame (until the returned function is called); frames are rendered only while
-   * the canvas is in view. It must not wait for anything.
+   * Runs `hook` at each animation frame while the canvas is in view (until the returned function is called); a frame
+   * is drawn if a hook says it changed something (see FrameHook). It must not wait for anything.
    */
   onFrame(hook: FrameHook): () => void {
-    this.frameHooks.push(hook);
-    return () => {
-      const i = this.frameHooks.indexOf(hook);
-      if (i >= 0) this.frameHooks.splice(i, 1);
-    };
+    return remover(this.frameHooks, hook);
+  }
+
+  /** Runs `hook` after each drawn frame (until the returned function is called). */
+  onRender(hook: () => void): () => void {
+    return remover(this.renderHooks, hook);
   }
 
   /** Starts the render loop. */
@@ -190,10 +225,16 @@ export class HeadView {
     const loop = (now: number): void => {
       this.frame = requestAnimationFrame(loop);
       if (!this.inView) return;
-      for (let i = 0; i < this.frameHooks.length; i++) this.frameHooks[i](now);
-      this.controls.update();
+      let changed = this.drawFrames > 0 || performance.now() < this.drawUntil;
+      for (let i = 0; i < this.frameHooks.length; i++) if (this.frameHooks[i](now) === true) changed = true;
+      // True while the camera moves: a drag, or the damping after one.
+      if (this.controls.update()) changed = true;
+      if (!changed) return;
+      if (this.drawFrames > 0) this.drawFrames--;
       this.renderFrame();
+      for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
     };
+    this.invalidate();
     if (!this.frame) loop(performance.now());
   }
 
@@ -248,6 +289,9 @@ export class HeadView {
     cancelAnimationFrame(this.frame);
     this.frame = 0;
     this.frameHooks.length = 0;
+    this.renderHooks.length = 0;
+    for (const type of INPUT_EVENTS) this.renderer.domElement.removeEventListener(type, this.invalidate);
+    window.removeEventListener('keydown', this.invalidate);
     this.resizeObserver.disconnect();
     this.viewObserver.disconnect();
     this.controls.dispose();
@@ -325,6 +369,7 @@ export class HeadView {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.invalidate();
   }
 }
 
@@ -343,4 +388,16 @@ function disposeTree(root: Object3D): void {
     for (const value of Object.values(material)) if (value instanceof Texture) value.dispose();
     material.dispose();
   }
+}
+
+/** Events on the canvas after which the view draws for a while (see HeadView.invalidate). */
+const INPUT_EVENTS = ['pointerdown', 'pointermove', 'pointerup', 'wheel'] as const;
+
+/** Adds `item` to `list` and returns a function that takes it out again. */
+function remover<T>(list: T[], item: T): () => void {
+  list.push(item);
+  return () => {
+    const i = list.indexOf(item);
+    if (i >= 0) list.splice(i, 1);
+  };
 }

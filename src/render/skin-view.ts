@@ -43,10 +43,10 @@ export class SkinView {
     this.source = source;
   }
 
-  /** Copies the newest solved frame into the mesh, if one arrived since the last call. */
-  update(): void {
+  /** Copies the newest solved frame into the mesh, if one arrived since the last call; returns whether one did. */
+  update(): boolean {
     const source = this.source;
-    if (!source || !source.readFrame(this.positions.array as Float32Array, this.normals.array as Float32Array)) return;
+    if (!source || !source.readFrame(this.positions.array as Float32Array, this.normals.array as Float32Array)) return false;
     // While the skin is awake nearly every vertex moves a little each frame (measured: over 95% for a forehead pull),
     // so each attribute is sent whole. The range objects are reused: addUpdateRange would allocate one per call.
     markWhole(this.positions, this.positionRange);
@@ -56,6 +56,7 @@ export class SkinView {
     box.min.set(b[0], b[1], b[2]);
     box.max.set(b[3], b[4], b[5]);
     box.getBoundingSphere(this.geometry.boundingSphere as Sphere);
+    return true;
   }
 }
 

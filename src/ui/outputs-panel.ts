@@ -2,9 +2,9 @@ import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { FaceHandle } from '../embed/face-handle';
 
-/** Something that calls hooks once per rendered frame (HeadView). */
+/** Something that calls hooks once per drawn frame (HeadView). */
 export interface FrameSource {
-  onFrame(hook: (now: number) => void): () => void;
+  onRender(hook: () => void): () => void;
 }
 
 export interface OutputsPanelOptions {
@@ -34,7 +34,8 @@ interface Outputs {
 }
 
 /**
- * The Outputs folder: frames per second (counted from rendered frames), the solver's ms per frame, the skin's size,
+ * The Outputs folder: frames per second (counted from drawn frames: 0 while nothing moves, as the view then draws
+ * nothing), the solver's ms per frame, the skin's size,
  * its constraints by type, the solver mode and its threads. Read-only, refreshed on a timer: the per-frame hook only counts.
  */
 export class OutputsPanel {
@@ -66,7 +67,7 @@ export class OutputsPanel {
     show('collision', 'collision constraints', 0);
     show('mode', 'worker mode');
     show('workers', 'solver threads', 0);
-    this.stopFrames = frames.onFrame(this.countFrame);
+    this.stopFrames = frames.onRender(this.countFrame);
     this.timer = setInterval(() => this.refresh(), o.refreshMs);
     this.refresh();
   }
