@@ -277,6 +277,8 @@ export class SkinSolver {
     this.colliderShapes = allocate(Float64Array, COLLIDER_SHAPE * this.colliders.length, memory);
     for (let k = 0; k < this.colliders.length; k++) writeColliderShape(this.colliders[k], this.colliderShapes, k);
     const triangleCount = topology.triangles.length / 3;
+    // Rounded up to whole words (see PartArrays.uncheckedWords); the flags past the last triangle stay 0.
+    const unchecked = allocate(Uint8Array, 4 * Math.ceil(triangleCount / 4), memory);
     this.parts = {
       positions: this.buffers.positions,
       rest: topology.rest,
@@ -287,7 +289,8 @@ export class SkinSolver {
       vertexTriangles: topology.vertexTriangles,
       edges: this.edgeLists,
       triangles: this.triangleLists,
-      unchecked: allocate(Uint8Array, triangleCount, memory),
+      unchecked,
+      uncheckedWords: new Uint32Array(unchecked.buffer),
       listedTriangle: allocate(Int32Array, triangleCount, memory),
       regionVertices: this.region.vertices,
       colliders: this.colliders,
