@@ -133,6 +133,13 @@ export class HeadView {
     this.applyRender();
   }
 
+  /** Takes `head` off the scene if it is the one shown (its resources are the caller's to free). */
+  removeHead(head: HeadModel): void {
+    if (this.head !== head) return;
+    this.scene.remove(head.root);
+    this.head = undefined;
+  }
+
   /** Shows a background colour, or the page behind the canvas. */
   setBackground(background: ViewBackground): void {
     if (background === 'transparent') {
