@@ -196,7 +196,7 @@ export class EmbeddedFace {
       const files = await readHeadFiles(source);
       const prepared = await prepareHead(files, o, this.partsUrl, this.original);
       this.alive();
-      await this.mount(prepared.head, prepared, started);
+      await this.mount(prepared.head, prepared, started, undefined, true);
       await this.headStore?.save({ files: prepared.files, options: { ...prepared.options, landmarks: null }, landmarks: prepared.landmarks });
       return this.describeHead();
     };
@@ -228,9 +228,10 @@ export class EmbeddedFace {
   /**
    * Shows `head` with its rig (the face's own for the default head, the carried-over one for a loaded head): the skin
    * solver for it is started first, and only then is the current head's machinery taken back, so a failure leaves
-   * the current head as it was. The expression, the eye simulation and the editor's state carry over.
+   * the current head as it was. The expression, the eye simulation and the editor's state carry over. `fresh`: a
+   * head loaded now, whose rig starts as carried over (an edited rig kept for an earlier loaded head is dropped).
    */
-  private async mount(head: HeadModel, prepared: PreparedHead | undefined, started: number, signal?: AbortSignal): Promise<void> {
+  private async mount(head: HeadModel, prepared: PreparedHead | undefined, started: number, signal?: AbortSignal, fresh = false): Promise<void> {
     const o = this.options;
     const original = prepared?.rig ?? this.original;
     const own: (() => void)[] = [];
@@ -244,7 +245,9 @@ export class EmbeddedFace {
       // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
       if (this.rigKey) {
         autosave = new RigAutosave(prepared ? `${this.rigKey}:head-rig` : this.rigKey, original);
-        rig = (await autosave.load()) ?? original;
+        // A head just loaded starts from its carried-over rig; one kept from an earlier visit from its edited rig.
+        if (fresh) await autosave.clear();
+        else rig = (await autosave.load()) ?? original;
         signal?.throwIfAborted();
       }
       simulation = await SkinSimulation.create({
