@@ -19,8 +19,9 @@ import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
 import { FaceHandle } from './face-handle';
-import { checkLoadHeadOptions, prepareHead, readHeadFiles, type HeadDescription, type HeadSource, type LoadHeadOptions, type PreparedHead } from './head-loader';
+import { checkLoadHeadOptions, MissingLandmarksError, prepareHead, readHeadFiles, type HeadDescription, type HeadSource, type LoadHeadOptions, type PreparedHead } from './head-loader';
 import { HeadStore } from './head-store';
+import { LandmarkGuide } from './landmark-guide';
 import { checkFaceOption, checkFaceOptions, type FaceOptions, type SolverChoice } from './face-options';
 import { packageAssetBase } from './package-assets';
 
@@ -48,6 +49,8 @@ export class EmbeddedFace {
   private rigKey: string | undefined;
   private headStore: HeadStore | undefined;
   private head!: HeadDescription;
+  private shownHead: HeadModel | undefined;
+  private guide: LandmarkGuide | undefined;
   /** The last head load or revert asked for: the next waits for it. */
   private loading: Promise<unknown> = Promise.resolve();
 
@@ -130,6 +133,7 @@ export class EmbeddedFace {
         failure ??= error;
       }
     };
+    attempt(() => this.guide?.cancel());
     attempt(() => this.unmount());
     while (this.undo.length > 0) attempt(this.undo.pop()!);
     attempt(() => this.view.dispose());
@@ -206,6 +210,46 @@ export class EmbeddedFace {
     return next;
   }
 
+  /**
+   * Loads a head as `loadHead` does, but where landmarks cannot be found, shows its skin alone and has them placed by
+   * clicking on it (or `placeLandmark`), in the order of `LANDMARK_NAMES`; once the last is placed the head loads with
+   * them. Resolves when it is shown; rejects if the guide is cancelled or the file is refused for another reason.
+   */
+  async guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
+    this.alive();
+    const o = checkLoadHeadOptions(options);
+    const files = await readHeadFiles(source);
+    try {
+      return await this.loadHead(files, o);
+    } catch (error) {
+      if (!(error instanceof MissingLandmarksError)) throw error;
+      this.guide?.cancel();
+      const guide = new LandmarkGuide(this.view, error, this.currentHeadRoot(), () => this.handle.guideChanged());
+      this.guide = guide;
+      this.handle.setEditor(false);
+      this.handle.guideChanged();
+      let landmarks: Partial<Landmarks>;
+      try {
+        landmarks = await guide.done;
+      } finally {
+        guide.dispose();
+        if (this.guide === guide) this.guide = undefined;
+        if (!this.disposed && this.shownHead) this.view.frameBounds(this.shownHead.bounds);
+        this.handle.guideChanged();
+      }
+      return this.loadHead(files, { ...o, landmarks: { ...(o.landmarks ?? {}), ...landmarks } });
+    }
+  }
+
+  /** The landmark guide under way, if any. */
+  landmarkGuide(): LandmarkGuide | undefined {
+    return this.guide;
+  }
+
+  private currentHeadRoot(): HeadModel['root'] | undefined {
+    return this.shownHead?.root;
+  }
+
   /** Shows the default head again with the face's own rig, and forgets a kept loaded head. */
   async revertHead(): Promise<void> {
     this.alive();
@@ -268,6 +312,7 @@ export class EmbeddedFace {
     const carried = this.expression ? this.handle.carriedState() : undefined;
     this.unmount();
     this.view.setHead(head);
+    this.shownHead = head;
     own.push(() => {
       this.view.removeHead(head);
       disposeHead(head);

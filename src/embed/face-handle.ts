@@ -11,6 +11,8 @@ import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
 import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
 import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader';
+import type { LandmarkGuide, LandmarkGuideState } from './landmark-guide';
+import type { Vec3 } from '../core/rig-types';
 import type { FaceExpression } from './face-expression';
 
 /** The welded skin at one moment, in simulation vertex order. */
@@ -29,10 +31,10 @@ export type FaceStats = SkinSimulationStats;
 /**
  * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters,
  * whether the eye simulation runs, which muscles are shown, the rig (an edit, undo or redo, a new rig), or the
- * editor (on or off, the selected muscle, its gizmo's mode or part, the preview contraction), or the head (another
- * head loaded, or the default one back).
+ * editor (on or off, the selected muscle, its gizmo's mode or part, the preview contraction), the head (another
+ * head loaded, or the default one back), or the landmark guide (started, a landmark placed, ended).
  */
-export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head';
+export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks';
 
 /**
  * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
@@ -125,6 +127,8 @@ export interface FaceHeads {
   loadHead(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription>;
   revertHead(): Promise<void>;
   describeHead(): HeadDescription;
+  guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription>;
+  landmarkGuide(): LandmarkGuide | undefined;
 }
 
 /** What carries over from one head to the next: the expression, the eye simulation, the skin parameters. */
@@ -328,6 +332,47 @@ export class FaceHandle {
     this.alive();
     await this.ready;
     return this.headSide().revertHead();
+  }
+
+  /**
+   * Loads a head as `loadHead` does; where its landmarks cannot all be found, shows its skin alone and has the
+   * missing ones placed by clicking on it (the Head folder says which: "click the left mouth corner"), then loads it
+   * with them. Resolves once the head is shown; rejects if the guide is cancelled or the file is refused otherwise.
+   */
+  async guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
+    this.alive();
+    await this.ready;
+    return this.headSide().guideLandmarks(source, options);
+  }
+
+  /** The landmark guide under way (what to click next, what is placed), or null. */
+  describeLandmarkGuide(): LandmarkGuideState | null {
+    return this.headSide().landmarkGuide()?.state() ?? null;
+  }
+
+  /** Places the guide's next landmark at a point of the shown skin (metres), as a click on it does. */
+  placeLandmark(point: Vec3): void {
+    const guide = this.headSide().landmarkGuide();
+    if (!guide) throw new Error('placeLandmark: no landmark guide is under way');
+    guide.place(point);
+  }
+
+  /** Where a point of the skin the guide shows is on the page (client pixels), to click it (read-only, for tests). */
+  locateLandmarkPoint(point: Vec3): { x: number; y: number } | null {
+    return this.headSide().landmarkGuide()?.locate(point) ?? null;
+  }
+
+  /** Stops the landmark guide; its `guideLandmarks` rejects and the face keeps its head. */
+  cancelLandmarkGuide(): void {
+    this.headSide().landmarkGuide()?.cancel();
+  }
+
+  /**
+   * Tells listeners that the landmark guide changed.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  guideChanged(): void {
+    if (!this.disposed) this.emit('landmarks');
   }
 
   /** The head shown: default or loaded, its file, size, units, axes and landmarks (read-only). */

@@ -1,4 +1,4 @@
-import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, weldSeams, type Axis, type HeadFrame, type Unit } from '../core/head-mesh';
+import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, weldSeams, type Axis, type HeadFrame, type TriangleMesh, type Unit } from '../core/head-mesh';
 import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_LABELS, LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/landmarks';
 import { parseRig } from '../core/rig-schema';
 import type { Rig, Vec3 } from '../core/rig-types';
@@ -62,6 +62,23 @@ export interface PreparedHead {
   frame: HeadFrame;
   files: HeadFile[];
   options: Required<LoadHeadOptions>;
+}
+
+/**
+ * A head whose landmarks could not all be found: the message names them and why. It carries what is needed to place
+ * the missing ones by hand (`face.guideLandmarks`): the skin in the app's frame and the landmarks found.
+ */
+export class MissingLandmarksError extends Error {
+  override readonly name = 'MissingLandmarksError';
+  constructor(
+    message: string,
+    readonly missing: LandmarkName[],
+    readonly found: Partial<Landmarks>,
+    /** The skin as it would be shown, in metres in the app's frame. */
+    readonly skin: TriangleMesh,
+  ) {
+    super(message);
+  }
 }
 
 /** Checks `loadHead` options and fills in the defaults; throws naming the first bad one. */
@@ -160,7 +177,12 @@ export async function prepareHead(files: HeadFile[], options: Required<LoadHeadO
       const names = missing.filter((m) => m.reason === reason).map((m) => LANDMARK_LABELS[m.name]);
       return `${names.join(', ')} (${reason})`;
     });
-    throw new Error(`${source}: no face was found on the mesh: ${reasons.join('; ')}. Give the missing points in options.landmarks, or check its units and axes`);
+    throw new MissingLandmarksError(
+      `${source}: no face was found on the mesh: ${reasons.join('; ')}. Place them by clicking ("place landmarks" in the Head folder) or give them in options.landmarks, or check its units and axes`,
+      missing.map((m) => m.name),
+      found,
+      mesh,
+    );
   }
   const landmarks = found as Landmarks;
   const warp = fitThinPlate(

@@ -14,15 +14,25 @@ export function isHeadDrop(files: ArrayLike<File>): boolean {
 /**
  * The Head folder: the head shown (default or loaded, its size and load time), "load head" (a file picker; dropping
  * a `.glb`, `.gltf` with its files, or `.obj` on the face does the same) and "default head". A refused file's message
- * shows here and the current head stays.
+ * shows here and the current head stays; one refused because its landmarks were not found offers "place landmarks by
+ * clicking", which shows its skin and asks for each missing landmark in turn ("click the left mouth corner").
  */
 export class HeadPanel {
   readonly folder: GUI;
-  private readonly state = { load: (): void => this.fileInput.click(), revert: (): void => void this.run('default head', () => this.face.revertHead()) };
+  private readonly state = {
+    load: (): void => this.fileInput.click(),
+    revert: (): void => void this.run('default head', () => this.face.revertHead()),
+    guide: (): void => this.guide(),
+    cancel: (): void => this.face.cancelLandmarkGuide(),
+  };
   private readonly status: HTMLDivElement;
   private readonly message: HTMLDivElement;
   private readonly fileInput: HTMLInputElement;
   private readonly revertButton: Controller;
+  private readonly guideButton: Controller;
+  private readonly cancelButton: Controller;
+  /** The files of the last head refused for landmarks not found: "place landmarks" guides them. */
+  private unplaced: File[] | undefined;
   private readonly unsubscribe: () => void;
 
   constructor(parent: GUI, private readonly face: FaceHandle, private readonly dropTarget?: HTMLElement) {
@@ -32,6 +42,10 @@ export class HeadPanel {
     this.folder.add(this.state, 'load').name('load head (.glb, .gltf, .obj, or drop it)').domElement.dataset.control = 'load-head';
     this.revertButton = this.folder.add(this.state, 'revert').name('default head');
     this.revertButton.domElement.dataset.control = 'revert-head';
+    this.guideButton = this.folder.add(this.state, 'guide').name('place landmarks by clicking');
+    this.guideButton.domElement.dataset.control = 'guide-landmarks';
+    this.cancelButton = this.folder.add(this.state, 'cancel').name('cancel placing landmarks');
+    this.cancelButton.domElement.dataset.control = 'cancel-landmarks';
     this.fileInput = document.createElement('input');
     Object.assign(this.fileInput, { type: 'file', accept: '.glb,.gltf,.obj,.bin,image/*', multiple: true, hidden: true });
     this.fileInput.dataset.control = 'head-file';
@@ -41,7 +55,7 @@ export class HeadPanel {
     this.folder.$children.append(this.message);
     this.refresh();
     this.unsubscribe = face.onChange((change: FaceChange) => {
-      if (change === 'head') this.refresh();
+      if (change === 'head' || change === 'landmarks') this.refresh();
     });
     dropTarget?.addEventListener('drop', this.onDrop);
   }
@@ -60,14 +74,40 @@ export class HeadPanel {
         ? `default head · ${h.vertices.toLocaleString('en-US')} vertices`
         : `${h.name} · ${h.vertices.toLocaleString('en-US')} vertices, ${h.triangles.toLocaleString('en-US')} triangles`;
     this.revertButton.show(h.source === 'loaded');
+    const guide = this.face.describeLandmarkGuide();
+    this.guideButton.show(!guide && !!this.unplaced);
+    this.cancelButton.show(!!guide);
+    if (guide) {
+      this.message.style.color = '#ffd54f';
+      this.message.textContent = `${guide.file}: ${guide.prompt}`;
+    }
+  }
+
+  /** Places the refused head's missing landmarks by clicking, then loads it. */
+  private guide(): void {
+    const files = this.unplaced;
+    if (!files) return;
+    this.unplaced = undefined;
+    const main = files.find((f) => HEAD_MAIN.test(f.name)) ?? files[0];
+    void this.run(main.name, async () => {
+      const h = await this.face.guideLandmarks(files);
+      this.message.textContent = `loaded ${h.name} with the landmarks placed`;
+    });
   }
 
   /** Loads the files as a head; the outcome (or the refusal) is shown in the folder. */
   private load(files: File[]): void {
     const main = files.find((f) => HEAD_MAIN.test(f.name));
+    this.unplaced = undefined;
     void this.run(main?.name ?? files[0].name, async () => {
-      const h = await this.face.loadHead(files);
-      this.message.textContent = `loaded ${h.name} in ${(h.loadMs / 1000).toFixed(1)} s (${h.units}, up ${h.up}, face ${h.forward})`;
+      try {
+        const h = await this.face.loadHead(files);
+        this.message.textContent = `loaded ${h.name} in ${(h.loadMs / 1000).toFixed(1)} s (${h.units}, up ${h.up}, face ${h.forward})`;
+      } catch (error) {
+        // Landmarks not found: they can be placed by hand.
+        if ((error as Error).name === 'MissingLandmarksError') this.unplaced = files;
+        throw error;
+      }
     });
   }
 
@@ -82,6 +122,7 @@ export class HeadPanel {
       this.message.textContent = (error as Error).message;
       this.folder.open();
     }
+    this.refresh();
   }
 
   private readonly onFile = (): void => {
