@@ -162,7 +162,8 @@ export class EmbeddedFace {
       signal?.throwIfAborted();
       if (stored) {
         try {
-          prepared = await prepareHead(stored.files, { ...stored.options, landmarks: stored.landmarks }, this.partsUrl, original);
+          const options = { ...stored.options, landmarks: stored.landmarks };
+          prepared = await prepareHead(stored.files, options, this.partsUrl, original, options.resolution ?? o.resolution);
         } catch (error) {
           console.warn(`the head kept from an earlier visit was not used: ${(error as Error).message}`);
         }
@@ -198,7 +199,7 @@ export class EmbeddedFace {
     const run = async (): Promise<HeadDescription> => {
       const started = performance.now();
       const files = await readHeadFiles(source);
-      const prepared = await prepareHead(files, o, this.partsUrl, this.original);
+      const prepared = await prepareHead(files, o, this.partsUrl, this.original, o.resolution ?? this.options.resolution);
       this.alive();
       await this.mount(prepared.head, prepared, started, undefined, true);
       await this.headStore?.save({ files: prepared.files, options: { ...prepared.options, landmarks: null }, landmarks: prepared.landmarks });
@@ -384,6 +385,7 @@ export class EmbeddedFace {
     const frame = prepared?.frame;
     this.head = {
       source: prepared ? 'loaded' : 'default',
+      level: prepared ? prepared.level : o.resolution,
       name: prepared ? prepared.files[0].name : (this.modelUrl.split('/').pop() ?? ''),
       vertices: simulation.stats().vertices,
       triangles: geometry.index!.count / 3,

@@ -1,4 +1,5 @@
 import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, weldSeams, type Axis, type HeadFrame, type TriangleMesh, type Unit } from '../core/head-mesh';
+import { decimateHead, LEVEL_TRIANGLES, levelPlan, subdivideHead, type HeadLevel, type LevelPlan } from '../core/head-levels';
 import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_LABELS, LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/landmarks';
 import { parseRig } from '../core/rig-schema';
 import type { Rig, Vec3 } from '../core/rig-types';
@@ -24,6 +25,12 @@ export interface LoadHeadOptions {
    * +y up, the face toward +z, the subject's left at +x, the midline at x = 0). Names as `LANDMARK_NAMES`.
    */
   landmarks?: Partial<Record<LandmarkName, Vec3>> | null;
+  /**
+   * The resolution to show it at: `low`, `medium` or `high` aim at the default head's triangle counts (8,524, 34,096,
+   * 136,384) by Catmull-Clark subdivision or decimation, never above 200,000 triangles; `file` keeps the file's mesh;
+   * null: the face's resolution.
+   */
+  resolution?: HeadLevel | 'file' | null;
 }
 
 export const LOAD_HEAD_DEFAULTS: Readonly<Required<LoadHeadOptions>> = Object.freeze({
@@ -32,6 +39,7 @@ export const LOAD_HEAD_DEFAULTS: Readonly<Required<LoadHeadOptions>> = Object.fr
   up: 'auto',
   forward: 'auto',
   landmarks: null,
+  resolution: null,
 });
 
 /** The largest head file taken: a 200,000-triangle mesh with uvs and normals is some 20 MB as GLB, 30 MB as OBJ. */
@@ -42,6 +50,8 @@ export interface HeadDescription {
   source: 'default' | 'loaded';
   /** The file's name (the default head's model file for the default head). */
   name: string;
+  /** The resolution shown: a level (the default head's, or reached by subdivision or decimation) or the file's own mesh. */
+  level: HeadLevel | 'file';
   /** Welded skin vertices and triangles. */
   vertices: number;
   triangles: number;
@@ -57,6 +67,7 @@ export interface HeadDescription {
 /** A head read, checked and fitted, with its rig carried over: ready to be shown. */
 export interface PreparedHead {
   head: HeadModel;
+  level: HeadLevel | 'file';
   rig: Rig;
   landmarks: Landmarks;
   frame: HeadFrame;
@@ -99,6 +110,9 @@ export function checkLoadHeadOptions(options: unknown): Required<LoadHeadOptions
       case 'up':
       case 'forward':
         if (value !== 'auto' && !AXES.includes(value as Axis)) throw bad(`one of auto, ${AXES.join(', ')}`);
+        break;
+      case 'resolution':
+        if (value !== null && value !== 'file' && !(typeof value === 'string' && value in LEVEL_TRIANGLES)) throw bad(`one of ${Object.keys(LEVEL_TRIANGLES).join(', ')}, file`);
         break;
       case 'landmarks':
         if (value === null) break;
@@ -160,7 +174,13 @@ export async function readHeadFiles(source: HeadSource): Promise<HeadFile[]> {
  * head) over to it and builds it with the default head's parts (`defaultModelUrl`) where the file has none. Throws,
  * naming the file and what is wrong, before anything is shown.
  */
-export async function prepareHead(files: HeadFile[], options: Required<LoadHeadOptions>, defaultModelUrl: string, original: Rig): Promise<PreparedHead> {
+export async function prepareHead(
+  files: HeadFile[],
+  options: Required<LoadHeadOptions>,
+  defaultModelUrl: string,
+  original: Rig,
+  level: HeadLevel | 'file',
+): Promise<PreparedHead> {
   const { scene, file } = await readHeadScene(files);
   const source = file.name;
   const { mesh } = skinOf(scene, source, options.skin);
@@ -190,9 +210,12 @@ export async function prepareHead(files: HeadFile[], options: Required<LoadHeadO
     LANDMARK_NAMES.map((n) => landmarks[n]),
   );
   const rig = parseRig(warpRig(original, warp), `${source}: the rig carried over`);
+  // The landmarks are the file's mesh's; the level's mesh is what the solver moves and the page shows.
+  const plan: LevelPlan = level === 'file' ? { subdivisions: 0 } : levelPlan(mesh.indices.length / 3, level);
+  const shown = 'decimateTo' in plan ? await decimateHead(mesh, plan.decimateTo) : subdivideHead(mesh, plan.subdivisions);
   const defaults = await loadHeadModel(defaultModelUrl);
-  const head = buildLoadedHead(mesh, landmarks, { scene, frame, defaults, warp });
-  return { head, rig, landmarks, frame, files, options };
+  const head = buildLoadedHead(shown, landmarks, { scene, frame, defaults, warp });
+  return { head, level, rig, landmarks, frame, files, options };
 }
 
 function extent(P: Float32Array): { min: number[]; max: number[] } {
