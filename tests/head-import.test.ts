@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { eulerMatrix } from '../src/core/math3';
-import { applyHeadFrame, checkHeadMesh, findHeadFrame, weldSeams, type Axis } from '../src/core/head-mesh';
+import { applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, weldSeams, type Axis } from '../src/core/head-mesh';
 import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_NAMES } from '../src/core/landmarks';
 import { mulberry32 } from '../src/core/random';
 import { eulerDegrees, warpRig } from '../src/core/rig-warp';
@@ -150,6 +150,15 @@ describe('head mesh checks and frame', () => {
     expect(weldSeams(p, 1e-5)).toBe(1);
     expect(Array.from(p.slice(6, 9))).toEqual([1, 0, 0]);
     expect(p[12]).toBe(0.5);
+  });
+
+  it('merges the corners an OBJ reader splits into indexed vertices, keeping UV seam copies apart', () => {
+    // Two triangles sharing an edge, every corner its own vertex; the shared edge has the same uvs on one end only.
+    const positions = Float32Array.from([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]);
+    const uvs = Float32Array.from([0, 0, 1, 0, 0, 1, 1, 0, 1, 1, 0.5, 1]);
+    const merged = mergeVertices({ positions, indices: Uint32Array.from([0, 1, 2, 3, 4, 5]), uvs });
+    expect(merged.positions.length / 3).toBe(5);
+    expect(Array.from(merged.indices)).toEqual([0, 1, 2, 1, 3, 4]);
   });
 
   it.each([

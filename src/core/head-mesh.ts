@@ -80,6 +80,34 @@ export function weldSeams(positions: Float32Array, tolerance: number): number {
   return moved;
 }
 
+/**
+ * Merges vertices that are the same in position and uv (an OBJ reader gives every triangle corner its own vertex),
+ * so that the render mesh is indexed; UV seams keep their copies. Returns a new mesh.
+ */
+export function mergeVertices(mesh: TriangleMesh): TriangleMesh {
+  const { positions: P, uvs } = mesh;
+  const index = new Map<string, number>();
+  const positions: number[] = [];
+  const outUvs: number[] = [];
+  const remap = new Uint32Array(P.length / 3);
+  for (let v = 0; v < remap.length; v++) {
+    const key = uvs ? `${P[3 * v]},${P[3 * v + 1]},${P[3 * v + 2]},${uvs[2 * v]},${uvs[2 * v + 1]}` : `${P[3 * v]},${P[3 * v + 1]},${P[3 * v + 2]}`;
+    let r = index.get(key);
+    if (r === undefined) {
+      r = positions.length / 3;
+      index.set(key, r);
+      positions.push(P[3 * v], P[3 * v + 1], P[3 * v + 2]);
+      if (uvs) outUvs.push(uvs[2 * v], uvs[2 * v + 1]);
+    }
+    remap[v] = r;
+  }
+  return {
+    positions: Float32Array.from(positions),
+    indices: Uint32Array.from(mesh.indices, (v) => remap[v]),
+    uvs: uvs ? Float32Array.from(outUvs) : undefined,
+  };
+}
+
 /** An axis of the file's frame, with its sign. */
 export const AXES = ['+x', '-x', '+y', '-y', '+z', '-z'] as const;
 export type Axis = (typeof AXES)[number];

@@ -1,4 +1,4 @@
-import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, weldSeams, type Axis, type HeadFrame, type TriangleMesh, type Unit } from '../core/head-mesh';
+import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, weldSeams, type Axis, type HeadFrame, type TriangleMesh, type Unit } from '../core/head-mesh';
 import { decimateHead, LEVEL_TRIANGLES, levelPlan, subdivideHead, type HeadLevel, type LevelPlan } from '../core/head-levels';
 import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_LABELS, LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/landmarks';
 import { parseRig } from '../core/rig-schema';
@@ -183,10 +183,11 @@ export async function prepareHead(
 ): Promise<PreparedHead> {
   const { scene, file } = await readHeadScene(files);
   const source = file.name;
-  const { mesh } = skinOf(scene, source, options.skin);
-  checkHeadMesh(mesh, source);
-  const { min, max } = extent(mesh.positions);
-  weldSeams(mesh.positions, 1e-6 * Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]));
+  const read = skinOf(scene, source, options.skin).mesh;
+  checkHeadMesh(read, source);
+  const { min, max } = extent(read.positions);
+  weldSeams(read.positions, 1e-6 * Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]));
+  const mesh = mergeVertices(read);
   const frame = findHeadFrame(mesh.positions, mesh.indices, options, source);
   applyHeadFrame(mesh.positions, frame);
   const search = findLandmarks(mesh.positions, mesh.indices);
