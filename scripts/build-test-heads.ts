@@ -4,7 +4,7 @@
  *   npx tsx scripts/build-test-heads.ts [path/to/makehuman-hm08] [--out e2e/assets]
  * - `wide-jaw.glb`: the head decimated to about 60 % of its triangles (a different mesh, no UVs, as a scan might
  *   come), a 12 % wider jaw, a nose 8 mm longer, 8 % larger overall and moved; metres, +y up, its mesh not named
- *   `skin` (the largest mesh is taken);
+ *   `skin` (the largest mesh is taken), with its own eyeballs as nodes `eye-l` and `eye-r` (plain spheres);
  * - `long-face.obj`: the head's quads with their UVs (so with UV seams), a face 7 % longer and a head 5 % narrower,
  *   in centimetres with +z up and the face toward -y (the units and orientation are to be found).
  * Running it twice gives identical files.
@@ -44,13 +44,14 @@ const copy = (m: PolyMesh): PolyMesh => ({ ...m, positions: m.positions.slice() 
 {
   const mesh = copy(head);
   const nose = [0, 0.691, 0.168];
-  reshape(mesh, ([x, y, z]) => {
+  const shape = ([x, y, z]: [number, number, number]): [number, number, number] => {
     // The jaw widens below the mouth corners, the most at the jaw's angle and below.
     const jaw = smoothstep(0.67, 0.62, y);
     const nearNose = Math.exp(-((x - nose[0]) ** 2 + (y - nose[1]) ** 2 + (z - nose[2]) ** 2) / (2 * 0.012 ** 2));
     const p = [x * (1 + 0.12 * jaw), y - 0.003 * nearNose, z + 0.008 * nearNose];
     return [1.08 * p[0] + 0.01, 1.08 * (p[1] - 0.7) + 1.5, 1.08 * p[2] - 0.02];
-  });
+  };
+  reshape(mesh, shape);
   const render = toRenderMesh(mesh, DECIMETRE);
   // Weld the UV seams (one vertex per position) so that the simplifier may move across them.
   const index = new Map<string, number>();
@@ -81,7 +82,15 @@ const copy = (m: PolyMesh): PolyMesh => ({ ...m, positions: m.positions.slice() 
   const compact = new Float32Array(3 * count);
   for (const [v, r] of renumber) compact.set(welded.subarray(3 * v, 3 * v + 3), 3 * r);
   const geometry = { positions: compact, normals: vertexNormals(compact, compactIndices), uvs: new Float32Array(2 * count), indices: compactIndices };
-  const bytes = await writeGlb({ name: 'Head_Geo', parts: [{ geometry, material: MATERIALS.skin }] }, {});
+  // The eyes: spheres of the hm08 eye's radius (12 mm) times the head's scale, at the reshaped eye joints.
+  const eyeball = sphereGeometry(0.012 * 1.08, 24, 16);
+  const eyes = (['eye-l', 'eye-r'] as const).map((name) => ({
+    name,
+    translation: shape([name === 'eye-l' ? 0.0308 : -0.0308, 0.7284, 0.1245]),
+    meshName: 'Eyeball',
+    parts: [{ geometry: eyeball, material: MATERIALS.sclera }],
+  }));
+  const bytes = await writeGlb({ name: 'Character', children: [{ name: 'Head_Geo', parts: [{ geometry, material: MATERIALS.skin }] }, ...eyes] }, {});
   writeFileSync(join(outDir, 'wide-jaw.glb'), bytes);
   console.log(`wide-jaw.glb: ${count} vertices, ${compactIndices.length / 3} triangles (from ${triangles.length / 3}), ${bytes.length} bytes`);
 }
@@ -114,6 +123,32 @@ const copy = (m: PolyMesh): PolyMesh => ({ ...m, positions: m.positions.slice() 
   lines.push(...faces, '');
   writeFileSync(join(outDir, 'long-face.obj'), lines.join('\n'));
   console.log(`long-face.obj: ${vertexCount(mesh)} vertices, ${uvIndex.size} uvs, ${faceCount(mesh)} faces`);
+}
+
+/** A UV sphere about the origin: `segments` around, `rings` from pole to pole. */
+function sphereGeometry(radius: number, segments: number, rings: number) {
+  const positions: number[] = [];
+  const normals: number[] = [];
+  const uvs: number[] = [];
+  const indices: number[] = [];
+  for (let j = 0; j <= rings; j++) {
+    for (let i = 0; i <= segments; i++) {
+      const t = (Math.PI * j) / rings;
+      const p = (2 * Math.PI * i) / segments;
+      const n = [Math.sin(t) * Math.sin(p), Math.cos(t), Math.sin(t) * Math.cos(p)];
+      positions.push(...n.map((x) => radius * x));
+      normals.push(...n);
+      uvs.push(i / segments, j / rings);
+    }
+  }
+  for (let j = 0; j < rings; j++) {
+    for (let i = 0; i < segments; i++) {
+      const a = j * (segments + 1) + i;
+      const b = a + segments + 1;
+      indices.push(a, b, a + 1, a + 1, b, b + 1);
+    }
+  }
+  return { positions: Float32Array.from(positions), normals: Float32Array.from(normals), uvs: Float32Array.from(uvs), indices: Uint32Array.from(indices) };
 }
 
 /** Area-weighted vertex normals of a triangle mesh. */

@@ -393,6 +393,7 @@ export class EmbeddedFace {
       up: frame?.up ?? '+y',
       forward: frame?.forward ?? '+z',
       landmarks: prepared ? structuredClone(prepared.landmarks) : structuredClone(DEFAULT_LANDMARKS) as Landmarks,
+      parts: prepared ? { ...prepared.sources } : { eyes: 'file', teeth: 'file', jaw: 'file' },
       loadMs: started > 0 ? Math.round(performance.now() - started) : 0,
     };
     if (carried) this.handle.restoreState(carried);

@@ -5,10 +5,10 @@ import { parseRig } from '../core/rig-schema';
 import type { Rig, Vec3 } from '../core/rig-types';
 import { warpRig } from '../core/rig-warp';
 import { fitThinPlate } from '../core/thin-plate';
-import { buildLoadedHead, readHeadScene, skinOf, type HeadFile } from '../render/head-import';
+import { buildLoadedHead, readHeadScene, skinOf, type HeadFile, type PartSources } from '../render/head-import';
 import { loadHeadModel, type HeadModel } from '../render/head-model';
 
-export type { HeadFile };
+export type { HeadFile, PartSources };
 
 /** How `loadHead` reads a head; every option may be left out. */
 export interface LoadHeadOptions {
@@ -60,6 +60,8 @@ export interface HeadDescription {
   up: Axis;
   forward: Axis;
   landmarks: Landmarks;
+  /** Where the eyes, teeth and jaw pivot came from: the file's named nodes, or the default head (carried over). */
+  parts: PartSources;
   /** Milliseconds from the start of `loadHead` to the new head shown (0 for the default head). */
   loadMs: number;
 }
@@ -67,6 +69,7 @@ export interface HeadDescription {
 /** A head read, checked and fitted, with its rig carried over: ready to be shown. */
 export interface PreparedHead {
   head: HeadModel;
+  sources: PartSources;
   level: HeadLevel | 'file';
   rig: Rig;
   landmarks: Landmarks;
@@ -215,8 +218,8 @@ export async function prepareHead(
   const plan: LevelPlan = level === 'file' ? { subdivisions: 0 } : levelPlan(mesh.indices.length / 3, level);
   const shown = 'decimateTo' in plan ? await decimateHead(mesh, plan.decimateTo) : subdivideHead(mesh, plan.subdivisions);
   const defaults = await loadHeadModel(defaultModelUrl);
-  const head = buildLoadedHead(shown, landmarks, { scene, frame, defaults, warp });
-  return { head, level, rig, landmarks, frame, files, options };
+  const { head, sources } = buildLoadedHead(shown, landmarks, { scene, frame, defaults, warp });
+  return { head, level, sources, rig, landmarks, frame, files, options };
 }
 
 function extent(P: Float32Array): { min: number[]; max: number[] } {

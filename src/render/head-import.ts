@@ -125,7 +125,14 @@ export interface HeadParts {
  * warped. Named nodes of the file (`eye-l`, `eye-r`, `teeth-upper`, `teeth-lower`, `jaw`) take the place of the
  * default head's. The default head's model is taken apart: its skin is disposed.
  */
-export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts: HeadParts): HeadModel {
+/** Where a loaded head's eyes, teeth and jaw pivot came from: its own file's named nodes, or the default head. */
+export interface PartSources {
+  eyes: 'file' | 'default';
+  teeth: 'file' | 'default';
+  jaw: 'file' | 'default';
+}
+
+export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts: HeadParts): { head: HeadModel; sources: PartSources } {
   const { defaults, warp, frame } = parts;
   const root = new Group();
   root.name = 'head';
@@ -171,6 +178,7 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
   for (const [name, at] of Object.entries(defaults.info.pivots)) pivots[name] = warpPoint(warp, at);
   let eyeRadius = defaults.info.eyeRadius * s;
   const eyes: Object3D[] = [];
+  const sources: PartSources = { eyes: 'default', teeth: 'default', jaw: 'default' };
   HEAD_NODES.eyes.forEach((name, i) => {
     const own = fromFile(name);
     if (own) {
@@ -187,6 +195,7 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
       pivots[name] = centre.toArray();
       root.add(pivot);
       eyes.push(pivot);
+      sources.eyes = 'file';
       return;
     }
     const eye = defaults.eyes[i];
@@ -220,6 +229,7 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
   const upper = ownUpper ?? defaults.teeth.find((t) => t.name === HEAD_NODES.upperTeeth);
   if (upper) {
     if (!ownUpper) warpGeometry(upper, new Vector3());
+    else sources.teeth = 'file';
     root.add(upper);
     teeth.push(upper);
   }
@@ -235,12 +245,16 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
         child.position.set(0, 0, 0);
         warpGeometry(child, hinge.clone().negate());
       }
-    } else pivots['jaw-hinge'] = jaw.position.toArray();
+    } else {
+      pivots['jaw-hinge'] = jaw.position.toArray();
+      sources.jaw = 'file';
+    }
     const ownLower = fromFile(HEAD_NODES.lowerTeeth);
     if (ownLower) {
       for (const child of [...jaw.children]) if (child.name === HEAD_NODES.lowerTeeth) child.removeFromParent();
       ownLower.position.sub(jaw.position);
       jaw.add(ownLower);
+      sources.teeth = 'file';
     }
     root.add(jaw);
     const lower = jaw.getObjectByName(HEAD_NODES.lowerTeeth);
@@ -248,7 +262,7 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
     tongue = jaw.getObjectByName(HEAD_NODES.tongue);
   }
   geometry.computeBoundingBox();
-  return {
+  const head: HeadModel = {
     root,
     skin: skinMesh,
     eyes,
@@ -264,4 +278,5 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
     },
     bounds: geometry.boundingBox!.clone(),
   };
+  return { head, sources };
 }
