@@ -26,6 +26,8 @@ test('a loaded head, its landmarks and its edited rig come back when the page is
   expect(after.head).toMatchObject({ source: 'loaded', name: 'long-face.obj', level: 'medium', triangles: 6 * loaded.head.triangles, landmarks: loaded.head.landmarks });
   expect(after.rig).toEqual(loaded.rig);
   expect(after.edited).toBe(true);
+  // Exported, the rig is that head's: long-face.rig.json.
+  expect(await page.evaluate(() => window.face.describeEditor().rigName)).toBe('long-face');
 
   await page.evaluate(() => window.face.revertHead());
   expect(await page.evaluate(() => window.face.describeHead())).toMatchObject({ source: 'default', level: 'medium', landmarks: original.landmarks });

@@ -180,7 +180,7 @@ export class EmbeddedFace {
       }
     }
     signal?.throwIfAborted();
-    await this.mount(head, prepared, 0, signal);
+    await this.mount(head, prepared, { signal });
 
     const start = readExpression(o.expression, 'createFace: expression');
     if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0) this.expression!.set(start, 'createFace: expression');
@@ -201,7 +201,7 @@ export class EmbeddedFace {
       const files = await readHeadFiles(source);
       const prepared = await prepareHead(files, o, this.partsUrl, this.original, o.resolution ?? this.options.resolution);
       this.alive();
-      await this.mount(prepared.head, prepared, started, undefined, true);
+      await this.mount(prepared.head, prepared, { started, fresh: true });
       await this.headStore?.save({ files: prepared.files, options: { ...prepared.options, landmarks: null }, landmarks: prepared.landmarks });
       return this.describeHead();
     };
@@ -257,7 +257,7 @@ export class EmbeddedFace {
     const run = async (): Promise<void> => {
       const head = await loadHeadModel(this.modelUrl);
       this.alive();
-      await this.mount(head, undefined, 0);
+      await this.mount(head, undefined, {});
       await this.headStore?.clear();
     };
     const next = this.loading.then(run, run);
@@ -273,10 +273,10 @@ export class EmbeddedFace {
   /**
    * Shows `head` with its rig (the face's own for the default head, the carried-over one for a loaded head): the skin
    * solver for it is started first, and only then is the current head's machinery taken back, so a failure leaves
-   * the current head as it was. The expression, the eye simulation and the editor's state carry over. `fresh`: a
-   * head loaded now, whose rig starts as carried over (an edited rig kept for an earlier loaded head is dropped).
+   * the current head as it was. The expression, the eye simulation and the editor's state carry over.
    */
-  private async mount(head: HeadModel, prepared: PreparedHead | undefined, started: number, signal?: AbortSignal, fresh = false): Promise<void> {
+  private async mount(head: HeadModel, prepared: PreparedHead | undefined, how: MountOptions): Promise<void> {
+    const { started = 0, signal, fresh = false } = how;
     const o = this.options;
     const original = prepared?.rig ?? this.original;
     const own: (() => void)[] = [];
@@ -416,6 +416,14 @@ export class EmbeddedFace {
   private alive(): void {
     if (this.disposed) throw new Error('the face was disposed');
   }
+}
+
+/** How a head is shown: when its load started (for `loadMs`), what may abort it, and whether it was loaded just now. */
+interface MountOptions {
+  started?: number;
+  signal?: AbortSignal;
+  /** A head loaded now: its rig starts as carried over (an edited rig kept for an earlier loaded head is dropped). */
+  fresh?: boolean;
 }
 
 /** The autosave key's part for a rig: its URL's path (the same rig at any host), or `object` for a rig given as one. */

@@ -6,7 +6,7 @@ import type { Rig, Vec3 } from '../core/rig-types';
 import { warpRig } from '../core/rig-warp';
 import { fitThinPlate } from '../core/thin-plate';
 import { buildLoadedHead, readHeadScene, skinOf, type HeadFile, type PartSources } from '../render/head-import';
-import { loadHeadModel, type HeadModel } from '../render/head-model';
+import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 
 export type { HeadFile, PartSources };
 
@@ -218,7 +218,14 @@ export async function prepareHead(
   const plan: LevelPlan = level === 'file' ? { subdivisions: 0 } : levelPlan(mesh.indices.length / 3, level);
   const shown = 'decimateTo' in plan ? await decimateHead(mesh, plan.decimateTo) : subdivideHead(mesh, plan.subdivisions);
   const defaults = await loadHeadModel(defaultModelUrl);
-  const { head, sources } = buildLoadedHead(shown, landmarks, { scene, frame, defaults, warp });
+  let built: ReturnType<typeof buildLoadedHead>;
+  try {
+    built = buildLoadedHead(shown, landmarks, { scene, frame, defaults, warp });
+  } catch (error) {
+    disposeHead(defaults);
+    throw error;
+  }
+  const { head, sources } = built;
   return { head, level, sources, rig, landmarks, frame, files, options };
 }
 
