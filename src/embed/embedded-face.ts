@@ -289,7 +289,7 @@ export class EmbeddedFace {
       skinView = new SkinView(head.skin);
       // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
       if (this.rigKey) {
-        autosave = new RigAutosave(prepared ? `${this.rigKey}:head-rig` : this.rigKey, original);
+        autosave = new RigAutosave(prepared && this.headStore ? this.headStore.rigKey : this.rigKey, original);
         // A head just loaded starts from its carried-over rig; one kept from an earlier visit from its edited rig.
         if (fresh) await autosave.clear();
         else rig = (await autosave.load()) ?? original;

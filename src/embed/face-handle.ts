@@ -302,7 +302,12 @@ export class FaceHandle {
    * @internal the face's own wiring, left out of the library's type declarations
    */
   restoreState(state: CarriedState): void {
-    this.expressed().set(state.expression, 'loadHead');
+    try {
+      this.expressed().set(state.expression, 'loadHead');
+    } catch (error) {
+      // A preset the new head's rig does not have (an imported rig had it): the new head starts neutral.
+      console.warn(`the expression was not carried over to the new head: ${(error as Error).message}`);
+    }
     this.running().setParameters(state.skin);
     this.eyes?.setEnabled(state.eyes);
   }

@@ -19,6 +19,11 @@ export interface StoredHead {
 export class HeadStore {
   constructor(private readonly key: string) {}
 
+  /** Where the autosave keeps the loaded head's edited rig (the default head's edited rig has a key of its own). */
+  get rigKey(): string {
+    return `${this.key}-rig`;
+  }
+
   /** The kept head, or undefined if there is none or it cannot be read (warned). */
   async load(): Promise<Omit<StoredHead, 'savedAt'> | undefined> {
     try {
@@ -39,9 +44,11 @@ export class HeadStore {
     }
   }
 
+  /** Forgets the kept head and its edited rig. */
   async clear(): Promise<void> {
     try {
       await del(this.key);
+      await del(this.rigKey);
     } catch (error) {
       console.warn(`the kept head could not be removed: ${(error as Error).message}`);
     }
