@@ -1,5 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { NodeIO } from '@gltf-transform/core';
+import type { HeadDescription } from '../src/embed/head-loader';
 import type { Page } from '@playwright/test';
 import { openFace } from './face';
 import { expect, test } from './fixtures';
@@ -10,7 +11,7 @@ import { control, openFolder } from './panels';
  * the outer eye corners), as the mean lift of the skin within a tenth of that size of the head's own landmarks (so
  * that meshes of different density are measured alike).
  */
-async function lifts(page: Page): Promise<{ au12: number; au1: number; size: number }> {
+async function lifts(page: Page): Promise<{ au12: number; au1: number; size: number; landmarks: HeadDescription['landmarks'] }> {
   return page.evaluate(async () => {
     const face = window.face;
     const { landmarks: L } = face.describeHead();
@@ -33,7 +34,7 @@ async function lifts(page: Page): Promise<{ au12: number; au1: number; size: num
       face.reset();
       return up / size;
     };
-    return { au12: await lift('AU12', ['mouth-l', 'mouth-r']), au1: await lift('AU1', ['brow-l', 'brow-r']), size };
+    return { au12: await lift('AU12', ['mouth-l', 'mouth-r']), au1: await lift('AU1', ['brow-l', 'brow-r']), size, landmarks: L };
   });
 }
 
@@ -72,4 +73,13 @@ test('a GLB, a glTF with its buffer and an OBJ head with their own meshes and pr
   await control(page, 'head-file').setInputFiles(files);
   await expect(control(page, 'head-message')).toContainText('loaded wide-jaw.gltf', { timeout: 60_000 });
   expect(await page.evaluate(() => window.face.describeHead())).toMatchObject({ source: 'loaded', name: 'wide-jaw.gltf', vertices: firstVertices, parts: { eyes: 'file' } });
+
+  // By URL, the default head's own model file: its eyes, teeth and jaw are taken from its named nodes, and its
+  // landmarks are found where the default head has them.
+  const own = await page.evaluate(async () => window.face.loadHead('models/head-low.glb'));
+  expect(own).toMatchObject({ source: 'loaded', name: 'head-low.glb', parts: { eyes: 'file', teeth: 'file', jaw: 'file' } });
+  for (const [name, p] of Object.entries(own.landmarks)) {
+    const q = reference.landmarks[name as keyof typeof reference.landmarks];
+    expect(Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), name).toBeLessThan(0.001);
+  }
 });

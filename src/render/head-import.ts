@@ -165,12 +165,24 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
     0, 0, 0, 1,
   );
   parts.scene.updateMatrixWorld(true);
+  // The app's materials by name (sclera, iris, cornea, teeth, tongue): a file's parts named so take them.
+  const materials = new Map<string, Material>();
+  defaults.root.traverse((o) => {
+    if (o instanceof Mesh && !Array.isArray(o.material) && o !== defaults.skin) materials.set((o.material as Material).name, o.material as Material);
+  });
   const fromFile = (name: string): Object3D | undefined => {
     const o = parts.scene.getObjectByName(name);
     if (!o) return undefined;
     // Into the app's frame, keeping its place: its world matrix, then the file's frame.
     o.removeFromParent();
     o.matrixWorld.premultiply(fileMatrix).decompose(o.position, o.quaternion, o.scale);
+    o.traverse((m) => {
+      if (!(m instanceof Mesh) || Array.isArray(m.material)) return;
+      const own = materials.get((m.material as Material).name);
+      if (own) m.material = own;
+      // The cornea blends over the iris, so it is drawn after the opaque parts.
+      m.renderOrder = (m.material as Material).transparent ? 2 : 0;
+    });
     return o;
   };
 
