@@ -196,6 +196,8 @@ export class EmbeddedFace {
   async loadHead(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
     this.alive();
     const o = checkLoadHeadOptions(options);
+    // Another head asked for: a landmark guide under way is given up.
+    this.guide?.cancel();
     const run = async (): Promise<HeadDescription> => {
       const started = performance.now();
       const files = await readHeadFiles(source);
@@ -254,6 +256,7 @@ export class EmbeddedFace {
   /** Shows the default head again with the face's own rig, and forgets a kept loaded head. */
   async revertHead(): Promise<void> {
     this.alive();
+    this.guide?.cancel();
     const run = async (): Promise<void> => {
       const head = await loadHeadModel(this.modelUrl);
       this.alive();
