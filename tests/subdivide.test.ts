@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { boundaryLoops } from '../scripts/model/cut';
-import { buildEdges, faceCount, vertexCount } from '../scripts/model/polymesh';
-import { catmullClark } from '../scripts/model/subdivide';
+import { buildEdges, faceCount, vertexCount } from '../src/core/polymesh';
+import { catmullClark } from '../src/core/subdivide';
 import { cube, grid } from './fixtures/meshes';
 
 describe('Catmull-Clark subdivision', () => {

@@ -3,8 +3,8 @@ import { boundaryLoops, cutAlongLoop, findEdgeLoop, subsetFaces } from './cut';
 import { buildEyeball, type TriGeometry } from './eye';
 import type { MaterialSpec, NodeSpec } from './glb';
 import type { ObjMesh } from './obj';
-import { catmullClark } from './subdivide';
-import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from './polymesh';
+import { catmullClark } from '../../src/core/subdivide';
+import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from '../../src/core/polymesh';
 
 /** MakeHuman works in decimetres; glTF and the app work in metres. */
 export const DECIMETRE = 0.1;

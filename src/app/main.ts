@@ -45,9 +45,17 @@ try {
     autosave: true,
   });
   window.face = face;
-  const vertices = face.stats().vertices;
-  const triangles = face.getSkin().triangles.length / 3;
-  modelStatus.textContent = `${resolution} head: ${vertices.toLocaleString('en-US')} vertices, ${triangles.toLocaleString('en-US')} triangles`;
+  const showModel = (): void => {
+    const head = face.describeHead();
+    const vertices = face.stats().vertices;
+    const triangles = face.getSkin().triangles.length / 3;
+    const what = head.source === 'default' ? `${resolution} head` : head.name;
+    modelStatus.textContent = `${what}: ${vertices.toLocaleString('en-US')} vertices, ${triangles.toLocaleString('en-US')} triangles`;
+  };
+  showModel();
+  face.onChange((change) => {
+    if (change === 'head') showModel();
+  });
   const showSolver = (): void => {
     const s = face.stats();
     const threads = s.workers > 1 ? ` (${s.workers} workers)` : '';

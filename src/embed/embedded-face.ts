@@ -4,7 +4,8 @@ import { RigDocument } from '../core/rig-document';
 import { parseRig, parseRigText } from '../core/rig-schema';
 import type { Rig } from '../core/rig-types';
 import { headColliders } from '../render/head-colliders';
-import { loadHeadModel, type HeadModel } from '../render/head-model';
+import { DEFAULT_LANDMARKS, type Landmarks } from '../core/landmarks';
+import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView, type ViewBackground } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
 import { SkinView } from '../render/skin-view';
@@ -18,6 +19,9 @@ import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
 import { FaceHandle } from './face-handle';
+import { checkLoadHeadOptions, MissingLandmarksError, prepareHead, readHeadFiles, type HeadDescription, type HeadSource, type LoadHeadOptions, type PreparedHead } from './head-loader';
+import { HeadStore } from './head-store';
+import { LandmarkGuide } from './landmark-guide';
 import { checkFaceOption, checkFaceOptions, type FaceOptions, type SolverChoice } from './face-options';
 import { packageAssetBase } from './package-assets';
 
@@ -35,6 +39,20 @@ export class EmbeddedFace {
   private readonly undo: (() => void)[] = [];
   private panels: Panels | undefined;
   private disposed = false;
+  /** How to take back the shown head and what runs it (solver, glyphs, editor, eyes), last first. */
+  private mounted: (() => void)[] = [];
+  private expression: FaceExpression | undefined;
+  /** The face's own rig, made on the default head: a loaded head gets it carried over. */
+  private original!: Rig;
+  private modelUrl = '';
+  private partsUrl = '';
+  private rigKey: string | undefined;
+  private headStore: HeadStore | undefined;
+  private head!: HeadDescription;
+  private shownHead: HeadModel | undefined;
+  private guide: LandmarkGuide | undefined;
+  /** The last head load or revert asked for: the next waits for it. */
+  private loading: Promise<unknown> = Promise.resolve();
 
   private constructor(
     container: HTMLElement,
@@ -50,6 +68,7 @@ export class EmbeddedFace {
     this.view = new HeadView(this.element, { background: viewBackground(options.background) });
     Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
     this.handle.attachView(this.view);
+    this.handle.attachHeads(this);
     this.view.start();
   }
 
@@ -114,6 +133,8 @@ export class EmbeddedFace {
         failure ??= error;
       }
     };
+    attempt(() => this.guide?.cancel());
+    attempt(() => this.unmount());
     while (this.undo.length > 0) attempt(this.undo.pop()!);
     attempt(() => this.view.dispose());
     this.element.remove();
@@ -126,54 +147,196 @@ export class EmbeddedFace {
     const rigLoading = loadRig(o.rig, base);
     // Awaited below; until then a failure must not count as unhandled if the head fails first.
     rigLoading.catch(() => {});
-    const modelUrl = o.model === null ? new URL(`models/head-${o.resolution}.glb`, base).href : pageUrl(o.model);
-    let head: HeadModel;
-    try {
-      head = await loadHeadModel(modelUrl);
-    } catch (error) {
-      throw new Error(`the head could not be loaded from ${modelUrl}: ${(error as Error).message}`);
-    }
-    // Before the first render: the skin's attributes become dynamic. Once shown, the view frees the head with itself.
-    const skinView = new SkinView(head.skin);
-    this.view.setHead(head);
-    signal?.throwIfAborted();
+    this.modelUrl = o.model === null ? new URL(`models/head-${o.resolution}.glb`, base).href : pageUrl(o.model);
+    // Loaded heads take their eyes and teeth from the lightest default head.
+    this.partsUrl = new URL('models/head-low.glb', base).href;
+    this.rigKey = o.autosave === false ? undefined : typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, base)}`;
     const original = await rigLoading;
     signal?.throwIfAborted();
-    // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
+    this.original = original;
+    // A head loaded on an earlier visit comes back, with its landmarks, so that its rig is the same.
+    let prepared: PreparedHead | undefined;
+    if (this.rigKey) {
+      this.headStore = new HeadStore(`${this.rigKey}:head`);
+      const stored = await this.headStore.load();
+      signal?.throwIfAborted();
+      if (stored) {
+        try {
+          const options = { ...stored.options, landmarks: stored.landmarks };
+          prepared = await prepareHead(stored.files, options, this.partsUrl, original, options.resolution ?? o.resolution);
+        } catch (error) {
+          console.warn(`the head kept from an earlier visit was not used: ${(error as Error).message}`);
+        }
+        signal?.throwIfAborted();
+      }
+    }
+    let head: HeadModel;
+    if (prepared) head = prepared.head;
+    else {
+      try {
+        head = await loadHeadModel(this.modelUrl);
+      } catch (error) {
+        throw new Error(`the head could not be loaded from ${this.modelUrl}: ${(error as Error).message}`);
+      }
+    }
+    signal?.throwIfAborted();
+    await this.mount(head, prepared, { signal });
+
+    const start = readExpression(o.expression, 'createFace: expression');
+    if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0) this.expression!.set(start, 'createFace: expression');
+    if (Object.keys(o.light).length > 0) this.handle.setLight(o.light);
+    if (o.eyeSimulation) this.handle.setEyeSimulation(true);
+    if (o.panels) this.setPanels(true);
+  }
+
+  /**
+   * Loads a head from a file or URL, carries the rig over to it and shows it in place of the current one. Everything is
+   * read, checked and fitted before the current head is touched: a refused file changes nothing.
+   */
+  async loadHead(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
+    this.alive();
+    const o = checkLoadHeadOptions(options);
+    // Another head asked for: a landmark guide under way is given up.
+    this.guide?.cancel();
+    const run = async (): Promise<HeadDescription> => {
+      const started = performance.now();
+      const files = await readHeadFiles(source);
+      const prepared = await prepareHead(files, o, this.partsUrl, this.original, o.resolution ?? this.options.resolution);
+      this.alive();
+      await this.mount(prepared.head, prepared, { started, fresh: true });
+      await this.headStore?.save({ files: prepared.files, options: { ...prepared.options, landmarks: null }, landmarks: prepared.landmarks });
+      return this.describeHead();
+    };
+    // One load at a time, in the order asked.
+    const next = this.loading.then(run, run);
+    this.loading = next.catch(() => {});
+    return next;
+  }
+
+  /**
+   * Loads a head as `loadHead` does, but where landmarks cannot be found, shows its skin alone and has them placed by
+   * clicking on it (or `placeLandmark`), in the order of `LANDMARK_NAMES`; once the last is placed the head loads with
+   * them. Resolves when it is shown; rejects if the guide is cancelled or the file is refused for another reason.
+   */
+  async guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
+    this.alive();
+    const o = checkLoadHeadOptions(options);
+    const files = await readHeadFiles(source);
+    try {
+      return await this.loadHead(files, o);
+    } catch (error) {
+      if (!(error instanceof MissingLandmarksError)) throw error;
+      this.guide?.cancel();
+      const guide = new LandmarkGuide(this.view, error, this.currentHeadRoot(), () => this.handle.guideChanged());
+      this.guide = guide;
+      this.handle.setEditor(false);
+      this.handle.guideChanged();
+      let landmarks: Partial<Landmarks>;
+      try {
+        landmarks = await guide.done;
+      } finally {
+        guide.dispose();
+        if (this.guide === guide) this.guide = undefined;
+        if (!this.disposed && this.shownHead) this.view.frameBounds(this.shownHead.bounds);
+        this.handle.guideChanged();
+      }
+      return this.loadHead(files, { ...o, landmarks: { ...(o.landmarks ?? {}), ...landmarks } });
+    }
+  }
+
+  /** The landmark guide under way, if any. */
+  landmarkGuide(): LandmarkGuide | undefined {
+    return this.guide;
+  }
+
+  private currentHeadRoot(): HeadModel['root'] | undefined {
+    return this.shownHead?.root;
+  }
+
+  /** Shows the default head again with the face's own rig, and forgets a kept loaded head. */
+  async revertHead(): Promise<void> {
+    this.alive();
+    this.guide?.cancel();
+    const run = async (): Promise<void> => {
+      const head = await loadHeadModel(this.modelUrl);
+      this.alive();
+      await this.mount(head, undefined, {});
+      await this.headStore?.clear();
+    };
+    const next = this.loading.then(run, run);
+    this.loading = next.catch(() => {});
+    return next;
+  }
+
+  /** What the face shows now: the default head or a loaded one. */
+  describeHead(): HeadDescription {
+    return structuredClone(this.head);
+  }
+
+  /**
+   * Shows `head` with its rig (the face's own for the default head, the carried-over one for a loaded head): the skin
+   * solver for it is started first, and only then is the current head's machinery taken back, so a failure leaves
+   * the current head as it was. The expression, the eye simulation and the editor's state carry over.
+   */
+  private async mount(head: HeadModel, prepared: PreparedHead | undefined, how: MountOptions): Promise<void> {
+    const { started = 0, signal, fresh = false } = how;
+    const o = this.options;
+    const original = prepared?.rig ?? this.original;
+    const own: (() => void)[] = [];
+    let skinView: SkinView;
+    let simulation: SkinSimulation;
     let rig = original;
     let autosave: RigAutosave | undefined;
-    if (o.autosave !== false) {
-      autosave = new RigAutosave(typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, base)}`, original);
-      rig = (await autosave.load()) ?? original;
-      signal?.throwIfAborted();
+    try {
+      // Before the first render: the skin's attributes become dynamic.
+      skinView = new SkinView(head.skin);
+      // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
+      if (this.rigKey) {
+        autosave = new RigAutosave(prepared && this.headStore ? this.headStore.rigKey : this.rigKey, original);
+        // A head just loaded starts from its carried-over rig; one kept from an earlier visit from its edited rig.
+        if (fresh) await autosave.clear();
+        else rig = (await autosave.load()) ?? original;
+        signal?.throwIfAborted();
+      }
+      simulation = await SkinSimulation.create({
+        mode: solverMode(o.solver),
+        workers: o.workers,
+        renderPositions: head.skin.geometry.getAttribute('position').array as Float32Array,
+        indices: head.skin.geometry.index!.array as Uint16Array | Uint32Array,
+        colliders: headColliders(head),
+        muscles: rig.muscles,
+      });
+    } catch (error) {
+      autosave?.dispose();
+      disposeHead(head);
+      throw error;
     }
-
+    own.push(() => simulation.dispose());
+    // From here on nothing waits: the current head goes and the new one takes its place in one step.
+    const carried = this.expression ? this.handle.carriedState() : undefined;
+    this.unmount();
+    this.view.setHead(head);
+    this.shownHead = head;
+    own.push(() => {
+      this.view.removeHead(head);
+      disposeHead(head);
+    });
     const geometry = head.skin.geometry;
     // The skin at rest, render order: the vertex brush stores what it paints at rest.
     const restRender = (geometry.getAttribute('position').array as Float32Array).slice();
-    const simulation = await SkinSimulation.create({
-      mode: solverMode(o.solver),
-      workers: o.workers,
-      renderPositions: geometry.getAttribute('position').array as Float32Array,
-      indices: geometry.index!.array as Uint16Array | Uint32Array,
-      colliders: headColliders(head),
-      muscles: rig.muscles,
-    });
-    this.undo.push(() => simulation.dispose());
-    signal?.throwIfAborted();
     skinView.connect(simulation);
-    this.view.onFrame(() => {
+    own.push(this.view.onFrame(() => {
       simulation.advance();
       return skinView.update();
-    });
-    // Whatever the handle changes (expression, jaw, glyphs, editor, light) is drawn.
-    this.undo.push(this.handle.onChange(this.view.invalidate));
+    }));
+    // Whatever the handle changes (expression, jaw, glyphs, editor, light, head) is drawn.
+    own.push(this.handle.onChange(this.view.invalidate));
 
     // The rig is in the model's frame, which the solver treats as the skin's own: the glyphs take the skin's transform.
     head.root.updateMatrixWorld(true);
     const muscles = new MuscleView(rig.muscles, head.skin.matrixWorld);
     this.view.scene.add(muscles.group);
-    this.undo.push(() => muscles.dispose());
+    own.push(() => muscles.dispose());
     // The jaw node's rest pose and the loaded rig's hinge, taken once: an edited jaw muscle turns it from there.
     const jawRest = head.jaw ? { quaternion: head.jaw.quaternion.clone(), position: head.jaw.position.clone(), hinge: jawHinge(rig) } : undefined;
     let jaw = jawTurner(head, rig, jawRest);
@@ -182,6 +345,7 @@ export class EmbeddedFace {
       jaw?.(contractions);
       muscles.setContractions(contractions);
     });
+    this.expression = expression;
     const document = new RigDocument(rig);
     const binding = new RigBinding(document, {
       simulation,
@@ -195,11 +359,12 @@ export class EmbeddedFace {
         jaw = jawTurner(head, edited, jawRest);
       },
     });
-    this.undo.push(() => binding.dispose());
+    own.push(() => binding.dispose());
     this.handle.attach(simulation, expression);
     this.handle.attachMuscles(muscles);
     // After the binding: listeners of the handle's 'rig' change see a face that already shows the edit.
-    this.handle.attachRig(document, original, rigName(o.rig));
+    const name = prepared ? prepared.files[0].name.replace(/\.(glb|gltf|obj)$/i, '') : rigName(o.rig);
+    this.handle.attachRig(document, original, name);
     if (autosave) {
       const saver = autosave;
       saver.watch(document);
@@ -208,30 +373,62 @@ export class EmbeddedFace {
       // A reload right after an edit would otherwise lose it.
       const leave = (): void => saver.flush();
       window.addEventListener('pagehide', leave);
-      this.undo.push(() => {
+      own.push(() => {
         window.removeEventListener('pagehide', leave);
         saver.dispose();
       });
     }
     const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits(), head.skin, restRender);
-    this.undo.push(() => editor.dispose());
+    own.push(() => editor.dispose());
     this.handle.attachEditor(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same
     // millisecond; the state machine takes a seed for its tests.
     const eyes = new EyeDriver(this.handle, this.view, head.eyes, { simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 } });
-    this.undo.push(() => eyes.dispose());
+    own.push(() => eyes.dispose());
     this.handle.attachEyes(eyes);
+    this.mounted = own;
+    const frame = prepared?.frame;
+    this.head = {
+      source: prepared ? 'loaded' : 'default',
+      level: prepared ? prepared.level : o.resolution,
+      name: prepared ? prepared.files[0].name : (this.modelUrl.split('/').pop() ?? ''),
+      vertices: simulation.stats().vertices,
+      triangles: geometry.index!.count / 3,
+      units: frame?.units ?? 'm',
+      up: frame?.up ?? '+y',
+      forward: frame?.forward ?? '+z',
+      landmarks: prepared ? structuredClone(prepared.landmarks) : structuredClone(DEFAULT_LANDMARKS) as Landmarks,
+      parts: prepared ? { ...prepared.sources } : { eyes: 'file', teeth: 'file', jaw: 'file' },
+      loadMs: started > 0 ? Math.round(performance.now() - started) : 0,
+    };
+    if (carried) this.handle.restoreState(carried);
+    this.handle.headChanged();
+  }
 
-    const start = readExpression(o.expression, 'createFace: expression');
-    if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0) expression.set(start, 'createFace: expression');
-    if (Object.keys(o.light).length > 0) this.handle.setLight(o.light);
-    if (o.eyeSimulation) this.handle.setEyeSimulation(true);
-    if (o.panels) this.setPanels(true);
+  /** Takes back the shown head's solver, glyphs, editor, eyes and autosave (the view and panels stay). */
+  private unmount(): void {
+    let failure: unknown;
+    while (this.mounted.length > 0) {
+      try {
+        this.mounted.pop()!();
+      } catch (error) {
+        failure ??= error;
+      }
+    }
+    if (failure !== undefined) throw failure;
   }
 
   private alive(): void {
     if (this.disposed) throw new Error('the face was disposed');
   }
+}
+
+/** How a head is shown: when its load started (for `loadMs`), what may abort it, and whether it was loaded just now. */
+interface MountOptions {
+  started?: number;
+  signal?: AbortSignal;
+  /** A head loaded now: its rig starts as carried over (an edited rig kept for an earlier loaded head is dropped). */
+  fresh?: boolean;
 }
 
 /** The autosave key's part for a rig: its URL's path (the same rig at any host), or `object` for a rig given as one. */

@@ -9,7 +9,10 @@ import type { GizmoMode, GizmoPart } from '../render/muscle-gizmo';
 import type { MaterialDescription } from '../render/materials';
 import type { LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
-import { readExpression, type ExpressionEntries } from './expression-hash';
+import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
+import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader';
+import type { LandmarkGuide, LandmarkGuideState } from './landmark-guide';
+import type { Vec3 } from '../core/rig-types';
 import type { FaceExpression } from './face-expression';
 
 /** The welded skin at one moment, in simulation vertex order. */
@@ -28,9 +31,10 @@ export type FaceStats = SkinSimulationStats;
 /**
  * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters,
  * whether the eye simulation runs, which muscles are shown, the rig (an edit, undo or redo, a new rig), or the
- * editor (on or off, the selected muscle, its gizmo's mode or part, the preview contraction).
+ * editor (on or off, the selected muscle, its gizmo's mode or part, the preview contraction), the head (another
+ * head loaded, or the default one back), or the landmark guide (started, a landmark placed, ended).
  */
-export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor';
+export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks';
 
 /**
  * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
@@ -118,6 +122,22 @@ export interface FaceEyes {
   stats(): EyeStats;
 }
 
+/** The head side the handle drives (EmbeddedFace): loading another head, going back to the default one. */
+export interface FaceHeads {
+  loadHead(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription>;
+  revertHead(): Promise<void>;
+  describeHead(): HeadDescription;
+  guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription>;
+  landmarkGuide(): LandmarkGuide | undefined;
+}
+
+/** What carries over from one head to the next: the expression, the eye simulation, the skin parameters. */
+export interface CarriedState {
+  expression: HashExpression;
+  eyes: boolean;
+  skin: SkinParameters;
+}
+
 /** Told after every successful change made through the handle (panels refresh their sliders with it). */
 export type FaceChangeListener = (change: FaceChange) => void;
 
@@ -152,6 +172,7 @@ export class FaceHandle {
   private rigFileName = 'rig';
   private autosaveStatus: (() => 'clean' | 'pending' | 'saved' | 'failed') | undefined;
   private editorView: FaceEditorView | undefined;
+  private heads: FaceHeads | undefined;
   private editorOn = false;
   private selected: string | null = null;
   private gizmoMode: GizmoMode = 'translate';
@@ -254,6 +275,114 @@ export class FaceHandle {
     view.setMode(this.gizmoMode);
     view.setEnabled(this.editorOn);
     view.select(this.selected);
+  }
+
+  /**
+   * Connects the head side: `loadHead`, `revertHead`, `describeHead`.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachHeads(heads: FaceHeads): void {
+    this.heads = heads;
+  }
+
+  /**
+   * The state a new head takes over from the current one.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  carriedState(): CarriedState {
+    return {
+      expression: { actionUnits: this.getActionUnits(), presets: Object.fromEntries(this.listPresets().map((p) => [p.name, p.weight])) },
+      eyes: this.eyes?.enabled() ?? false,
+      skin: this.getSkinParameters(),
+    };
+  }
+
+  /**
+   * Gives a new head the state the previous one had.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  restoreState(state: CarriedState): void {
+    try {
+      this.expressed().set(state.expression, 'loadHead');
+    } catch (error) {
+      // A preset the new head's rig does not have (an imported rig had it): the new head starts neutral.
+      console.warn(`the expression was not carried over to the new head: ${(error as Error).message}`);
+    }
+    this.running().setParameters(state.skin);
+    this.eyes?.setEnabled(state.eyes);
+  }
+
+  /**
+   * Tells listeners that another head is shown.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  headChanged(): void {
+    if (!this.disposed) this.emit('head');
+  }
+
+  /**
+   * Loads a head (a `.glb`, a `.gltf` with its files, or an `.obj`: a URL, a File or a list of Files), carries the
+   * rig over to it by its landmarks and shows it in place of the current one, keeping the expression. Resolves to
+   * what was loaded; a file that is not a head (not a mesh, truncated, non-finite, no face found, over 200,000
+   * triangles or 64 MB) rejects with a message naming the file and what is wrong, and the current head stays.
+   */
+  async loadHead(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
+    this.alive();
+    await this.ready;
+    return this.headSide().loadHead(source, options);
+  }
+
+  /** Shows the default head again, with the face's own rig (a kept loaded head is forgotten). */
+  async revertHead(): Promise<void> {
+    this.alive();
+    await this.ready;
+    return this.headSide().revertHead();
+  }
+
+  /**
+   * Loads a head as `loadHead` does; where its landmarks cannot all be found, shows its skin alone and has the
+   * missing ones placed by clicking on it (the Head folder says which: "click the left mouth corner"), then loads it
+   * with them. Resolves once the head is shown; rejects if the guide is cancelled or the file is refused otherwise.
+   */
+  async guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
+    this.alive();
+    await this.ready;
+    return this.headSide().guideLandmarks(source, options);
+  }
+
+  /** The landmark guide under way (what to click next, what is placed), or null. */
+  describeLandmarkGuide(): LandmarkGuideState | null {
+    return this.headSide().landmarkGuide()?.state() ?? null;
+  }
+
+  /** Places the guide's next landmark at a point of the shown skin (metres), as a click on it does. */
+  placeLandmark(point: Vec3): void {
+    const guide = this.headSide().landmarkGuide();
+    if (!guide) throw new Error('placeLandmark: no landmark guide is under way');
+    guide.place(point);
+  }
+
+  /** Where a point of the skin the guide shows is on the page (client pixels), to click it (read-only, for tests). */
+  locateLandmarkPoint(point: Vec3): { x: number; y: number } | null {
+    return this.headSide().landmarkGuide()?.locate(point) ?? null;
+  }
+
+  /** Stops the landmark guide; its `guideLandmarks` rejects and the face keeps its head. */
+  cancelLandmarkGuide(): void {
+    this.headSide().landmarkGuide()?.cancel();
+  }
+
+  /**
+   * Tells listeners that the landmark guide changed.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  guideChanged(): void {
+    if (!this.disposed) this.emit('landmarks');
+  }
+
+  /** The head shown: default or loaded, its file, size, units, axes and landmarks (read-only). */
+  describeHead(): HeadDescription {
+    return this.headSide().describeHead();
   }
 
   /** Calls `listener` after every change made through the handle; returns the function that stops it. */
@@ -788,6 +917,12 @@ export class FaceHandle {
     this.alive();
     if (!this.view) throw new Error('the face has no view yet');
     return this.view;
+  }
+
+  private headSide(): FaceHeads {
+    this.alive();
+    if (!this.heads) throw new Error('the face is not ready yet: await face.ready first');
+    return this.heads;
   }
 
   private running(): SkinSimulation {

@@ -52,6 +52,16 @@ export class RigAutosave {
     }
   }
 
+  /** Forgets the stored rig (a new head was loaded: a rig edited for the one before is not for it). */
+  async clear(): Promise<void> {
+    try {
+      await del(this.key);
+    } catch (error) {
+      console.warn(`the autosaved rig could not be removed: ${(error as Error).message}`);
+    }
+    this.setStatus('clean');
+  }
+
   /** Writes the document's rig after each of its changes. */
   watch(document: RigDocument): void {
     this.document = document;

@@ -1,4 +1,4 @@
-import { Box3, BufferAttribute, Mesh, Object3D, Vector3, type Material } from 'three';
+import { Box3, BufferAttribute, Mesh, Object3D, Texture, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { HEAD_NODES } from '../core/head-nodes';
 import { createHeadMaterials } from './materials';
@@ -77,6 +77,20 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
     info,
     bounds: skin.geometry.boundingBox!.clone(),
   };
+}
+
+/** Frees the geometries, materials and textures of a head's objects, each once. */
+export function disposeHead(head: HeadModel): void {
+  const materials = new Set<Material>();
+  head.root.traverse((o) => {
+    if (!(o instanceof Mesh)) return;
+    o.geometry.dispose();
+    for (const m of Array.isArray(o.material) ? o.material : [o.material]) materials.add(m);
+  });
+  for (const material of materials) {
+    for (const value of Object.values(material)) if (value instanceof Texture) value.dispose();
+    material.dispose();
+  }
 }
 
 /** Centre of a box, as a new vector (for framing). */

@@ -1,5 +1,6 @@
 import {
   ACESFilmicToneMapping,
+  Box3,
   Color,
   DirectionalLight,
   HemisphereLight,
@@ -164,6 +165,14 @@ export class HeadView {
     this.invalidate();
   }
 
+  /** Takes `head` off the scene if it is the one shown (its resources are the caller's to free). */
+  removeHead(head: HeadModel): void {
+    if (this.head !== head) return;
+    this.scene.remove(head.root);
+    this.head = undefined;
+    this.invalidate();
+  }
+
   /** Shows a background colour, or the page behind the canvas. */
   setBackground(background: ViewBackground): void {
     if (background === 'transparent') {
@@ -318,8 +327,13 @@ export class HeadView {
   }
 
   private frame_(head: HeadModel): void {
-    const centre = boxCentre(head.bounds);
-    const size = head.bounds.getSize(new Vector3());
+    this.frameBounds(head.bounds);
+  }
+
+  /** Points the camera at the middle of `bounds` from the front (+z), far enough to see it whole. */
+  frameBounds(bounds: Box3): void {
+    const centre = boxCentre(bounds);
+    const size = bounds.getSize(new Vector3());
     const fit = (0.5 * Math.max(size.y, size.x / this.camera.aspect)) / Math.tan((this.camera.fov * Math.PI) / 360);
     const distance = 1.15 * fit + size.z / 2;
     this.controls.target.copy(centre);
@@ -327,6 +341,7 @@ export class HeadView {
     this.centre.copy(centre);
     this.applyLight();
     this.controls.update();
+    this.invalidate();
   }
 
   private applyLight(): void {

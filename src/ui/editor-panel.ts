@@ -3,6 +3,7 @@ import type { Controller } from 'lil-gui';
 import { typingInto } from '../embed/face-editor';
 import type { EditorState, FaceChange, FaceHandle, GizmoMode } from '../embed/face-handle';
 import { downloadBlob } from './download';
+import { isHeadDrop } from './head-panel';
 import { MusclePanel } from './muscle-panel';
 
 /** The keys, as the panel's hint shows them. */
@@ -167,7 +168,8 @@ export class EditorPanel {
 
   private readonly onDrop = (event: DragEvent): void => {
     const file = event.dataTransfer?.files[0];
-    if (!file) return;
+    // A head (.glb, .gltf, .obj) is the Head folder's to load.
+    if (!file || isHeadDrop(event.dataTransfer.files)) return;
     event.preventDefault();
     void this.importFile(file);
   };

@@ -2,6 +2,7 @@ import GUI from 'lil-gui';
 import type { FaceHandle } from '../embed/face-handle';
 import { ActionUnitsPanel } from './action-units-panel';
 import { EditorPanel } from './editor-panel';
+import { HeadPanel } from './head-panel';
 import { LightPanel } from './light-panel';
 import { OutputsPanel, type FrameSource } from './outputs-panel';
 import { PresetsPanel } from './presets-panel';
@@ -38,6 +39,7 @@ export class Panels {
   readonly outputs: OutputsPanel;
   readonly actionUnits: ActionUnitsPanel;
   readonly editor: EditorPanel;
+  readonly head: HeadPanel;
 
   constructor(face: FaceHandle, options: PanelsOptions) {
     const o = { ...PANELS_DEFAULTS, ...options };
@@ -54,18 +56,21 @@ export class Panels {
     this.rendering = new RenderingPanel(this.gui, face, { resolution: o.resolution, onResolution: o.onResolution });
     this.light = new LightPanel(this.gui, face);
     this.editor = new EditorPanel(this.gui, face, o.container);
+    this.head = new HeadPanel(this.gui, face, o.container);
     this.outputs = new OutputsPanel(this.gui, face, o.frames);
     this.actionUnits = new ActionUnitsPanel(this.gui, face);
     this.presets.folder.close();
     this.rendering.folder.close();
     this.light.folder.close();
     this.editor.folder.close();
+    this.head.folder.close();
   }
 
   /** Removes every panel, with its listeners, timers and frame hooks. */
   dispose(): void {
     this.actionUnits.dispose();
     this.outputs.dispose();
+    this.head.dispose();
     this.editor.dispose();
     this.light.dispose();
     this.rendering.dispose();
