@@ -1,8 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { archSlabs, colliderDistance, slabSide, type Collider } from '../src/core/colliders';
-import { mulberry32 } from '../src/core/random';
 import { SkinSolver } from '../src/core/solver';
-import { COLLIDER_SHAPE, shapeDistance, writeColliderShape } from '../src/core/solver-kernels';
 import { buildTopology } from '../src/core/topology';
 import { loadHeadSkin } from './fixtures/head';
 import { triangleGrid } from './fixtures/grids';
@@ -95,31 +93,5 @@ describe('collisions', () => {
     const colliders: Collider[] = ['eye-l', 'eye-r'].map((n) => ({ name: n, a: head.pivots[n], radius: head.eyeRadius }));
     const s = new SkinSolver(t, { colliders });
     expect(s.counts().collision).toBeGreaterThan(40);
-  });
-});
-
-describe("the collision loop's collider shapes", () => {
-  it('give the distance and direction colliderDistance gives, for spheres, capsules and one-sided slabs', () => {
-    const random = mulberry32(7);
-    const r = (scale: number) => (random() - 0.5) * scale;
-    const colliders: Collider[] = [
-      { name: 'sphere', a: [r(0.02), r(0.02), r(0.02)], radius: 0.012 },
-      { name: 'capsule', a: [r(0.02), r(0.02), r(0.02)], b: [r(0.02), r(0.02), r(0.02)], radius: 0.003 },
-      // A vertical wall with `up` perpendicular to b - a, as archSlabs makes them.
-      { name: 'slab', a: [-0.01, -0.005, 0.002], b: [0.01, -0.005, 0.004], up: [0, 0.01, 0], radius: 0.001 },
-    ];
-    const shapes = new Float64Array(COLLIDER_SHAPE * colliders.length);
-    colliders.forEach((c, k) => writeColliderShape(c, shapes, k));
-    const expected = [0, 0, 0];
-    const got = new Float32Array(3);
-    for (let n = 0; n < 3000; n++) {
-      const k = n % colliders.length;
-      const c = colliders[k];
-      const [x, y, z] = [r(0.05), r(0.05), r(0.05)];
-      const side = c.up ? (random() < 0.5 ? 1 : -1) : 0;
-      const d = colliderDistance(c, x, y, z, expected, side);
-      expect(shapeDistance(shapes, COLLIDER_SHAPE * k, x, y, z, got, side)).toBeCloseTo(d, 9);
-      for (let i = 0; i < 3; i++) expect(got[i]).toBeCloseTo(expected[i], 5);
-    }
   });
 });

@@ -21,41 +21,113 @@ export interface Collider {
  * `side` (+1 or -1, see `slabSide`) makes a slab one-sided where the point lies over its face: the distance is
  * measured along the slab's normal toward that side, so a point that went through the wall (or around its edge and
  * down behind it) is pushed back to the side it started on instead of being held on the wrong one. 0 (the default)
- * measures to the nearest surface point, as for spheres and capsules.
+ * measures to the nearest surface point, as for spheres and capsules. The same code as the collision loop's (see
+ * shapeDistance), through a scratch shape.
  */
 export function colliderDistance(c: Collider, x: number, y: number, z: number, out: Float32Array | number[], side = 0): number {
-  if (side !== 0 && c.b && c.up) {
-    const d = slabFaceDistance(c, x, y, z, side, out);
-    if (d !== null) return d;
+  writeColliderShape(c, scratchShape, 0);
+  const d = shapeDistance(scratchShape, 0, x, y, z, scratchDirection, side);
+  out[0] = scratchDirection[0];
+  out[1] = scratchDirection[1];
+  out[2] = scratchDirection[2];
+  return d;
+}
+
+/** The side (+1 or -1) of a slab's plane a point lies on; 0 for colliders that are not slabs. */
+export function slabSide(c: Collider, x: number, y: number, z: number): number {
+  if (!c.b || !c.up) return 0;
+  writeColliderShape(c, scratchShape, 0);
+  const S = scratchShape;
+  return (x - S[0]) * S[13] + (y - S[1]) * S[14] + (z - S[2]) * S[15] >= 0 ? 1 : -1;
+}
+
+/**
+ * Values per collider in `colliderShapes`: a, b and up (xyz each, zero when absent), the radius; then what the
+ * collision loop derives from them, so that it reads one array instead of the collider objects: the kind
+ * (SHAPE_SPHERE, SHAPE_CAPSULE, SHAPE_SLAB), 1 / |b - a|^2 and 1 / |up|^2 (0 for a zero length), and a slab's unit
+ * normal, (b - a) x up normalized (zero when degenerate).
+ */
+export const COLLIDER_SHAPE = 16;
+const SHAPE_KIND = 10;
+const SHAPE_SPHERE = 0;
+const SHAPE_CAPSULE = 1;
+const SHAPE_SLAB = 2;
+
+/** Writes a collider's shape into `shapes`; returns whether it changed. */
+export function writeColliderShape(c: Collider, shapes: Float64Array, index: number): boolean {
+  const o = COLLIDER_SHAPE * index;
+  let changed = false;
+  for (let k = 0; k < 10; k++) {
+    const value = k < 3 ? c.a[k] : k < 6 ? (c.b ? c.b[k - 3] : 0) : k < 9 ? (c.up ? c.up[k - 6] : 0) : c.radius;
+    if (shapes[o + k] !== value) {
+      shapes[o + k] = value;
+      changed = true;
+    }
   }
-  let px = c.a[0];
-  let py = c.a[1];
-  let pz = c.a[2];
-  if (c.b) {
-    const sx = c.b[0] - c.a[0];
-    const sy = c.b[1] - c.a[1];
-    const sz = c.b[2] - c.a[2];
-    const len2 = sx * sx + sy * sy + sz * sz;
-    let t = len2 > 0 ? ((x - c.a[0]) * sx + (y - c.a[1]) * sy + (z - c.a[2]) * sz) / len2 : 0;
+  const sx = shapes[o + 3] - shapes[o];
+  const sy = shapes[o + 4] - shapes[o + 1];
+  const sz = shapes[o + 5] - shapes[o + 2];
+  const ux = shapes[o + 6];
+  const uy = shapes[o + 7];
+  const uz = shapes[o + 8];
+  const s2 = sx * sx + sy * sy + sz * sz;
+  const u2 = ux * ux + uy * uy + uz * uz;
+  shapes[o + SHAPE_KIND] = !c.b ? SHAPE_SPHERE : !c.up ? SHAPE_CAPSULE : SHAPE_SLAB;
+  shapes[o + 11] = s2 > 0 ? 1 / s2 : 0;
+  shapes[o + 12] = u2 > 0 ? 1 / u2 : 0;
+  const nx = sy * uz - sz * uy;
+  const ny = sz * ux - sx * uz;
+  const nz = sx * uy - sy * ux;
+  const length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+  const k = length > 0 ? 1 / length : 0;
+  shapes[o + 13] = nx * k;
+  shapes[o + 14] = ny * k;
+  shapes[o + 15] = nz * k;
+  return changed;
+}
+
+/**
+ * Signed distance from a point to the collider shape at `o` in `shapes` and the outward direction (into `out`): the
+ * collision loop's form of colliderDistance (see colliders.ts), with the same one-sided slabs for `side` +1 or -1.
+ */
+export function shapeDistance(S: Float64Array, o: number, x: number, y: number, z: number, out: Float32Array, side: number): number {
+  const kind = S[o + SHAPE_KIND];
+  const rx = x - S[o];
+  const ry = y - S[o + 1];
+  const rz = z - S[o + 2];
+  let px = 0;
+  let py = 0;
+  let pz = 0;
+  if (kind !== SHAPE_SPHERE) {
+    const sx = S[o + 3] - S[o];
+    const sy = S[o + 4] - S[o + 1];
+    const sz = S[o + 5] - S[o + 2];
+    let t = (rx * sx + ry * sy + rz * sz) * S[o + 11];
+    if (kind === SHAPE_SLAB) {
+      let u = (rx * S[o + 6] + ry * S[o + 7] + rz * S[o + 8]) * S[o + 12];
+      const nx = S[o + 13];
+      const ny = S[o + 14];
+      const nz = S[o + 15];
+      // Over the slab's face, a one-sided slab measures along its normal toward the point's rest side.
+      if (side !== 0 && t >= 0 && t <= 1 && u >= 0 && u <= 1 && (nx !== 0 || ny !== 0 || nz !== 0)) {
+        out[0] = side * nx;
+        out[1] = side * ny;
+        out[2] = side * nz;
+        return side * (rx * nx + ry * ny + rz * nz) - S[o + 9];
+      }
+      u = u < 0 ? 0 : u > 1 ? 1 : u;
+      px = u * S[o + 6];
+      py = u * S[o + 7];
+      pz = u * S[o + 8];
+    }
     t = t < 0 ? 0 : t > 1 ? 1 : t;
     px += t * sx;
     py += t * sy;
     pz += t * sz;
-    if (c.up) {
-      const ux = c.up[0];
-      const uy = c.up[1];
-      const uz = c.up[2];
-      const up2 = ux * ux + uy * uy + uz * uz;
-      let u = up2 > 0 ? ((x - c.a[0]) * ux + (y - c.a[1]) * uy + (z - c.a[2]) * uz) / up2 : 0;
-      u = u < 0 ? 0 : u > 1 ? 1 : u;
-      px += u * ux;
-      py += u * uy;
-      pz += u * uz;
-    }
   }
-  const dx = x - px;
-  const dy = y - py;
-  const dz = z - pz;
+  const dx = rx - px;
+  const dy = ry - py;
+  const dz = rz - pz;
   const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
   if (d > 0) {
     out[0] = dx / d;
@@ -66,50 +138,11 @@ export function colliderDistance(c: Collider, x: number, y: number, z: number, o
     out[1] = 0;
     out[2] = 1;
   }
-  return d - c.radius;
+  return d - S[o + 9];
 }
 
-/** The side (+1 or -1) of a slab's plane a point lies on; 0 for colliders that are not slabs. */
-export function slabSide(c: Collider, x: number, y: number, z: number): number {
-  if (!c.b || !c.up) return 0;
-  const [nx, ny, nz] = slabNormal(c);
-  return (x - c.a[0]) * nx + (y - c.a[1]) * ny + (z - c.a[2]) * nz >= 0 ? 1 : -1;
-}
-
-/** Unit normal of a slab's rectangle, (b - a) x up. */
-function slabNormal(c: Collider): [number, number, number] {
-  const b = c.b!;
-  const up = c.up!;
-  const sx = b[0] - c.a[0], sy = b[1] - c.a[1], sz = b[2] - c.a[2];
-  const nx = sy * up[2] - sz * up[1], ny = sz * up[0] - sx * up[2], nz = sx * up[1] - sy * up[0];
-  const length = Math.sqrt(nx * nx + ny * ny + nz * nz) || 1;
-  return [nx / length, ny / length, nz / length];
-}
-
-/** Distance along the slab's normal toward `side` when the point lies over the slab's face, else null. */
-function slabFaceDistance(c: Collider, x: number, y: number, z: number, side: number, out: Float32Array | number[]): number | null {
-  const b = c.b!;
-  const up = c.up!;
-  const rx = x - c.a[0], ry = y - c.a[1], rz = z - c.a[2];
-  const sx = b[0] - c.a[0], sy = b[1] - c.a[1], sz = b[2] - c.a[2];
-  const t = (rx * sx + ry * sy + rz * sz) / (sx * sx + sy * sy + sz * sz || 1);
-  const u = (rx * up[0] + ry * up[1] + rz * up[2]) / (up[0] * up[0] + up[1] * up[1] + up[2] * up[2] || 1);
-  if (t < 0 || t > 1 || u < 0 || u > 1) return null;
-  // The face's normal, without allocating: (b - a) x up.
-  let nx = sy * up[2] - sz * up[1];
-  let ny = sz * up[0] - sx * up[2];
-  let nz = sx * up[1] - sy * up[0];
-  const length = Math.sqrt(nx * nx + ny * ny + nz * nz);
-  if (length === 0) return null;
-  const k = side / length;
-  nx *= k;
-  ny *= k;
-  nz *= k;
-  out[0] = nx;
-  out[1] = ny;
-  out[2] = nz;
-  return rx * nx + ry * ny + rz * nz - c.radius;
-}
+const scratchShape = new Float64Array(COLLIDER_SHAPE);
+const scratchDirection = new Float32Array(3);
 
 /**
  * A chain of slabs along a row of teeth: the teeth vertices are binned by their angle about a point behind the

@@ -2,7 +2,7 @@
  * The solver's heaviest loops as functions of one part of the constraint lists (see constraint-lists.ts): the leader
  * thread's SkinSolver and the partner thread's SolverPartner run the same code on the same shared arrays.
  */
-import type { Collider } from './colliders';
+import { COLLIDER_SHAPE, shapeDistance, type Collider } from './colliders';
 import type { EdgeLists, TriangleLists } from './constraint-lists';
 import { meet } from './partner-board';
 
@@ -43,106 +43,6 @@ export interface PartArrays {
   /** The candidates a frame checks, collider by collider: `activeCandidates[activeCandidateStart[c]..[c + 1]]`. */
   activeCandidates: Uint32Array;
   activeCandidateStart: Uint32Array;
-}
-
-/**
- * Values per collider in `colliderShapes`: a, b and up (xyz each, zero when absent), the radius; then what the
- * collision loop derives from them, so that it reads one array instead of the collider objects: the kind
- * (SHAPE_SPHERE, SHAPE_CAPSULE, SHAPE_SLAB), 1 / |b - a|^2 and 1 / |up|^2 (0 for a zero length), and a slab's unit
- * normal, (b - a) x up normalized (zero when degenerate).
- */
-export const COLLIDER_SHAPE = 16;
-const SHAPE_KIND = 10;
-const SHAPE_SPHERE = 0;
-const SHAPE_CAPSULE = 1;
-const SHAPE_SLAB = 2;
-
-/** Writes a collider's shape into `shapes`; returns whether it changed. */
-export function writeColliderShape(c: Collider, shapes: Float64Array, index: number): boolean {
-  const o = COLLIDER_SHAPE * index;
-  let changed = false;
-  for (let k = 0; k < 10; k++) {
-    const value = k < 3 ? c.a[k] : k < 6 ? (c.b ? c.b[k - 3] : 0) : k < 9 ? (c.up ? c.up[k - 6] : 0) : c.radius;
-    if (shapes[o + k] !== value) {
-      shapes[o + k] = value;
-      changed = true;
-    }
-  }
-  const sx = shapes[o + 3] - shapes[o];
-  const sy = shapes[o + 4] - shapes[o + 1];
-  const sz = shapes[o + 5] - shapes[o + 2];
-  const ux = shapes[o + 6];
-  const uy = shapes[o + 7];
-  const uz = shapes[o + 8];
-  const s2 = sx * sx + sy * sy + sz * sz;
-  const u2 = ux * ux + uy * uy + uz * uz;
-  shapes[o + SHAPE_KIND] = !c.b ? SHAPE_SPHERE : !c.up ? SHAPE_CAPSULE : SHAPE_SLAB;
-  shapes[o + 11] = s2 > 0 ? 1 / s2 : 0;
-  shapes[o + 12] = u2 > 0 ? 1 / u2 : 0;
-  const nx = sy * uz - sz * uy;
-  const ny = sz * ux - sx * uz;
-  const nz = sx * uy - sy * ux;
-  const length = Math.sqrt(nx * nx + ny * ny + nz * nz);
-  const k = length > 0 ? 1 / length : 0;
-  shapes[o + 13] = nx * k;
-  shapes[o + 14] = ny * k;
-  shapes[o + 15] = nz * k;
-  return changed;
-}
-
-/**
- * Signed distance from a point to the collider shape at `o` in `shapes` and the outward direction (into `out`): the
- * collision loop's form of colliderDistance (see colliders.ts), with the same one-sided slabs for `side` +1 or -1.
- */
-export function shapeDistance(S: Float64Array, o: number, x: number, y: number, z: number, out: Float32Array, side: number): number {
-  const kind = S[o + SHAPE_KIND];
-  const rx = x - S[o];
-  const ry = y - S[o + 1];
-  const rz = z - S[o + 2];
-  let px = 0;
-  let py = 0;
-  let pz = 0;
-  if (kind !== SHAPE_SPHERE) {
-    const sx = S[o + 3] - S[o];
-    const sy = S[o + 4] - S[o + 1];
-    const sz = S[o + 5] - S[o + 2];
-    let t = (rx * sx + ry * sy + rz * sz) * S[o + 11];
-    if (kind === SHAPE_SLAB) {
-      let u = (rx * S[o + 6] + ry * S[o + 7] + rz * S[o + 8]) * S[o + 12];
-      const nx = S[o + 13];
-      const ny = S[o + 14];
-      const nz = S[o + 15];
-      // Over the slab's face, a one-sided slab measures along its normal toward the point's rest side.
-      if (side !== 0 && t >= 0 && t <= 1 && u >= 0 && u <= 1 && (nx !== 0 || ny !== 0 || nz !== 0)) {
-        out[0] = side * nx;
-        out[1] = side * ny;
-        out[2] = side * nz;
-        return side * (rx * nx + ry * ny + rz * nz) - S[o + 9];
-      }
-      u = u < 0 ? 0 : u > 1 ? 1 : u;
-      px = u * S[o + 6];
-      py = u * S[o + 7];
-      pz = u * S[o + 8];
-    }
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    px += t * sx;
-    py += t * sy;
-    pz += t * sz;
-  }
-  const dx = rx - px;
-  const dy = ry - py;
-  const dz = rz - pz;
-  const d = Math.sqrt(dx * dx + dy * dy + dz * dz);
-  if (d > 0) {
-    out[0] = dx / d;
-    out[1] = dy / d;
-    out[2] = dz / d;
-  } else {
-    out[0] = 0;
-    out[1] = 0;
-    out[2] = 1;
-  }
-  return d - S[o + 9];
 }
 
 /**

@@ -6,7 +6,7 @@
  * a partner thread that can take half of most passes with the same result (see solver-partner.ts).
  */
 import { ACTIVE_GROW, ActiveRegion } from './active-region';
-import { colliderDistance, slabSide, type Collider } from './colliders';
+import { COLLIDER_SHAPE, colliderDistance, slabSide, writeColliderShape, type Collider } from './colliders';
 import {
   createEdgeLists,
   createTriangleLists,
@@ -25,12 +25,10 @@ import { allocate, type Memory } from './memory';
 import { JOB_COLLISIONS, JOB_LENGTHS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import {
-  COLLIDER_SHAPE,
   projectCollisions,
   projectLengths,
   projectOrientationPart,
   projectPositions,
-  writeColliderShape,
   type PartArrays,
 } from './solver-kernels';
 import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
