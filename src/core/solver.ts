@@ -181,6 +181,9 @@ export class SkinSolver {
   /** Bending projections of each vertex per outer iteration, and the most any vertex takes (see setParameters). */
   private readonly bendPasses: Uint8Array;
   private maxBendPasses = 1;
+  /** The region's vertices with more than one bending pass, ascending (the later passes walk only these). */
+  private readonly multiPass: Uint32Array;
+  private multiPassCount = 0;
   /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
   private readonly triangleFrames: Float32Array;
   /** The lists the per-frame loops walk (see constraint-lists.ts), part by part. */
@@ -250,6 +253,7 @@ export class SkinSolver {
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
     this.bendPasses = new Uint8Array(n);
+    this.multiPass = new Uint32Array(n);
     // A fixed, deterministic per-vertex value in [-0.25, 0.75): breaks the symmetry of a flat compressed patch so it
     // buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than sink. A larger
     // mean lifts the whole patch in one bulge instead of folding it.
@@ -338,6 +342,7 @@ export class SkinSolver {
     }
     this.maxBendPasses = 1;
     for (let v = 0; v < n; v++) if (this.bendPasses[v] > this.maxBendPasses) this.maxBendPasses = this.bendPasses[v];
+    this.listMultiPass();
     // New parameters start a new motion, as new muscle inputs do.
     this.restartMotion();
   }
@@ -528,6 +533,7 @@ export class SkinSolver {
     const included = this.region.enabled ? this.region.inside : null;
     const r = this.region;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
+    this.listMultiPass();
     fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, this.parts.listedTriangle, this.blocks);
     if (r.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, r.shaded, this.shadedPlaces, null);
     this.listedRevision = this.region.revision;
@@ -548,6 +554,15 @@ export class SkinSolver {
       }
     }
     this.listCandidates();
+  }
+
+  /** Lists the region's vertices with more than one bending pass (see projectBending). */
+  private listMultiPass(): void {
+    const V = this.region.vertices;
+    const passes = this.bendPasses;
+    let count = 0;
+    for (let k = 0; k < this.region.count; k++) if (passes[V[k]] > 1) this.multiPass[count++] = V[k];
+    this.multiPassCount = count;
   }
 
   /** Lists the collision candidates a frame checks: those in or next to the region (all of them without it). */
@@ -778,8 +793,11 @@ export class SkinSolver {
     const V = this.region.vertices;
     const count = this.region.count;
     for (let pass = 0; pass < this.maxBendPasses; pass++) {
-      for (let r = 0; r < count; r++) {
-        const v = V[r];
+      // The first pass walks the region, the later ones only its vertices with more passes (the same order).
+      const list = pass === 0 ? V : this.multiPass;
+      const listed = pass === 0 ? count : this.multiPassCount;
+      for (let r = 0; r < listed; r++) {
+        const v = list[r];
         const s = stiffness[v];
         const j0 = start[v];
         const j1 = start[v + 1];
