@@ -3,7 +3,7 @@
  * count for it, reached by Catmull-Clark subdivision (a coarse head) or by decimation (a dense one, done by the
  * caller with a simplifier), never above the triangle limit. Pure: no three.js, no DOM.
  */
-import { MAX_HEAD_TRIANGLES, type TriangleMesh } from './head-mesh';
+import { MAX_HEAD_TRIANGLES, weldExact, type TriangleMesh } from './head-mesh';
 import { faceCount, polyMeshFromFaces, type PolyMesh } from './polymesh';
 import { catmullClark } from './subdivide';
 
@@ -40,19 +40,7 @@ export function levelPlan(triangles: number, level: HeadLevel): LevelPlan {
 export function subdivideHead(mesh: TriangleMesh, levels: number): TriangleMesh {
   if (levels <= 0) return mesh;
   const { positions, indices, uvs } = mesh;
-  const weld = new Map<string, number>();
-  const welded: number[] = [];
-  const vertexOf = new Uint32Array(positions.length / 3);
-  for (let v = 0; v < vertexOf.length; v++) {
-    const key = `${positions[3 * v]},${positions[3 * v + 1]},${positions[3 * v + 2]}`;
-    let w = weld.get(key);
-    if (w === undefined) {
-      w = welded.length / 3;
-      weld.set(key, w);
-      welded.push(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
-    }
-    vertexOf[v] = w;
-  }
+  const { vertexOf, positions: welded } = weldExact(positions);
   const edgeUse = new Map<string, number>();
   const faces: { v: number[]; uv: number[] }[] = [];
   for (let t = 0; t + 2 < indices.length; t += 3) {
@@ -83,21 +71,7 @@ export async function decimateHead(mesh: TriangleMesh, target: number): Promise<
   const { MeshoptSimplifier } = await import('meshoptimizer');
   await MeshoptSimplifier.ready;
   const { positions, indices, uvs } = mesh;
-  const weld = new Map<string, number>();
-  const welded: number[] = [];
-  const firstCopy: number[] = [];
-  const vertexOf = new Uint32Array(positions.length / 3);
-  for (let v = 0; v < vertexOf.length; v++) {
-    const key = `${positions[3 * v]},${positions[3 * v + 1]},${positions[3 * v + 2]}`;
-    let w = weld.get(key);
-    if (w === undefined) {
-      w = welded.length / 3;
-      weld.set(key, w);
-      welded.push(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
-      firstCopy.push(v);
-    }
-    vertexOf[v] = w;
-  }
+  const { vertexOf, positions: welded, firstCopy } = weldExact(positions);
   const triangles = Uint32Array.from(indices, (i) => vertexOf[i]);
   const [simplified] = MeshoptSimplifier.simplify(triangles, Float32Array.from(welded), 3, 3 * target, 0.05, ['LockBorder']);
   const renumber = new Map<number, number>();

@@ -146,7 +146,7 @@ const HEAD_SIZE = 0.25;
  * Throws, naming the size, if no unit makes the mesh head-sized.
  */
 export function findHeadFrame(positions: Float32Array, indices: Uint32Array, options: HeadFrameOptions = {}, source = 'the head'): HeadFrame {
-  const { min, max } = bounds(positions);
+  const { min, max } = positionBounds(positions);
   const extent = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
   let units: Unit;
   if (options.units && options.units !== 'auto') units = options.units;
@@ -205,7 +205,8 @@ function axisOf(index: number, sign: number): Axis {
   return `${sign < 0 ? '-' : '+'}${'xyz'[index]}` as Axis;
 }
 
-function bounds(P: Float32Array): { min: number[]; max: number[] } {
+/** The least and greatest coordinate of a position array, per axis. */
+export function positionBounds(P: Float32Array): { min: number[]; max: number[] } {
   const min = [Infinity, Infinity, Infinity];
   const max = [-Infinity, -Infinity, -Infinity];
   for (let i = 0; i < P.length; i++) {
@@ -215,17 +216,34 @@ function bounds(P: Float32Array): { min: number[]; max: number[] } {
   return { min, max };
 }
 
+/**
+ * Equal positions as one vertex: each vertex's welded index (`vertexOf`), the welded positions (xyz each) and the
+ * first vertex of each welded one.
+ */
+export function weldExact(positions: ArrayLike<number>): { vertexOf: Uint32Array; positions: number[]; firstCopy: number[] } {
+  const index = new Map<string, number>();
+  const welded: number[] = [];
+  const firstCopy: number[] = [];
+  const vertexOf = new Uint32Array(positions.length / 3);
+  for (let v = 0; v < vertexOf.length; v++) {
+    const key = `${positions[3 * v]},${positions[3 * v + 1]},${positions[3 * v + 2]}`;
+    let w = index.get(key);
+    if (w === undefined) {
+      w = welded.length / 3;
+      index.set(key, w);
+      welded.push(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+      firstCopy.push(v);
+    }
+    vertexOf[v] = w;
+  }
+  return { vertexOf, positions: welded, firstCopy };
+}
+
 /** Up: away from the longest open boundary (the neck), if there is one long enough to be it; otherwise +y. */
 function findUp(P: Float32Array, T: Uint32Array): Axis {
-  // Edges used by one triangle only, over positions welded exactly.
-  const id = new Map<string, number>();
-  const weld = new Uint32Array(P.length / 3);
-  for (let v = 0; v < weld.length; v++) {
-    const key = `${P[3 * v]},${P[3 * v + 1]},${P[3 * v + 2]}`;
-    let w = id.get(key);
-    if (w === undefined) id.set(key, (w = v));
-    weld[v] = w;
-  }
+  // Edges used by one triangle only, over positions welded exactly; each end named by its first copy, a vertex of P.
+  const { vertexOf, firstCopy } = weldExact(P);
+  const weld = vertexOf.map((w) => firstCopy[w]);
   const uses = new Map<string, number>();
   for (let t = 0; t + 2 < T.length; t += 3) {
     for (let k = 0; k < 3; k++) {
@@ -235,7 +253,7 @@ function findUp(P: Float32Array, T: Uint32Array): Axis {
       uses.set(key, (uses.get(key) ?? 0) + 1);
     }
   }
-  const { min, max } = bounds(P);
+  const { min, max } = positionBounds(P);
   const centre = [0, 1, 2].map((k) => (min[k] + max[k]) / 2);
   let length = 0;
   const middle = [0, 0, 0];
@@ -259,7 +277,7 @@ function findUp(P: Float32Array, T: Uint32Array): Axis {
  * Only the part above the lowest third is looked at, so that a neck or shoulders do not count.
  */
 function findForward(P: Float32Array, T: Uint32Array, upAxis: number, upSign: number, scale: number): Axis {
-  const { min, max } = bounds(P);
+  const { min, max } = positionBounds(P);
   const lowest = upSign > 0 ? min[upAxis] : -max[upAxis];
   const height = max[upAxis] - min[upAxis];
   const kept: number[] = [];
@@ -299,7 +317,7 @@ function vertexAreas(P: Float32Array, T: Uint32Array): Float64Array {
 
 /** Mean distance from each of (up to 2,000 of) the vertices, mirrored across the plane `axis = at`, to the nearest vertex. */
 function mirrorError(P: Float32Array, kept: number[], axis: number, at: number): number {
-  const { min, max } = bounds(P);
+  const { min, max } = positionBounds(P);
   const cell = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]) / 64;
   const grid = new Map<string, number[]>();
   const key = (x: number, y: number, z: number): string => `${Math.floor(x / cell)},${Math.floor(y / cell)},${Math.floor(z / cell)}`;

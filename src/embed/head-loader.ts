@@ -1,4 +1,4 @@
-import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, weldSeams, type Axis, type HeadFrame, type TriangleMesh, type Unit } from '../core/head-mesh';
+import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, positionBounds, weldSeams, type Axis, type HeadFrame, type TriangleMesh, type Unit } from '../core/head-mesh';
 import { decimateHead, LEVEL_TRIANGLES, levelPlan, subdivideHead, type HeadLevel, type LevelPlan } from '../core/head-levels';
 import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_LABELS, LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/landmarks';
 import { parseRig } from '../core/rig-schema';
@@ -188,7 +188,7 @@ export async function prepareHead(
   const source = file.name;
   const read = skinOf(scene, source, options.skin).mesh;
   checkHeadMesh(read, source);
-  const { min, max } = extent(read.positions);
+  const { min, max } = positionBounds(read.positions);
   weldSeams(read.positions, 1e-6 * Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]));
   const mesh = mergeVertices(read);
   const frame = findHeadFrame(mesh.positions, mesh.indices, options, source);
@@ -229,12 +229,3 @@ export async function prepareHead(
   return { head, level, sources, rig, landmarks, frame, files, options };
 }
 
-function extent(P: Float32Array): { min: number[]; max: number[] } {
-  const min = [Infinity, Infinity, Infinity];
-  const max = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < P.length; i++) {
-    min[i % 3] = Math.min(min[i % 3], P[i]);
-    max[i % 3] = Math.max(max[i % 3], P[i]);
-  }
-  return { min, max };
-}
