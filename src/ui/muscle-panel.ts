@@ -95,8 +95,13 @@ export class MusclePanel {
     // A new selection, or a muscle whose type changed, needs other fields; otherwise the values are refreshed.
     if (selected !== this.shown || (muscle && muscle.type !== this.state.type)) this.rebuild();
     else if (muscle) {
+      // A field being typed into keeps what is typed: a change elsewhere (the autosave's status a moment after an
+      // edit) must not put the old value back under the user's cursor, nor into what Enter then applies.
+      const typing = this.controllers.find((c) => c.domElement.contains(document.activeElement));
+      const typed: unknown = typing?.getValue();
       this.fill(muscle);
-      for (const c of this.controllers) c.updateDisplay();
+      if (typing) (typing.object as Record<string, unknown>)[typing.property] = typed;
+      for (const c of this.controllers) if (c !== typing) c.updateDisplay();
     }
   }
 
