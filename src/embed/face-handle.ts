@@ -188,7 +188,12 @@ export class FaceHandle {
   private player: FaceTimeline | undefined;
   private muscles: FaceMuscles | undefined;
   private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
-  private readonly listeners: FaceChangeListener[] = [];
+  /**
+   * Replaced, never changed in place, when a listener comes or goes: `emit` walks the array it started with (a
+   * listener that unsubscribes while being told does not make the next one miss the change) without copying it, as
+   * a playing timeline emits every frame.
+   */
+  private listeners: readonly FaceChangeListener[] = [];
   private expression: FaceExpression | undefined;
   private rigDocument: RigDocument | undefined;
   private originalRig: Rig | undefined;
@@ -439,10 +444,10 @@ export class FaceHandle {
   /** Calls `listener` after every change made through the handle; returns the function that stops it. */
   onChange(listener: FaceChangeListener): () => void {
     this.alive();
-    this.listeners.push(listener);
+    this.listeners = [...this.listeners, listener];
     return () => {
       const i = this.listeners.indexOf(listener);
-      if (i >= 0) this.listeners.splice(i, 1);
+      if (i >= 0) this.listeners = [...this.listeners.slice(0, i), ...this.listeners.slice(i + 1)];
     };
   }
 
@@ -461,7 +466,7 @@ export class FaceHandle {
   dispose(): void {
     if (this.disposed) return;
     this.disposed = true;
-    this.listeners.length = 0;
+    this.listeners = [];
     this.rejectReady(new Error('the face was disposed before it was ready'));
     this.teardown();
   }
@@ -1026,8 +1031,8 @@ export class FaceHandle {
   }
 
   private emit(change: FaceChange): void {
-    // A copy, so that a listener that unsubscribes while being told does not make the next one miss the change.
-    for (const listener of this.listeners.slice()) listener(change);
+    const listeners = this.listeners;
+    for (let i = 0; i < listeners.length; i++) listeners[i](change);
   }
 
   private shown(): FaceView {

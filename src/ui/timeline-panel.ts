@@ -30,6 +30,7 @@ export class TimelinePanel {
   };
   private readonly controllers: Controller[] = [];
   private readonly playButton: Controller;
+  private playLabel = 'play';
   private readonly timeSlider: Controller;
   private readonly list: HTMLDivElement;
   private readonly message: HTMLDivElement;
@@ -96,19 +97,28 @@ export class TimelinePanel {
   }
 
   private changed(change: FaceChange): void {
-    // While it plays only the clock moves; the list changes only with a new timeline, which comes paused.
-    if (change === 'timeline') this.refresh(!this.face.timelineState().playing);
+    if (change === 'timeline') this.refresh(false);
     else if (change === 'rig') this.refresh(true);
   }
 
-  private refresh(withList: boolean): void {
+  /**
+   * Shows the clock and the play button's state, and unless the timeline plays (or with `all`) the loop flag, the
+   * slider's range and the list: while it plays only the clock moves, and a new timeline comes paused.
+   */
+  private refresh(all: boolean): void {
     const state = this.face.timelineState();
     this.state.time = state.time;
+    this.timeSlider.updateDisplay();
+    const label = state.playing ? 'pause' : 'play';
+    if (label !== this.playLabel) {
+      this.playLabel = label;
+      this.playButton.name(label);
+    }
+    if (state.playing && !all) return;
     this.state.loop = state.loop;
     this.timeSlider.max(Math.max(state.duration, 0.01));
-    this.playButton.name(state.playing ? 'pause' : 'play');
     for (const c of this.controllers) c.updateDisplay();
-    if (withList) this.list.textContent = describe(this.face.getTimeline(), state.duration);
+    this.list.textContent = describe(this.face.getTimeline(), state.duration);
   }
 
   /** Adds the chosen onset / apex / offset action, starting at the timeline's current time. */
