@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { openFace } from './face';
 import { expect, test } from './fixtures';
 import { control, openFolder, sliderValue } from './panels';
@@ -27,15 +28,15 @@ test('the handle plays, pauses and seeks a timeline; the face and the sliders fo
 
   // Play: the clock runs and AU12 rises on both sides.
   await page.evaluate(() => window.face.play());
-  await expect.poll(() => page.evaluate(() => window.face.getActionUnits().AU12L), { timeout: 20_000 }).toBeGreaterThan(0.1);
+  await expect.poll(() => page.evaluate(() => window.face.getActionUnits().AU12L), { timeout: 20_000 }).toBeGreaterThan(0.3);
   await page.evaluate(() => window.face.pause());
   const paused = await page.evaluate(() => ({ state: window.face.timelineState(), units: window.face.getActionUnits() }));
   expect(paused.state.playing).toBe(false);
-  expect(paused.state.time).toBeGreaterThan(0.2);
+  expect(paused.state.time).toBeGreaterThan(0.6);
   // The sliders hold what the timeline set: AU12 follows its track at the clock's time.
   expect(paused.units.AU12L).toBeCloseTo(paused.state.time / 2, 6);
   expect(paused.units.AU12R).toBeCloseTo(paused.state.time / 2, 6);
-  // The face moved with it.
+  // The face moved with it (a lip corner moves about 10 mm at full AU12).
   const moved = await page.evaluate(async () => {
     await window.face.settle(45_000);
     const { rest, positions } = window.face.getSkin();
@@ -43,7 +44,7 @@ test('the handle plays, pauses and seeks a timeline; the face and the sliders fo
     for (let i = 0; i < rest.length; i += 3) m = Math.max(m, Math.hypot(positions[i] - rest[i], positions[i + 1] - rest[i + 1], positions[i + 2] - rest[i + 2]));
     return m;
   });
-  expect(moved).toBeGreaterThan(0.001);
+  expect(moved).toBeGreaterThan(0.002);
 
   // Paused, it holds: neither the clock nor the values move.
   await page.waitForTimeout(700);
@@ -117,7 +118,7 @@ test('a bad timeline is refused with its path-named message and changes nothing,
   expect(await page.evaluate(() => ({ timeline: window.face.getTimeline(), state: window.face.timelineState(), units: window.face.getActionUnits() }))).toEqual(before);
 });
 
-test('the Timeline panel adds an action, plays and pauses, seeks with its slider and imports a file', async ({ page }) => {
+test('the Timeline panel adds an action, plays and pauses, seeks with its slider, imports and exports files', async ({ page }) => {
   test.setTimeout(90_000);
   await openFace(page, '/?resolution=low');
   await openFolder(page, 'Timeline');
@@ -152,6 +153,13 @@ test('the Timeline panel adds an action, plays and pauses, seeks with its slider
   await expect(control(page, 'timeline-message')).toHaveText('imported smile.json');
   expect(await page.evaluate(() => window.face.getTimeline())).toEqual(TIMELINE);
   await expect(control(page, 'timeline-keys')).toContainText('AU12: 0 s 0 → 2 s 1');
+
+  // Export downloads the timeline as a file that imports back to the same document.
+  const download = page.waitForEvent('download');
+  await control(page, 'timeline-export').locator('button').click();
+  const file = await download;
+  expect(file.suggestedFilename()).toBe('timeline.json');
+  expect(JSON.parse(readFileSync(await file.path(), 'utf8'))).toEqual(TIMELINE);
 
   // Clear: no timeline, the face keeps its values.
   await control(page, 'timeline-clear').locator('button').click();
