@@ -11,9 +11,10 @@ export const HASH_SYNC_DEFAULTS: Required<HashSyncOptions> = { intervalMs: 250 }
 
 /**
  * Keeps the current expression (Action Unit sliders and preset weights) in the URL hash, with the loaded timeline when
- * its JSON is short (`MAX_HASH_TIMELINE_CHARS`), so that a copied link reopens the same face: applies the hash the page opened with (and any the user types later), and rewrites it with
- * `history.replaceState` after changes, at most every `intervalMs` and always after the last one. Replacing, not
- * pushing, keeps slider moves out of the back button's history.
+ * its JSON is short (`MAX_HASH_TIMELINE_CHARS`), so that a copied link reopens the same face: applies the hash the
+ * page opened with (and any the user types later), and rewrites it with `history.replaceState` after changes, at most
+ * every `intervalMs` and always after the last one. Replacing, not pushing, keeps slider moves out of the back
+ * button's history.
  */
 export class HashSync {
   private readonly o: Required<HashSyncOptions>;

@@ -39,9 +39,9 @@ export interface TimelineAction {
 
 /**
  * A timeline document. Track names and action targets are Action Unit ids as `setActionUnit` takes them (`AU12`,
- * `AU12L`, `AU17`) or presets as `preset:<name>`. A side's value is the sum of its tracks' and actions' (`AU12` adds to both
- * sides), clamped to 0..1.
- * `duration` defaults to the end of the last key or action; with `loop` the timeline starts again after it.
+ * `AU12L`, `AU17`) or presets as `preset:<name>`. A side's value is the sum of its tracks' and actions' (`AU12` adds
+ * to both sides), clamped to 0..1. `duration` defaults to the end of the last key or action; with `loop` the timeline
+ * starts again after it.
  */
 export interface Timeline {
   format: 'softface-timeline';
