@@ -1,5 +1,5 @@
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
-import { decodeExpression, encodeExpression } from '../embed/expression-hash';
+import { decodeExpression, decodeTimeline, encodeExpression, MAX_HASH_TIMELINE_CHARS } from '../embed/expression-hash';
 
 /** Options of the URL hash sync. */
 export interface HashSyncOptions {
@@ -10,10 +10,11 @@ export interface HashSyncOptions {
 export const HASH_SYNC_DEFAULTS: Required<HashSyncOptions> = { intervalMs: 250 };
 
 /**
- * Keeps the current expression (Action Unit sliders and preset weights) in the URL hash, so that a copied link
- * reopens the same face: applies the hash the page opened with (and any the user types later), and rewrites it with
- * `history.replaceState` after changes, at most every `intervalMs` and always after the last one. Replacing, not
- * pushing, keeps slider moves out of the back button's history.
+ * Keeps the current expression (Action Unit sliders and preset weights) in the URL hash, with the loaded timeline when
+ * its JSON is short (`MAX_HASH_TIMELINE_CHARS`), so that a copied link reopens the same face: applies the hash the
+ * page opened with (and any the user types later), and rewrites it with `history.replaceState` after changes, at most
+ * every `intervalMs` and always after the last one. Replacing, not pushing, keeps slider moves out of the back
+ * button's history.
  */
 export class HashSync {
   private readonly o: Required<HashSyncOptions>;
@@ -36,14 +37,19 @@ export class HashSync {
 
   /**
    * Applies an expression hash (see expression-hash.ts); with `replace`, on a neutral face rather than on top of the
-   * current one. Entries the face rejects are reported as warnings and skipped; the hash is then rewritten without them.
+   * current one, and without a timeline unless the hash has one. Entries the face rejects (a timeline with its
+   * path-named problem) are reported as warnings and skipped; the hash is then rewritten without them.
    */
   applyHash(hash: string, replace: boolean): void {
     if (!hash || hash === '#') {
-      if (replace) this.face.reset();
+      if (replace) {
+        this.face.reset();
+        if (this.face.getTimeline()) this.face.clearTimeline();
+      }
       return;
     }
     const { actionUnits, presets } = decodeExpression(hash);
+    const timeline = decodeTimeline(hash);
     const attempt = (apply: () => void): void => {
       try {
         apply();
@@ -56,17 +62,21 @@ export class HashSync {
       if (replace) this.face.reset();
       for (const [id, value] of Object.entries(actionUnits)) attempt(() => this.face.setActionUnit(id, value));
       for (const [name, weight] of Object.entries(presets)) attempt(() => this.face.applyPreset(name, weight));
+      if (timeline !== null) attempt(() => this.face.setTimeline(timeline, 'URL hash timeline'));
+      else if (replace && this.face.getTimeline()) this.face.clearTimeline();
     } finally {
       this.applying = false;
     }
     this.flush();
   }
 
-  /** The hash (with its `#`, or empty for the neutral face) of the current expression. */
+  /** The hash (with its `#`, or empty for the neutral face) of the current expression and short timeline. */
   currentHash(): string {
     const presets: Record<string, number> = {};
     for (const p of this.face.listPresets()) presets[p.name] = p.weight;
-    return encodeExpression({ actionUnits: this.face.getActionUnits(), presets });
+    const timeline = this.face.getTimeline();
+    const text = timeline ? JSON.stringify(timeline) : undefined;
+    return encodeExpression({ actionUnits: this.face.getActionUnits(), presets }, text !== undefined && text.length <= MAX_HASH_TIMELINE_CHARS ? text : undefined);
   }
 
   /** Writes the hash now, dropping any write that was waiting. */
@@ -86,7 +96,7 @@ export class HashSync {
   }
 
   private changed(change: FaceChange): void {
-    if (change !== 'expression' || this.applying || this.timer !== undefined) return;
+    if ((change !== 'expression' && change !== 'timeline') || this.applying || this.timer !== undefined) return;
     const wait = this.lastWrite + this.o.intervalMs - performance.now();
     if (wait <= 0) this.flush();
     else this.timer = setTimeout(() => this.flush(), wait);

@@ -13,12 +13,16 @@ function requestedResolution(): Resolution {
   return RESOLUTIONS.includes(r as Resolution) ? (r as Resolution) : 'medium';
 }
 
-/** Reloads the page with another head resolution, carrying the current expression over in the URL hash. */
+/** Keeps the expression (and a short timeline) in the URL hash once the face is ready. */
+let hashSync: HashSync | undefined;
+
+/** Reloads the page with another head resolution, carrying the current expression and timeline over in the URL hash. */
 function switchResolution(resolution: Resolution): void {
   const params = new URLSearchParams(location.search);
   params.set('resolution', resolution);
   const presets = Object.fromEntries(window.face.listPresets().map((p) => [p.name, p.weight]));
-  location.assign(`${location.pathname}?${params}${encodeExpression({ actionUnits: window.face.getActionUnits(), presets })}`);
+  const hash = hashSync?.currentHash() ?? encodeExpression({ actionUnits: window.face.getActionUnits(), presets });
+  location.assign(`${location.pathname}?${params}${hash}`);
 }
 
 const modelStatus = document.getElementById('status-model')!;
@@ -64,7 +68,7 @@ try {
   showSolver();
   setInterval(showSolver, SOLVER_STATUS_MS);
   // The expression lives in the URL hash from here on: a copied link reopens the same face.
-  new HashSync(face);
+  hashSync = new HashSync(face);
   document.documentElement.dataset.state = 'ready';
 } catch (error) {
   modelStatus.textContent = `The face could not start: ${(error as Error).message}`;

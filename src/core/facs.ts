@@ -233,6 +233,38 @@ export class ExpressionState {
     this.dirty = true;
   }
 
+  /**
+   * Sets some sliders (`ids[i]` to `values[i]`, ids as in `setActionUnit`) and preset weights (`presets[i]` to
+   * `weights[i]`), each clamped to 0..1, as a player's frame does; ids and presets the face does not have are
+   * skipped (a preset may have left with an edited rig). Returns whether anything changed. Allocation-free.
+   */
+  setFrame(ids: readonly string[], values: ArrayLike<number>, presets: readonly string[], weights: ArrayLike<number>): boolean {
+    let changed = false;
+    for (let i = 0; i < ids.length; i++) {
+      const slots = SLOTS_OF.get(ids[i]);
+      if (!slots || !Number.isFinite(values[i])) continue;
+      const v = clamp01(values[i]);
+      for (let k = 0; k < slots.length; k++) {
+        if (this.sliders[slots[k]] !== v) {
+          this.sliders[slots[k]] = v;
+          changed = true;
+        }
+      }
+    }
+    for (let i = 0; i < presets.length; i++) {
+      let index = -1;
+      for (let p = 0; p < this.presets.length; p++) if (this.presets[p].name === presets[i]) index = p;
+      if (index < 0 || !Number.isFinite(weights[i])) continue;
+      const w = clamp01(weights[i]);
+      if (this.presetWeights[index] !== w) {
+        this.presetWeights[index] = w;
+        changed = true;
+      }
+    }
+    if (changed) this.dirty = true;
+    return changed;
+  }
+
   /** The presets, in rig order, with their current weights. */
   listPresets(): PresetListing[] {
     return this.presets.map((p, i) => ({ name: p.name, source: p.source, ...(p.note === undefined ? {} : { note: p.note }), weight: this.presetWeights[i] }));

@@ -271,7 +271,8 @@ export function parseRigText(text: string, source = 'rig'): Rig {
 // ---------------------------------------------------------------------------------------------------------------
 // Issues to problems.
 
-function problemOf(issue: v.BaseIssue<unknown>): RigProblem {
+/** A valibot issue as a problem: its path and an "expected ..., got ..." message (also used for timelines). */
+export function problemOf(issue: v.BaseIssue<unknown>): RigProblem {
   const path = pathOf(issue.path);
   // valibot reports a key that a strict object or tuple does not allow as expecting "never".
   if (issue.expected === 'never') return { path, message: issue.type === 'strict_tuple' ? 'unexpected extra item (expected 3 numbers)' : 'unknown field' };
@@ -285,7 +286,8 @@ function pathOf(path: readonly { key: unknown }[] | undefined): string {
   return out;
 }
 
-function pathStep(key: unknown, first: boolean): string {
+/** One step of a problem's path: `[3]`, `.name`, or `["preset:happiness"]` for a key that is no identifier. */
+export function pathStep(key: unknown, first: boolean): string {
   if (typeof key === 'number') return `[${key}]`;
   const k = String(key);
   if (/^[A-Za-z_$][\w$]*$/.test(k)) return first ? k : `.${k}`;
@@ -293,7 +295,7 @@ function pathStep(key: unknown, first: boolean): string {
 }
 
 /** A short description of a found value for messages: `-0.01`, `"spring"`, `an array of 2 items`. */
-function show(x: unknown): string {
+export function show(x: unknown): string {
   if (x === undefined) return 'nothing';
   if (x === null || typeof x === 'number' || typeof x === 'boolean') return String(x);
   if (typeof x === 'string') return x.length > 40 ? `${JSON.stringify(x.slice(0, 40))}...` : JSON.stringify(x);
@@ -437,7 +439,8 @@ function presetIdProblem(id: string, bilateralById: Map<string, boolean>): strin
 // ---------------------------------------------------------------------------------------------------------------
 // Text: size and JSON syntax.
 
-function utf8Length(s: string): number {
+/** The length of a text in bytes of UTF-8. */
+export function utf8Length(s: string): number {
   let n = 0;
   for (let i = 0; i < s.length; i++) {
     const c = s.charCodeAt(i);
@@ -459,7 +462,7 @@ function megabytes(bytes: number): string {
  * Where and why JSON text is invalid. Engines word (and place) JSON.parse errors differently, and some give no
  * position, so the text is scanned here; the engine's message is the fallback should the scan find nothing.
  */
-function jsonSyntaxMessage(text: string, error: unknown): string {
+export function jsonSyntaxMessage(text: string, error: unknown): string {
   const found = findJsonError(text);
   if (!found) return `invalid JSON: ${error instanceof Error ? error.message : String(error)}`;
   const before = text.slice(0, found.offset);

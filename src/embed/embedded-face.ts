@@ -13,6 +13,7 @@ import { Panels } from '../ui/panels';
 import type { SolverMode } from '../worker/protocol';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { EyeDriver } from './eye-driver';
+import { TimelinePlayer } from './timeline-player';
 import { FaceEditor } from './face-editor';
 import { RigAutosave } from './rig-autosave';
 import { RigBinding } from './rig-binding';
@@ -69,6 +70,10 @@ export class EmbeddedFace {
     Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
     this.handle.attachView(this.view);
     this.handle.attachHeads(this);
+    // One player for the face's life: a timeline keeps playing across a head change.
+    const player = new TimelinePlayer(this.handle, this.view);
+    this.handle.attachTimeline(player);
+    this.undo.push(() => player.dispose());
     this.view.start();
   }
 

@@ -15,11 +15,18 @@ export type ExpressionEntries = Readonly<Record<string, number>>;
 
 const PRESET_PREFIX = 'preset:';
 
-/** The hash (with its `#`) for an expression; zero values are left out. */
-export function encodeExpression(e: HashExpression): string {
+/** The hash entry that carries a timeline document, as compact JSON: `timeline={"format":...}`. */
+export const TIMELINE_HASH_KEY = 'timeline';
+
+/** Longest timeline JSON the app puts in its URL hash, in characters: longer ones make links too long to share. */
+export const MAX_HASH_TIMELINE_CHARS = 1500;
+
+/** The hash (with its `#`) for an expression, and a timeline's JSON text if given; zero values are left out. */
+export function encodeExpression(e: HashExpression, timeline?: string): string {
   const params = new URLSearchParams();
   for (const [id, v] of Object.entries(e.actionUnits)) if (v !== 0) params.set(id, String(round(v)));
   for (const [name, w] of Object.entries(e.presets)) if (w !== 0) params.set(PRESET_PREFIX + name, String(round(w)));
+  if (timeline !== undefined) params.set(TIMELINE_HASH_KEY, timeline);
   const text = params.toString();
   return text ? `#${text}` : '';
 }
@@ -28,12 +35,18 @@ export function encodeExpression(e: HashExpression): string {
 export function decodeExpression(hash: string): HashExpression {
   const out: HashExpression = { actionUnits: {}, presets: {} };
   for (const [key, text] of new URLSearchParams(hash.replace(/^#/, ''))) {
+    if (key === TIMELINE_HASH_KEY) continue;
     const value = Number(text);
     if (text.trim() === '' || !Number.isFinite(value)) continue;
     if (key.startsWith(PRESET_PREFIX)) out.presets[key.slice(PRESET_PREFIX.length)] = value;
     else out.actionUnits[key] = value;
   }
   return out;
+}
+
+/** The timeline JSON text a hash carries (see `encodeExpression`), or null. */
+export function decodeTimeline(hash: string): string | null {
+  return new URLSearchParams(hash.replace(/^#/, '')).get(TIMELINE_HASH_KEY);
 }
 
 /**

@@ -84,6 +84,13 @@ export class FaceExpression {
     this.send();
   }
 
+  /** Sets some sliders and preset weights as a player's frame does (see `ExpressionState.setFrame`); sends only if they changed. */
+  setFrame(ids: readonly string[], values: ArrayLike<number>, presets: readonly string[], weights: ArrayLike<number>): boolean {
+    const changed = this.state.setFrame(ids, values, presets, weights);
+    if (changed) this.send();
+    return changed;
+  }
+
   /** Sets overlay entries (see FaceHandle.setOverlay); sends only if the overlay changed. Allocates nothing. */
   setOverlay(ids: readonly string[], values: ArrayLike<number>): void {
     let changed = false;

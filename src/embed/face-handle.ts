@@ -14,6 +14,8 @@ import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader
 import type { LandmarkGuide, LandmarkGuideState } from './landmark-guide';
 import type { Vec3 } from '../core/rig-types';
 import type { FaceExpression } from './face-expression';
+import type { Timeline } from '../core/timeline';
+import { parseTimeline, parseTimelineText } from '../core/timeline-schema';
 
 /** The welded skin at one moment, in simulation vertex order. */
 export interface SkinSnapshot {
@@ -32,9 +34,10 @@ export type FaceStats = SkinSimulationStats;
  * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters,
  * whether the eye simulation runs, which muscles are shown, the rig (an edit, undo or redo, a new rig), or the
  * editor (on or off, the selected muscle, its gizmo's mode or part, the preview contraction), the head (another
- * head loaded, or the default one back), or the landmark guide (started, a landmark placed, ended).
+ * head loaded, or the default one back), the landmark guide (started, a landmark placed, ended), or the timeline
+ * (loaded, played, paused, sought, and every frame it plays).
  */
-export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks';
+export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks' | 'timeline';
 
 /**
  * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
@@ -138,6 +141,25 @@ export interface CarriedState {
   skin: SkinParameters;
 }
 
+/** Where the timeline is: whether one is loaded, whether it plays, its clock and duration in seconds, and its loop flag. */
+export interface TimelineState {
+  loaded: boolean;
+  playing: boolean;
+  time: number;
+  duration: number;
+  loop: boolean;
+}
+
+/** The timeline player the handle drives (TimelinePlayer). */
+export interface FaceTimeline {
+  set(timeline: Timeline | null): void;
+  timeline(): Timeline | null;
+  play(): void;
+  pause(): void;
+  seek(seconds: number): void;
+  state(): TimelineState;
+}
+
 /** Told after every successful change made through the handle (panels refresh their sliders with it). */
 export type FaceChangeListener = (change: FaceChange) => void;
 
@@ -163,9 +185,15 @@ export class FaceHandle {
   private simulation: SkinSimulation | undefined;
   private view: FaceView | undefined;
   private eyes: FaceEyes | undefined;
+  private player: FaceTimeline | undefined;
   private muscles: FaceMuscles | undefined;
   private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
-  private readonly listeners: FaceChangeListener[] = [];
+  /**
+   * Replaced, never changed in place, when a listener comes or goes: `emit` walks the array it started with (a
+   * listener that unsubscribes while being told does not make the next one miss the change) without copying it, as
+   * a playing timeline emits every frame.
+   */
+  private listeners: readonly FaceChangeListener[] = [];
   private expression: FaceExpression | undefined;
   private rigDocument: RigDocument | undefined;
   private originalRig: Rig | undefined;
@@ -220,6 +248,34 @@ export class FaceHandle {
    */
   attachEyes(eyes: FaceEyes): void {
     this.eyes = eyes;
+  }
+
+  /**
+   * Connects the timeline player that `setTimeline`, `play`, `pause` and `seek` drive.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachTimeline(player: FaceTimeline): void {
+    this.player = player;
+  }
+
+  /**
+   * Sets the sliders and preset weights of a timeline frame (see `ExpressionState.setFrame`) and tells listeners if
+   * they changed; returns whether they did. Does nothing before the face is ready.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  applyTimelineFrame(ids: readonly string[], values: ArrayLike<number>, presets: readonly string[], weights: ArrayLike<number>): boolean {
+    if (this.disposed || !this.expression) return false;
+    const changed = this.expression.setFrame(ids, values, presets, weights);
+    if (changed) this.emit('expression');
+    return changed;
+  }
+
+  /**
+   * Tells listeners that the playing timeline's clock moved.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  timelineChanged(): void {
+    if (!this.disposed) this.emit('timeline');
   }
 
   /**
@@ -388,10 +444,10 @@ export class FaceHandle {
   /** Calls `listener` after every change made through the handle; returns the function that stops it. */
   onChange(listener: FaceChangeListener): () => void {
     this.alive();
-    this.listeners.push(listener);
+    this.listeners = [...this.listeners, listener];
     return () => {
       const i = this.listeners.indexOf(listener);
-      if (i >= 0) this.listeners.splice(i, 1);
+      if (i >= 0) this.listeners = [...this.listeners.slice(0, i), ...this.listeners.slice(i + 1)];
     };
   }
 
@@ -410,7 +466,7 @@ export class FaceHandle {
   dispose(): void {
     if (this.disposed) return;
     this.disposed = true;
-    this.listeners.length = 0;
+    this.listeners = [];
     this.rejectReady(new Error('the face was disposed before it was ready'));
     this.teardown();
   }
@@ -598,6 +654,66 @@ export class FaceHandle {
   /** The overlay by side id, like `getActionUnits`. */
   getOverlay(): Record<string, number> {
     return this.expressed().getOverlay();
+  }
+
+  // ---- the timeline -----------------------------------------------------------------------------------------
+
+  /**
+   * Loads a timeline (a timeline document as JSON text or an object; see the README's "Timeline"), paused at 0 with
+   * the face set to its start. It is checked whole first: a problem throws a `TimelineError` naming its path
+   * (`setTimeline: tracks.AU12L.keys[2].time: ...`; `source`, such as a file's name, replaces `setTimeline` there)
+   * and changes nothing. While it plays or is sought it sets the sliders and presets it names; the rest stay.
+   */
+  setTimeline(timeline: string | object, source = 'setTimeline'): void {
+    if (typeof source !== 'string') throw new Error(`setTimeline: source must be a string, got ${String(source)}`);
+    const player = this.timelinePlayer();
+    const options = { presets: this.listPresets().map((p) => p.name) };
+    const parsed = typeof timeline === 'string' ? parseTimelineText(timeline, source, options) : parseTimeline(timeline, source, options);
+    player.set(parsed);
+    this.emit('timeline');
+  }
+
+  /** A copy of the loaded timeline document, or null. */
+  getTimeline(): Timeline | null {
+    const t = this.timelinePlayer().timeline();
+    return t ? structuredClone(t) : null;
+  }
+
+  /** Unloads the timeline; the face keeps the values it had last. */
+  clearTimeline(): void {
+    this.timelinePlayer().set(null);
+    this.emit('timeline');
+  }
+
+  /** Plays the timeline from its clock (from the start again after a timeline without loop has ended). */
+  play(): void {
+    const player = this.timelinePlayer();
+    if (!player.timeline()) throw new Error('play: no timeline is loaded (setTimeline first)');
+    player.play();
+    this.emit('timeline');
+  }
+
+  /** Pauses the timeline: the face holds, and the sliders are the user's again until the next play or seek. */
+  pause(): void {
+    this.timelinePlayer().pause();
+    this.emit('timeline');
+  }
+
+  /**
+   * Moves the timeline's clock to `seconds` (wrapped with loop, clamped to 0..duration without) and sets the face to
+   * the values there, playing or not. A non-finite time throws and changes nothing.
+   */
+  seek(seconds: number): void {
+    const player = this.timelinePlayer();
+    if (typeof seconds !== 'number' || !Number.isFinite(seconds)) throw new Error(`seek: needs a finite number of seconds, got ${String(seconds)}`);
+    if (!player.timeline()) throw new Error('seek: no timeline is loaded (setTimeline first)');
+    player.seek(seconds);
+    this.emit('timeline');
+  }
+
+  /** Whether a timeline is loaded and plays, its clock and duration (seconds) and loop flag. */
+  timelineState(): TimelineState {
+    return this.timelinePlayer().state();
   }
 
   /**
@@ -902,6 +1018,12 @@ export class FaceHandle {
     else this.muscles.setVisible(new Set(shownMuscleNames(this.expression.rig, d)));
   }
 
+  private timelinePlayer(): FaceTimeline {
+    this.expressed();
+    if (!this.player) throw new Error('the face has no timeline player yet: await face.ready first');
+    return this.player;
+  }
+
   private eyeSimulation(): FaceEyes {
     this.alive();
     if (!this.eyes) throw new Error('the face has no eye simulation yet: await face.ready first');
@@ -909,8 +1031,8 @@ export class FaceHandle {
   }
 
   private emit(change: FaceChange): void {
-    // A copy, so that a listener that unsubscribes while being told does not make the next one miss the change.
-    for (const listener of this.listeners.slice()) listener(change);
+    const listeners = this.listeners;
+    for (let i = 0; i < listeners.length; i++) listeners[i](change);
   }
 
   private shown(): FaceView {

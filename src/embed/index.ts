@@ -2,7 +2,9 @@
 export { createFace, type Face } from './create-face';
 export { FACE_DEFAULTS, RESOLUTIONS, SOLVER_CHOICES, type FaceOptions, type Resolution, type SolverChoice } from './face-options';
 export type { ExpressionEntries } from './expression-hash';
-export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay, SkinSnapshot } from './face-handle';
+export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay, SkinSnapshot, TimelineState } from './face-handle';
+export type { Easing, Timeline, TimelineAction, TimelineKey, TimelineTrack } from '../core/timeline';
+export type { TimelineError } from '../core/timeline-schema';
 export type { ActionUnitListing, PresetListing } from '../core/facs';
 export type { SkinParameters } from '../core/solver';
 export type { Rig } from '../core/rig-types';

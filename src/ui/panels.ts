@@ -7,6 +7,7 @@ import { LightPanel } from './light-panel';
 import { OutputsPanel, type FrameSource } from './outputs-panel';
 import { PresetsPanel } from './presets-panel';
 import { RenderingPanel } from './rendering-panel';
+import { TimelinePanel } from './timeline-panel';
 import type { Resolution } from '../embed/face-options';
 
 export interface PanelsOptions {
@@ -34,6 +35,7 @@ export const PANELS_CLASS = 'softface-panels';
 export class Panels {
   readonly gui: GUI;
   readonly presets: PresetsPanel;
+  readonly timeline: TimelinePanel;
   readonly rendering: RenderingPanel;
   readonly light: LightPanel;
   readonly outputs: OutputsPanel;
@@ -53,6 +55,7 @@ export class Panels {
     style.zIndex = '1';
     this.gui.domElement.classList.add(PANELS_CLASS);
     this.presets = new PresetsPanel(this.gui, face);
+    this.timeline = new TimelinePanel(this.gui, face);
     this.rendering = new RenderingPanel(this.gui, face, { resolution: o.resolution, onResolution: o.onResolution });
     this.light = new LightPanel(this.gui, face);
     this.editor = new EditorPanel(this.gui, face, o.container);
@@ -60,6 +63,7 @@ export class Panels {
     this.outputs = new OutputsPanel(this.gui, face, o.frames);
     this.actionUnits = new ActionUnitsPanel(this.gui, face);
     this.presets.folder.close();
+    this.timeline.folder.close();
     this.rendering.folder.close();
     this.light.folder.close();
     this.editor.folder.close();
@@ -74,6 +78,7 @@ export class Panels {
     this.editor.dispose();
     this.light.dispose();
     this.rendering.dispose();
+    this.timeline.dispose();
     this.presets.dispose();
     this.gui.destroy();
   }
