@@ -37,6 +37,7 @@ test("the ES modules run with the page's own three.js, and solve on shared memor
   expect(files.filter((f) => f.startsWith('/lib/')).sort()).toEqual([
     '/lib/element.js',
     expect.stringMatching(/^\/lib\/embedded-face-[\w-]+\.js$/),
+    '/lib/environment/room.pmrem',
     '/lib/models/head-low.glb',
     '/lib/rigs/default.json',
     '/lib/softface.js',

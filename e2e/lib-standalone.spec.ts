@@ -46,9 +46,10 @@ test('the standalone module runs on a static host under a strict content securit
   expect(r.moved).toBeGreaterThan(0.005);
   // Nothing the policy forbids was tried: no eval, no inline style or script, workers only from Blob URLs.
   expect(r.violations).toEqual([]);
-  // The host served the page, its script, the module and the models and rig beside it: no worker file, and the
+  // The host served the page, its script, the module and the models, rig and lighting beside it: no worker file, and the
   // module found its assets from its own URL.
   expect([...new Set(asked)].sort()).toEqual([
+    '/lib/environment/room.pmrem',
     '/lib/models/head-low.glb',
     '/lib/rigs/default.json',
     '/lib/softface.standalone.js',

@@ -8,6 +8,7 @@ import { DEFAULT_LANDMARKS, type Landmarks } from '../core/landmarks';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView, type ViewBackground } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
+import { ENVIRONMENT_PATH, loadEnvironment } from '../render/environment';
 import { SkinView } from '../render/skin-view';
 import { Panels } from '../ui/panels';
 import type { SolverMode } from '../worker/protocol';
@@ -150,6 +151,8 @@ export class EmbeddedFace {
     const o = this.options;
     const base = assetBase(o.assetBase);
     const rigLoading = loadRig(o.rig, base);
+    // Fetched beside the head and the rig; a failure resolves to null, and the view then makes its own.
+    const environment = loadEnvironment(new URL(ENVIRONMENT_PATH, base).href);
     // Awaited below; until then a failure must not count as unhandled if the head fails first.
     rigLoading.catch(() => {});
     this.modelUrl = o.model === null ? new URL(`models/head-${o.resolution}.glb`, base).href : pageUrl(o.model);
@@ -185,6 +188,8 @@ export class EmbeddedFace {
       }
     }
     signal?.throwIfAborted();
+    const lighting = await environment;
+    if (lighting) this.view.setEnvironment(lighting);
     await this.mount(head, prepared, { signal });
 
     const start = readExpression(o.expression, 'createFace: expression');

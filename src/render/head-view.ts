@@ -312,10 +312,20 @@ export class HeadView {
     this.renderer.domElement.remove();
   }
 
-  /** Renders the scene, making its environment map first if it has none yet. */
+  /**
+   * Lights the scene with a prefiltered environment (see loadEnvironment); without one, the view makes its own at the
+   * first frame that shows a head.
+   */
+  setEnvironment(texture: Texture): void {
+    this.scene.environment?.dispose();
+    this.scene.environment = texture;
+    this.invalidate();
+  }
+
+  /** Renders the scene, making its environment map first if a head is shown and it has none yet. */
   private renderFrame(): void {
-    if (!this.scene.environment) {
-      // Made on the first frame rendered, not with the view: a face that is never in view never pays for it (in
+    if (!this.scene.environment && this.head) {
+      // Made on the first frame with a head, not with the view: a face that is never in view never pays for it (in
       // software WebGL it is seconds of GPU work, which a lost context waits for).
       const pmrem = new PMREMGenerator(this.renderer);
       const room = new RoomEnvironment();
