@@ -7,7 +7,10 @@ import {
   Mesh,
   NumberKeyframeTrack,
   Quaternion,
+  Source,
+  Texture,
   Vector3,
+  type Material,
   type Object3D,
 } from 'three';
 import type { HeadModel } from './head-model';
@@ -141,10 +144,12 @@ export class HeadExporter {
     // Loaded when first used: most pages never export.
     const { GLTFExporter } = await import('three/addons/exporters/GLTFExporter.js');
     const built = this.buildScene(shapes, clip);
+    const drawable = withDrawableTextures(built.scene);
     try {
       const result = await new GLTFExporter().parseAsync(built.scene, { binary: o.binary, animations: built.animations, onlyVisible: false });
       return result as ArrayBuffer | Record<string, unknown>;
     } finally {
+      drawable.dispose();
       built.dispose();
     }
   }
@@ -217,6 +222,51 @@ export class HeadExporter {
     });
     return meshes;
   }
+}
+
+/**
+ * Gives the scene's meshes copies of their materials whose data textures (the pore and eye maps, made in code) are
+ * canvases: GLTFExporter redraws a normal map through a canvas (to flip its green channel for meshes without
+ * tangents), which takes an image, not raw pixels. Returns what frees the copies; the shown head keeps its own.
+ */
+function withDrawableTextures(scene: Object3D): { dispose(): void } {
+  const textures = new Map<Texture, Texture>();
+  const materials = new Map<Material, Material>();
+  const drawable = (t: Texture): Texture => {
+    let copy = textures.get(t);
+    if (!copy) {
+      const { data, width, height } = t.image as { data: Uint8Array; width: number; height: number };
+      const canvas = document.createElement('canvas');
+      canvas.width = width;
+      canvas.height = height;
+      canvas.getContext('2d')!.putImageData(new ImageData(Uint8ClampedArray.from(data), width, height), 0, 0);
+      copy = t.clone();
+      copy.source = new Source(canvas);
+      textures.set(t, copy);
+    }
+    return copy;
+  };
+  scene.traverse((o) => {
+    if (!(o instanceof Mesh)) return;
+    const swap = (m: Material): Material => {
+      const entries = Object.entries(m).filter(([, v]) => v instanceof Texture && (v.image as { data?: unknown } | null)?.data instanceof Uint8Array);
+      if (entries.length === 0) return m;
+      let copy = materials.get(m);
+      if (!copy) {
+        copy = m.clone();
+        for (const [key, t] of entries) (copy as unknown as Record<string, Texture>)[key] = drawable(t as Texture);
+        materials.set(m, copy);
+      }
+      return copy;
+    };
+    o.material = Array.isArray(o.material) ? o.material.map(swap) : swap(o.material);
+  });
+  return {
+    dispose: () => {
+      for (const t of textures.values()) t.dispose();
+      for (const m of materials.values()) m.dispose();
+    },
+  };
 }
 
 /** Walks two copies of a tree side by side, pairing each original node with its copy. */
