@@ -187,6 +187,10 @@ test('bad export options reject naming the option and leave the face as it was',
 test('the Export folder downloads softface.glb with the morph targets typed into it', async ({ page }) => {
   test.setTimeout(180_000);
   await openFace(page, '/?resolution=low');
+  // One more folder title, and the Outputs still show whole at 1024 x 768 without scrolling.
+  const outputs = page.locator('.softface-panels .lil-gui', { has: page.locator(':scope > .lil-title', { hasText: /^Outputs$/ }) });
+  const box = (await outputs.boundingBox())!;
+  expect(box.y + box.height).toBeLessThanOrEqual(768);
   await openFolder(page, 'Export');
   const units = control(page, 'gltf-action-units').locator('input');
   await units.fill('AU12L');
@@ -202,4 +206,30 @@ test('the Export folder downloads softface.glb with the morph targets typed into
   expect(meshNamed(gltf, 'skin').morphTargetDictionary).toEqual({ AU12L: 0, happiness: 1 });
   expect(gltf.animations).toEqual([]);
   await expect(control(page, 'gltf-message')).toContainText('exported softface.glb');
+});
+
+test('an aborted export rejects with the reason and gives the face its expression back; the next export runs', async ({ page }) => {
+  test.setTimeout(120_000);
+  await openFace(page, '/?resolution=low');
+  const r = await page.evaluate(async () => {
+    const face = window.face;
+    face.setExpression({ AU12L: 0.5 });
+    const before = face.getActionUnits();
+    const controller = new AbortController();
+    let error = '';
+    try {
+      await face.exportGLTF({ actionUnits: ['AU12', 'AU26'], signal: controller.signal, onProgress: (p) => p.target === 'AU12' && controller.abort(new Error('stopped')) });
+    } catch (e) {
+      error = (e as Error).message;
+    }
+    const restored = JSON.stringify(face.getActionUnits()) === JSON.stringify(before);
+    const next = await face.exportGLTF({ actionUnits: ['AU17'], binary: false });
+    const document = JSON.parse(await next.text()) as { meshes: { name: string; extras?: { targetNames?: string[] } }[] };
+    return { error, restored, type: next.type, names: document.meshes.map((m) => m.extras?.targetNames ?? []) };
+  });
+  expect(r.error).toBe('stopped');
+  expect(r.restored).toBe(true);
+  // A glTF JSON document this time; AU17 leaves the jaw, so only the skin has targets.
+  expect(r.type).toBe('model/gltf+json');
+  expect(r.names.filter((n) => n.length > 0)).toEqual([['AU17']]);
 });
