@@ -10,6 +10,7 @@ import { HeadView, type ViewBackground } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
 import { ENVIRONMENT_PATH, loadEnvironment } from '../render/environment';
 import { SkinView } from '../render/skin-view';
+import { HeadExporter } from '../render/gltf-export';
 import { Panels } from '../ui/panels';
 import type { SolverMode } from '../worker/protocol';
 import { SkinSimulation } from '../worker/skin-simulation';
@@ -332,8 +333,11 @@ export class EmbeddedFace {
       disposeHead(head);
     });
     const geometry = head.skin.geometry;
-    // The skin at rest, render order: the vertex brush stores what it paints at rest.
+    // The skin at rest, render order: the vertex brush stores what it paints at rest, the glTF export writes it.
     const restRender = (geometry.getAttribute('position').array as Float32Array).slice();
+    const restNormals = (geometry.getAttribute('normal').array as Float32Array).slice();
+    // Made before the first frame moves the skin, and while the jaw and eyes are still at rest.
+    const exporter = new HeadExporter(head, restRender, restNormals);
     skinView.connect(simulation);
     own.push(this.view.onFrame(() => {
       simulation.advance();
@@ -371,6 +375,7 @@ export class EmbeddedFace {
     });
     own.push(() => binding.dispose());
     this.handle.attach(simulation, expression);
+    this.handle.attachGLTFWriter(exporter);
     this.handle.attachMuscles(muscles);
     // After the binding: listeners of the handle's 'rig' change see a face that already shows the edit.
     const name = prepared ? prepared.files[0].name.replace(/\.(glb|gltf|obj)$/i, '') : rigName(o.rig);

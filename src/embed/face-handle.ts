@@ -16,6 +16,9 @@ import type { Vec3 } from '../core/rig-types';
 import type { FaceExpression } from './face-expression';
 import type { Timeline } from '../core/timeline';
 import { parseTimeline, parseTimelineText } from '../core/timeline-schema';
+import { planTargets, timelineWeights } from '../core/morph-export';
+import type { HeadWriteOptions, JawPose, MorphClip, MorphShape } from '../render/gltf-export';
+import { checkExportOptions, type GLTFExportOptions } from './gltf-export-options';
 
 /** The welded skin at one moment, in simulation vertex order. */
 export interface SkinSnapshot {
@@ -160,6 +163,14 @@ export interface FaceTimeline {
   state(): TimelineState;
 }
 
+/** The writer `exportGLTF` hands the solved shapes to (HeadExporter). */
+export interface FaceGLTFWriter {
+  /** Render vertices of the skin. */
+  readonly vertexCount: number;
+  jawPose(): JawPose | null;
+  write(shapes: readonly MorphShape[], clip: MorphClip | null, options: HeadWriteOptions): Promise<ArrayBuffer | Record<string, unknown>>;
+}
+
 /** Told after every successful change made through the handle (panels refresh their sliders with it). */
 export type FaceChangeListener = (change: FaceChange) => void;
 
@@ -186,6 +197,9 @@ export class FaceHandle {
   private view: FaceView | undefined;
   private eyes: FaceEyes | undefined;
   private player: FaceTimeline | undefined;
+  private gltfWriter: FaceGLTFWriter | undefined;
+  /** Whether `exportGLTF` is solving its targets (one export at a time: each moves the face). */
+  private exporting = false;
   private muscles: FaceMuscles | undefined;
   private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
   /**
@@ -256,6 +270,14 @@ export class FaceHandle {
    */
   attachTimeline(player: FaceTimeline): void {
     this.player = player;
+  }
+
+  /**
+   * Connects the shown head's glTF writer, for `exportGLTF` (a new head brings its own).
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachGLTFWriter(writer: FaceGLTFWriter): void {
+    this.gltfWriter = writer;
   }
 
   /**
@@ -741,6 +763,87 @@ export class FaceHandle {
   /** A PNG of the canvas, rendered just before it is read. */
   savePNG(): Promise<Blob> {
     return this.shown().snapshot();
+  }
+
+  /**
+   * Exports the head (skin, eyes, teeth) as glTF (see the README's "Export to glTF"): each Action Unit and preset
+   * asked for becomes a morph target named after it, holding the skin it gives on its own at 1 once settled, and the
+   * timeline (the loaded one, unless `timeline` is false) becomes an animation of the morph weights. Every target is
+   * solved from the neutral face in turn, so this takes a while (`onProgress`, `signal`); the face shows it, and gets
+   * its expression back afterwards. Bad options reject naming the option, changing nothing.
+   */
+  async exportGLTF(options?: GLTFExportOptions): Promise<Blob> {
+    const o = checkExportOptions(options);
+    this.alive();
+    await this.ready;
+    const expression = this.expressed();
+    const simulation = this.running();
+    const player = this.timelinePlayer();
+    const writer = this.gltfWriter;
+    if (!writer) throw new Error('exportGLTF: the face has no head to export yet');
+    const loaded = player.timeline();
+    if (o.timeline === true && !loaded) throw new Error('exportGLTF: timeline: no timeline is loaded (setTimeline first, or leave timeline out)');
+    const timeline = o.timeline === false ? null : loaded;
+    const targets = planTargets(o.actionUnits, o.presets, this.listPresets().map((p) => p.name), timeline);
+    const weights = timeline ? timelineWeights(timeline, targets, o.fps) : null;
+    o.signal?.throwIfAborted();
+    if (this.exporting) throw new Error('exportGLTF: another export is under way');
+    this.exporting = true;
+    const saved = {
+      expression: { actionUnits: expression.getActionUnits(), presets: Object.fromEntries(expression.listPresets().map((p) => [p.name, p.weight])) },
+      overlay: expression.getOverlay(),
+      eyes: this.eyes?.enabled() ?? false,
+      playing: player.state().playing,
+    };
+    const shapes: MorphShape[] = [];
+    const neutral = { actionUnits: {}, presets: {} };
+    try {
+      // Nothing but the target may move the skin: no timeline frames, blinks, overlay or editor preview.
+      if (saved.playing) player.pause();
+      this.eyes?.setEnabled(false);
+      expression.clearOverlay();
+      expression.setPreview(null);
+      expression.set(neutral, 'exportGLTF');
+      this.emit('expression');
+      await this.settleFor(o.settleTimeoutMs, o.signal);
+      for (const [i, target] of targets.entries()) {
+        o.onProgress?.({ done: i, total: targets.length, target: target.name });
+        const one = { [target.id]: 1 };
+        expression.set(target.kind === 'preset' ? { actionUnits: {}, presets: one } : { actionUnits: one, presets: {} }, 'exportGLTF');
+        this.emit('expression');
+        await this.settleFor(o.settleTimeoutMs, o.signal);
+        const positions = new Float32Array(3 * writer.vertexCount);
+        const normals = new Float32Array(3 * writer.vertexCount);
+        simulation.readRender(positions, normals);
+        shapes.push({ name: target.name, positions, normals, jaw: writer.jawPose() });
+        // Back to neutral, so that every target starts from the same settled face.
+        expression.set(neutral, 'exportGLTF');
+        this.emit('expression');
+        await this.settleFor(o.settleTimeoutMs, o.signal);
+      }
+    } finally {
+      this.exporting = false;
+      if (!this.disposed) {
+        expression.set(saved.expression, 'exportGLTF');
+        const ids = Object.keys(saved.overlay);
+        expression.setOverlay(ids, ids.map((id) => saved.overlay[id]));
+        this.applyPreview();
+        this.eyes?.setEnabled(saved.eyes);
+        if (saved.playing) player.play();
+        this.emit('expression');
+      }
+    }
+    o.onProgress?.({ done: targets.length, total: targets.length, target: null });
+    const clip = weights ? { name: 'timeline', ...weights } : null;
+    const data = await writer.write(shapes, clip, { binary: o.binary });
+    return data instanceof ArrayBuffer ? new Blob([data], { type: 'model/gltf-binary' }) : new Blob([JSON.stringify(data)], { type: 'model/gltf+json' });
+  }
+
+  /** Waits for the skin to settle, checking the abort signal before and after. */
+  private async settleFor(timeoutMs: number, signal: AbortSignal | null): Promise<void> {
+    signal?.throwIfAborted();
+    await this.running().settle(timeoutMs);
+    signal?.throwIfAborted();
   }
 
   // ---- the rig editor ----------------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 export { createFace, type Face } from './create-face';
 export { FACE_DEFAULTS, RESOLUTIONS, SOLVER_CHOICES, type FaceOptions, type Resolution, type SolverChoice } from './face-options';
 export type { ExpressionEntries } from './expression-hash';
+export type { GLTFExportOptions, GLTFExportProgress } from './gltf-export-options';
 export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay, SkinSnapshot, TimelineState } from './face-handle';
 export type { Easing, Timeline, TimelineAction, TimelineKey, TimelineTrack } from '../core/timeline';
 export type { TimelineError } from '../core/timeline-schema';

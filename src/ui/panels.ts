@@ -2,6 +2,7 @@ import GUI from 'lil-gui';
 import type { FaceHandle } from '../embed/face-handle';
 import { ActionUnitsPanel } from './action-units-panel';
 import { EditorPanel } from './editor-panel';
+import { ExportPanel } from './export-panel';
 import { HeadPanel } from './head-panel';
 import { LightPanel } from './light-panel';
 import { OutputsPanel, type FrameSource } from './outputs-panel';
@@ -42,6 +43,7 @@ export class Panels {
   readonly actionUnits: ActionUnitsPanel;
   readonly editor: EditorPanel;
   readonly head: HeadPanel;
+  readonly gltf: ExportPanel;
 
   constructor(face: FaceHandle, options: PanelsOptions) {
     const o = { ...PANELS_DEFAULTS, ...options };
@@ -60,6 +62,7 @@ export class Panels {
     this.light = new LightPanel(this.gui, face);
     this.editor = new EditorPanel(this.gui, face, o.container);
     this.head = new HeadPanel(this.gui, face, o.container);
+    this.gltf = new ExportPanel(this.gui, face);
     this.outputs = new OutputsPanel(this.gui, face, o.frames);
     this.actionUnits = new ActionUnitsPanel(this.gui, face);
     this.presets.folder.close();
@@ -68,12 +71,14 @@ export class Panels {
     this.light.folder.close();
     this.editor.folder.close();
     this.head.folder.close();
+    this.gltf.folder.close();
   }
 
   /** Removes every panel, with its listeners, timers and frame hooks. */
   dispose(): void {
     this.actionUnits.dispose();
     this.outputs.dispose();
+    this.gltf.dispose();
     this.head.dispose();
     this.editor.dispose();
     this.light.dispose();

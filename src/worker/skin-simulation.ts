@@ -257,6 +257,17 @@ export class SkinSimulation {
     intoNormals.set(slot.normals);
   }
 
+  /** Copies the newest complete frame in render-vertex order (xyz per render vertex), read or not. Allocates nothing. */
+  readRender(intoPositions: Float32Array, intoNormals: Float32Array): void {
+    this.checkAlive();
+    const slot = this.backend.latest();
+    if (intoPositions.length !== slot.renderPositions.length || intoNormals.length !== slot.renderNormals.length) {
+      throw new Error(`readRender needs arrays of ${slot.renderPositions.length} floats (3 per render vertex)`);
+    }
+    intoPositions.set(slot.renderPositions);
+    intoNormals.set(slot.renderNormals);
+  }
+
   stats(): SkinSimulationStats {
     this.checkAlive();
     const slot = this.backend.latest();

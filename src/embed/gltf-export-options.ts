@@ -1,0 +1,64 @@
+import { MAX_EXPORT_FPS } from '../core/morph-export';
+
+/** How far `exportGLTF` has come: targets solved so far of all, and the one it solves now (null once all are). */
+export interface GLTFExportProgress {
+  done: number;
+  total: number;
+  target: string | null;
+}
+
+/** Options of `face.exportGLTF`. */
+export interface GLTFExportOptions {
+  /** Action Units to export as morph targets, by id as `setActionUnit` takes them (`AU12`, `AU12L`, `AU17`). */
+  actionUnits?: string[];
+  /** Presets of the rig to export as morph targets, by name. */
+  presets?: string[];
+  /** Whether to export the loaded timeline as an animation of the morph weights; null: if one is loaded. */
+  timeline?: boolean | null;
+  /** Samples per second of the timeline's animation (above 0, at most 120). */
+  fps?: number;
+  /** A GLB (true) or a glTF JSON document with everything inline (false). */
+  binary?: boolean;
+  /** How long each target may take to settle, in ms. */
+  settleTimeoutMs?: number;
+  /** Told before each target is solved, and once all are. */
+  onProgress?: ((progress: GLTFExportProgress) => void) | null;
+  /** Aborts the export: the face gets its expression back and the promise rejects with the signal's reason. */
+  signal?: AbortSignal | null;
+}
+
+export const GLTF_EXPORT_DEFAULTS: Readonly<Required<GLTFExportOptions>> = Object.freeze({
+  actionUnits: [],
+  presets: [],
+  timeline: null,
+  fps: 30,
+  binary: true,
+  settleTimeoutMs: 60_000,
+  onProgress: null,
+  signal: null,
+});
+
+/**
+ * The options with their defaults, checked: an unknown option or a value of the wrong type or range throws naming the
+ * option (the ids and preset names are checked against the face by `planTargets`).
+ */
+export function checkExportOptions(options: unknown, what = 'exportGLTF'): Required<GLTFExportOptions> {
+  if (options === undefined) return { ...GLTF_EXPORT_DEFAULTS };
+  if (typeof options !== 'object' || options === null || Array.isArray(options)) throw new Error(`${what}: options must be an object, got ${String(options)}`);
+  for (const key of Object.keys(options)) if (!(key in GLTF_EXPORT_DEFAULTS)) throw new Error(`${what}: unknown option ${JSON.stringify(key)}`);
+  const o = { ...GLTF_EXPORT_DEFAULTS, ...(options as GLTFExportOptions) };
+  for (const [key, list] of [['actionUnits', o.actionUnits], ['presets', o.presets]] as const) {
+    if (!Array.isArray(list) || !list.every((x) => typeof x === 'string')) throw new Error(`${what}: ${key} must be an array of strings, got ${show(list)}`);
+  }
+  if (o.timeline !== null && typeof o.timeline !== 'boolean') throw new Error(`${what}: timeline must be a boolean, got ${show(o.timeline)}`);
+  if (typeof o.fps !== 'number' || !Number.isFinite(o.fps) || o.fps <= 0 || o.fps > MAX_EXPORT_FPS) throw new Error(`${what}: fps must be a number above 0 and at most ${MAX_EXPORT_FPS}, got ${show(o.fps)}`);
+  if (typeof o.binary !== 'boolean') throw new Error(`${what}: binary must be a boolean, got ${show(o.binary)}`);
+  if (typeof o.settleTimeoutMs !== 'number' || !(o.settleTimeoutMs > 0)) throw new Error(`${what}: settleTimeoutMs must be a positive number of ms, got ${show(o.settleTimeoutMs)}`);
+  if (o.onProgress !== null && typeof o.onProgress !== 'function') throw new Error(`${what}: onProgress must be a function, got ${show(o.onProgress)}`);
+  if (o.signal !== null && !(o.signal instanceof AbortSignal)) throw new Error(`${what}: signal must be an AbortSignal, got ${show(o.signal)}`);
+  return { ...o, actionUnits: [...o.actionUnits], presets: [...o.presets] };
+}
+
+function show(x: unknown): string {
+  return typeof x === 'string' ? JSON.stringify(x) : Array.isArray(x) ? JSON.stringify(x) : String(x);
+}
