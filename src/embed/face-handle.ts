@@ -7,7 +7,7 @@ import type { SkinParameters } from '../core/solver';
 import type { RenderTiming } from '../render/head-view';
 import type { GizmoMode, GizmoPart } from '../render/muscle-gizmo';
 import type { MaterialDescription } from '../render/materials';
-import type { LightOptions, RenderOptions } from '../render/view-options';
+import type { CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
 import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
 import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader';
@@ -40,7 +40,7 @@ export type FaceStats = SkinSimulationStats;
  * head loaded, or the default one back), the landmark guide (started, a landmark placed, ended), or the timeline
  * (loaded, played, paused, sought, and every frame it plays).
  */
-export type FaceChange = 'expression' | 'light' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks' | 'timeline';
+export type FaceChange = 'expression' | 'light' | 'camera' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks' | 'timeline';
 
 /**
  * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
@@ -180,6 +180,9 @@ export interface FaceView {
   lightOptions(): LightOptions;
   setRenderOptions(partial: Partial<RenderOptions>): void;
   renderOptions(): RenderOptions;
+  setCamera(partial: Partial<CameraOptions>): void;
+  cameraOptions(): CameraOptions;
+  locate(point: readonly [number, number, number]): { x: number; y: number } | null;
   /** Renders a frame and encodes the canvas as a PNG. */
   snapshot(): Promise<Blob>;
   measureRender(frames?: number): RenderTiming;
@@ -551,6 +554,28 @@ export class FaceHandle {
 
   getLight(): LightOptions {
     return this.shown().lightOptions();
+  }
+
+  /**
+   * Moves the camera relative to the head's framing from the front: `yaw` degrees round it (-180..180, 90 from the
+   * subject's left), `pitch` degrees up (-80..80), `distance` as a multiple of the framing distance (0.2..5); bad input
+   * throws naming it and changes nothing. The user's orbit drags move the same camera.
+   */
+  setCamera(partial: Partial<CameraOptions>): void {
+    this.shown().setCamera(partial);
+    this.emit('camera');
+  }
+
+  getCamera(): CameraOptions {
+    return this.shown().cameraOptions();
+  }
+
+  /**
+   * Where a point of the head (the skin's model space, metres, as `getSkin` gives them) is on the page, in client
+   * pixels, as the camera sees it now (for overlays and tests); null before a head is shown.
+   */
+  locatePoint(point: Vec3): { x: number; y: number } | null {
+    return this.shown().locate(point);
   }
 
   /** Changes some render options (`wireframe`, `showEyes`, `showTeeth`, booleans); bad input throws and changes nothing. */

@@ -20,10 +20,13 @@ import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { boxCentre, type HeadModel } from './head-model';
 import { describeMaterial, type MaterialDescription } from './materials';
 import {
+  CAMERA_DEFAULTS,
+  CAMERA_RANGES,
   LIGHT_DEFAULTS,
   LIGHT_RANGES,
   RENDER_DEFAULTS,
   checkOptions,
+  type CameraOptions,
   type LightOptions,
   type RenderOptions,
 } from './view-options';
@@ -85,6 +88,9 @@ export class HeadView {
   private head: HeadModel | undefined;
   /** Where the key light aims and turns around: the head's centre once a head is shown. */
   private readonly centre = new Vector3();
+  /** The framing camera's offset from the head's centre (CAMERA_DEFAULTS), and scratch for reading the camera. */
+  private readonly home = new Vector3(0, 0, 1);
+  private readonly scratch = new Vector3();
   private readonly light: Required<LightOptions> = { ...LIGHT_DEFAULTS };
   private readonly render: Required<RenderOptions> = { ...RENDER_DEFAULTS };
   private frame = 0;
@@ -347,9 +353,51 @@ export class HeadView {
     const fit = (0.5 * Math.max(size.y, size.x / this.camera.aspect)) / Math.tan((this.camera.fov * Math.PI) / 360);
     const distance = 1.15 * fit + size.z / 2;
     this.controls.target.copy(centre);
-    this.camera.position.set(centre.x, centre.y + 0.03 * size.y, centre.z + distance);
+    this.home.set(0, 0.03 * size.y, distance);
     this.centre.copy(centre);
     this.applyLight();
+    this.placeCamera(CAMERA_DEFAULTS);
+  }
+
+  /**
+   * Turns the camera about the head's centre and moves it nearer or farther, relative to the framing from the front
+   * (see CameraOptions); throws, changing nothing, on an unknown option or a value of the wrong type or range.
+   */
+  setCamera(partial: Partial<CameraOptions>): void {
+    const checked = checkOptions<CameraOptions>('setCamera', partial, CAMERA_DEFAULTS, CAMERA_RANGES);
+    this.placeCamera({ ...this.cameraOptions(), ...checked });
+  }
+
+  /** Where the camera is now, as CameraOptions (after the user's orbit drags too). */
+  cameraOptions(): CameraOptions {
+    const offset = this.scratch.subVectors(this.camera.position, this.controls.target);
+    const home = this.home;
+    // Rounded to a millionth (floating-point noise), and -0 read as 0.
+    const round = (x: number): number => Math.round(x * 1e6) / 1e6 + 0;
+    const pitch = Math.asin(offset.y / offset.length()) - Math.atan2(home.y, home.z);
+    return {
+      yaw: round(Math.atan2(offset.x, offset.z) / DEGREES),
+      pitch: round(pitch / DEGREES),
+      distance: round(offset.length() / home.length()),
+    };
+  }
+
+  /** Where a point of the shown head's skin (its model space) is on the page, in client pixels; null without a head. */
+  locate(point: readonly [number, number, number]): { x: number; y: number } | null {
+    if (!this.head) return null;
+    this.head.skin.updateWorldMatrix(true, false);
+    this.camera.updateMatrixWorld();
+    const p = this.scratch.set(point[0], point[1], point[2]).applyMatrix4(this.head.skin.matrixWorld).project(this.camera);
+    const r = this.renderer.domElement.getBoundingClientRect();
+    return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+  }
+
+  private placeCamera(o: CameraOptions): void {
+    const home = this.home;
+    const pitch = Math.atan2(home.y, home.z) + o.pitch * DEGREES;
+    const r = o.distance * home.length();
+    const yaw = o.yaw * DEGREES;
+    this.camera.position.set(Math.sin(yaw) * Math.cos(pitch), Math.sin(pitch), Math.cos(yaw) * Math.cos(pitch)).multiplyScalar(r).add(this.controls.target);
     this.controls.update();
     this.invalidate();
   }

@@ -38,6 +38,27 @@ export const LIGHT_DEFAULTS: Readonly<Required<LightOptions>> = Object.freeze({
 export const LIGHT_RANGES: Readonly<Record<'ambientIntensity' | 'keyAzimuth' | 'keyElevation' | 'keyIntensity', readonly [number, number]>> =
   Object.freeze({ ambientIntensity: [0, 3], keyAzimuth: [0, 360], keyElevation: [-90, 90], keyIntensity: [0, 10] });
 
+/**
+ * Where the camera looks from, relative to the framing the view chooses for a head (from the front, the whole head in
+ * view): turned about the head's centre and moved nearer or farther. The user's orbit drag changes the same.
+ */
+export interface CameraOptions {
+  /** Degrees round the head's vertical axis, -180..180: 90 looks from the subject's left (+x). */
+  yaw: number;
+  /** Degrees up (positive) or down, -80..80. */
+  pitch: number;
+  /** Distance from the head's centre as a multiple of the framing distance, 0.2..5 (0.5 is twice as close). */
+  distance: number;
+}
+
+export const CAMERA_DEFAULTS: Readonly<Required<CameraOptions>> = Object.freeze({ yaw: 0, pitch: 0, distance: 1 });
+
+export const CAMERA_RANGES: Readonly<Record<keyof CameraOptions, readonly [number, number]>> = Object.freeze({
+  yaw: [-180, 180],
+  pitch: [-80, 80],
+  distance: [0.2, 5],
+});
+
 export const RENDER_DEFAULTS: Readonly<Required<RenderOptions>> = Object.freeze({ wireframe: false, showEyes: true, showTeeth: true });
 
 const COLOUR = /^#[0-9a-f]{6}$/i;
