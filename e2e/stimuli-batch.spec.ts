@@ -1,0 +1,80 @@
+import { execFile } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { promisify } from 'node:util';
+import { ISOLATED_PORT } from '../playwright.config';
+import { expect, test } from './fixtures';
+
+const run = promisify(execFile);
+
+/** Runs `npm run stimuli`'s renderer on the built app these tests serve; returns what it printed. */
+async function stimuli(list: string, out: string): Promise<string> {
+  const { stdout } = await run('npx', ['tsx', 'scripts/stimuli/run.ts', list, out], {
+    env: { ...process.env, STIMULI_BASE_URL: `http://127.0.0.1:${ISOLATED_PORT}` },
+    maxBuffer: 16 * 1024 * 1024,
+  });
+  return stdout;
+}
+
+/** Width and height from a PNG's header. */
+function pngSize(file: string): [number, number] {
+  const b = readFileSync(file);
+  return [b.readUInt32BE(16), b.readUInt32BE(20)];
+}
+
+test('a 4-stimulus batch writes its pictures and manifest, and a second run skips what is there', async ({ page }) => {
+  test.setTimeout(240_000);
+  const dir = mkdtempSync(join(tmpdir(), 'softface-stimuli-'));
+  const list = join(dir, 'list.json');
+  const out = join(dir, 'out');
+  writeFileSync(
+    list,
+    JSON.stringify({
+      format: 'softface-stimuli',
+      version: 1,
+      defaults: { resolution: 'low', width: 200, height: 150 },
+      stimuli: [{ name: 'smile', expression: { AU12: 1 }, intensity: [0.3, 1], camera: [{}, { yaw: 40, distance: 0.7 }] }],
+    }),
+  );
+  const first = await stimuli(list, out);
+  const files = ['smile_i0.3_l0_c0_low.png', 'smile_i0.3_l0_c1_low.png', 'smile_i1_l0_c0_low.png', 'smile_i1_l0_c1_low.png'];
+  for (const f of files) expect(first).toContain(`wrote ${f}`);
+  for (const f of files) expect(pngSize(join(out, f))).toEqual([200, 150]);
+  const manifest = readFileSync(join(out, 'manifest.csv'), 'utf8').trim().split('\n');
+  expect(manifest[0]).toBe('file,name,format,expression,timeline,intensity,light,camera,resolution,width,height,fps');
+  expect(manifest.slice(1).map((row) => row.split(',')[0])).toEqual(files);
+  expect(manifest[4]).toContain('"{""yaw"":40,""distance"":0.7}"');
+
+  // The pictures are of what the list asked: the stronger smile and the other camera each change the picture.
+  const differs = await page.evaluate(
+    async (pngs) => {
+      const pixels = async (data: string): Promise<Uint8ClampedArray> => {
+        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
+        const c = new OffscreenCanvas(image.width, image.height);
+        const ctx = c.getContext('2d')!;
+        ctx.drawImage(image, 0, 0);
+        return ctx.getImageData(0, 0, image.width, image.height).data;
+      };
+      const [weak, weakTurned, strong] = await Promise.all(pngs.map(pixels));
+      const mean = (a: Uint8ClampedArray, b: Uint8ClampedArray): number => {
+        let s = 0;
+        for (let i = 0; i < a.length; i++) s += Math.abs(a[i] - b[i]);
+        return s / a.length;
+      };
+      return { intensity: mean(weak, strong), camera: mean(weak, weakTurned) };
+    },
+    files.slice(0, 3).map((f) => readFileSync(join(out, f)).toString('base64')),
+  );
+  console.log(`mean pixel difference: intensity 0.3 vs 1 ${differs.intensity.toFixed(2)}, front vs turned ${differs.camera.toFixed(2)}`);
+  expect(differs.intensity).toBeGreaterThan(0.2);
+  expect(differs.camera).toBeGreaterThan(2);
+
+  // Run again: every file is there, so nothing is rendered and nothing is touched.
+  const times = files.map((f) => statSync(join(out, f)).mtimeMs);
+  const second = await stimuli(list, out);
+  expect(second).not.toContain('wrote ');
+  expect(second).toMatch(/4 skipped/);
+  expect(files.map((f) => statSync(join(out, f)).mtimeMs)).toEqual(times);
+  rmSync(dir, { recursive: true, force: true });
+});
