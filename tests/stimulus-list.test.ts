@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { expandStimulusList, scaleTimeline, stimulusManifest, StimulusListError } from '../scripts/stimuli/stimulus-list';
 
@@ -84,6 +85,22 @@ describe('stimulus lists', () => {
       'smile_i1_l0_c0_medium.png,smile,png,"{""AU12"":1}",no,1,{},{},medium,512,512,25',
       'smile_i1_l1_c0_medium.png,smile,png,"{""AU12"":1}",no,1,"{""keyColor"":""#ff0000"",""keyIntensity"":2}",{},medium,512,512,25',
       '',
+    ]);
+  });
+
+  it("the README's example list is a valid list: 4 smiles, 2 fears and a clip", () => {
+    const readme = readFileSync(new URL('../README.md', import.meta.url), 'utf8');
+    const section = readme.slice(readme.indexOf('## Stimulus batches'));
+    const json = section.slice(section.indexOf('```json') + 7, section.indexOf('```', section.indexOf('```json') + 7));
+    const stimuli = expandStimulusList(JSON.parse(json), 'README');
+    expect(stimuli.map((s) => s.file)).toEqual([
+      'smile_i0.5_l0_c0_medium.png',
+      'smile_i0.5_l0_c1_medium.png',
+      'smile_i1_l0_c0_medium.png',
+      'smile_i1_l0_c1_medium.png',
+      'fear_i1_l0_c0_low.png',
+      'fear_i1_l0_c0_high.png',
+      'surprise-clip_i1_l0_c0_medium.webm',
     ]);
   });
 });
