@@ -16,6 +16,7 @@ import type { Vec3 } from '../core/rig-types';
 import type { FaceExpression } from './face-expression';
 import type { Timeline } from '../core/timeline';
 import { parseTimeline, parseTimelineText } from '../core/timeline-schema';
+import { checkVideoOptions, type VideoOptions } from './video-options';
 
 /** The welded skin at one moment, in simulation vertex order. */
 export interface SkinSnapshot {
@@ -160,6 +161,13 @@ export interface FaceTimeline {
   state(): TimelineState;
 }
 
+/** The recorder the handle drives (VideoRecorder). */
+export interface FaceRecorder {
+  /** Records `seconds` with checked options. */
+  record(options: Required<VideoOptions>, seconds: number): Promise<Blob>;
+  recording(): boolean;
+}
+
 /** Told after every successful change made through the handle (panels refresh their sliders with it). */
 export type FaceChangeListener = (change: FaceChange) => void;
 
@@ -186,6 +194,7 @@ export class FaceHandle {
   private view: FaceView | undefined;
   private eyes: FaceEyes | undefined;
   private player: FaceTimeline | undefined;
+  private recorder: FaceRecorder | undefined;
   private muscles: FaceMuscles | undefined;
   private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
   /**
@@ -256,6 +265,14 @@ export class FaceHandle {
    */
   attachTimeline(player: FaceTimeline): void {
     this.player = player;
+  }
+
+  /**
+   * Connects the recorder that `recordVideo` drives (one per shown head).
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachRecorder(recorder: FaceRecorder): void {
+    this.recorder = recorder;
   }
 
   /**
@@ -736,6 +753,31 @@ export class FaceHandle {
   /** The eye simulation's blink and saccade counts and the gaze now. */
   eyeStats(): EyeStats {
     return this.eyeSimulation().stats();
+  }
+
+  /**
+   * Records the timeline frame by frame (see the README's "Video"): a WebM video (VP9, else VP8) or a zip of PNG
+   * frames of `width` x `height`, `fps` frames a second, for `seconds` or the timeline's duration. `timeline` loads
+   * one first, as `setTimeline` does. The solver runs a fixed number of frames per video frame, so a slow machine
+   * records the same video as a fast one; the eye simulation is off meanwhile. Bad options reject naming the option
+   * and change nothing; aborting `signal` stops the recording, which then rejects with the signal's reason.
+   */
+  async recordVideo(options: VideoOptions = {}): Promise<Blob> {
+    const o = checkVideoOptions(options);
+    const player = this.timelinePlayer();
+    if (!this.recorder) throw new Error('recordVideo: the face is not ready yet: await face.ready first');
+    if (this.recorder.recording()) throw new Error('recordVideo: a recording is already running');
+    if (o.timeline === null && o.seconds === 0 && !player.timeline()) {
+      throw new Error('recordVideo: seconds: give a length in seconds, or a timeline to record (the timeline option, or setTimeline first)');
+    }
+    o.signal?.throwIfAborted();
+    if (o.timeline !== null) this.setTimeline(o.timeline, 'recordVideo: timeline');
+    return this.recorder.record(o, o.seconds > 0 ? o.seconds : player.state().duration);
+  }
+
+  /** Whether a recording is running. */
+  isRecording(): boolean {
+    return this.recorder?.recording() ?? false;
   }
 
   /** A PNG of the canvas, rendered just before it is read. */
