@@ -252,3 +252,21 @@ test.describe('the Video panel', () => {
     expect(after).toEqual({ recording: false, au12: 0.5, size: [640, 480] });
   });
 });
+
+test('the three solver modes record the same frames', async ({ page }) => {
+  test.setTimeout(120_000);
+  const zips: Record<string, string> = {};
+  for (const mode of ['shared', 'transfer', 'main']) {
+    await openFace(page, `/?resolution=low&solver=${mode}`);
+    const recorded = await page.evaluate(async (timeline) => {
+      const zip = await window.face.recordVideo({ timeline, fps: 10, width: 320, height: 240, seconds: 1, format: 'png-zip' });
+      const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', await zip.arrayBuffer()));
+      return { mode: window.face.stats().mode, hash: Array.from(digest, (b) => b.toString(16).padStart(2, '0')).join(''), size: zip.size };
+    }, SMILE);
+    expect(recorded.mode).toBe(mode);
+    expect(recorded.size).toBeGreaterThan(10 * 10_000);
+    zips[mode] = recorded.hash;
+  }
+  expect(zips.transfer).toBe(zips.shared);
+  expect(zips.main).toBe(zips.shared);
+});
