@@ -1,5 +1,3 @@
-import { Zip, ZipPassThrough } from 'fflate';
-import { BufferTarget, EncodedPacket, EncodedVideoPacketSource, Output, WebMOutputFormat } from 'mediabunny';
 import type { HeadView, ViewCapture } from '../render/head-view';
 import type { SkinView } from '../render/skin-view';
 import type { SkinSimulation } from '../worker/skin-simulation';
@@ -21,17 +19,6 @@ export interface VideoRecorderParts {
 const START_FRAMES = 2000;
 /** How long the skin may take to come back to rest before a recording, in ms. */
 const REST_TIMEOUT_MS = 60_000;
-/** A key frame every this many seconds, so that a player can seek. */
-const KEY_FRAME_SECONDS = 2;
-/** Frames the encoder may hold before the recorder waits for it. */
-const ENCODE_QUEUE = 4;
-/** The date the zip gives its files (the earliest a zip can hold). */
-const ZIP_DATE = new Date(1980, 0, 1);
-/** VP9 profile 0, level 5.1 (up to 4096 x 2176), 8 bits; VP8 has no profiles to name. */
-const CODECS = [
-  { name: 'vp9', codec: 'vp09.00.51.08' },
-  { name: 'vp8', codec: 'vp8' },
-] as const;
 
 /**
  * Records a face frame by frame on a video clock: for video frame i it sets the timeline's values at i / fps, has
@@ -57,17 +44,18 @@ export class VideoRecorder {
     const before = handle.timelineState();
     const eyes = handle.getEyeSimulation();
     let capture: ViewCapture | undefined;
-    let stepped = false;
     try {
-      if (before.loaded) handle.pause();
-      // Blinks and saccades are random and on the page's clock: they stay out of the video.
-      if (eyes) handle.setEyeSimulation(false);
-      capture = view.capture(o.width, o.height);
-      await this.start(before.loaded);
-      stepped = true;
-      const frames = videoFrameCount(seconds, o.fps);
+      // The encoders load with the first recording (a page that never records does not fetch them); a browser that
+      // cannot encode refuses before the face is touched.
+      const { webmSink, pngZipSink } = await import('./video-sinks');
       const sink = o.format === 'webm' ? await webmSink(o) : pngZipSink();
       try {
+        if (before.loaded) handle.pause();
+        // Blinks and saccades are random and on the page's clock: they stay out of the video.
+        if (eyes) handle.setEyeSimulation(false);
+        capture = view.capture(o.width, o.height);
+        await this.start(before.loaded);
+        const frames = videoFrameCount(seconds, o.fps);
         for (let i = 0; i < frames; i++) {
           o.signal?.throwIfAborted();
           if (before.loaded) handle.seek(i / o.fps);
@@ -86,7 +74,8 @@ export class VideoRecorder {
     } finally {
       this.busy = false;
       if (!handle.isDisposed()) {
-        if (stepped) simulation.setClock('free');
+        // A head loaded meanwhile took this simulation away with the old head; the new one runs free already.
+        if (!simulation.isDisposed()) simulation.setClock('free');
         capture?.dispose();
         if (eyes) handle.setEyeSimulation(true);
         if (before.loaded) {
@@ -120,101 +109,3 @@ export class VideoRecorder {
   }
 }
 
-/** Where the pictures go: a WebM encoder and muxer, or a zip of PNGs. */
-interface FrameSink {
-  add(canvas: HTMLCanvasElement, index: number, fps: number): Promise<void>;
-  finish(): Promise<Blob>;
-  /** Frees what the sink holds after a failure or a cancel. */
-  cancel(): void;
-}
-
-/** The first of VP9 and VP8 this browser encodes at the options' size, rate and bitrate. */
-async function encoderConfig(o: Required<VideoOptions>): Promise<{ name: 'vp9' | 'vp8'; config: VideoEncoderConfig }> {
-  if (typeof VideoEncoder === 'undefined') throw new Error('recordVideo: this browser has no WebCodecs VideoEncoder; record a PNG zip instead');
-  for (const { name, codec } of CODECS) {
-    const config: VideoEncoderConfig = {
-      codec,
-      width: o.width,
-      height: o.height,
-      bitrate: o.bitrate,
-      framerate: o.fps,
-      hardwareAcceleration: 'no-preference',
-      latencyMode: 'quality',
-    };
-    const support = await VideoEncoder.isConfigSupported(config);
-    if (support.supported) return { name, config };
-  }
-  throw new Error(`recordVideo: this browser cannot encode VP9 or VP8 at ${o.width} x ${o.height}; record a PNG zip instead`);
-}
-
-/** Encodes with WebCodecs and muxes the packets into a WebM file in memory. */
-async function webmSink(o: Required<VideoOptions>): Promise<FrameSink> {
-  const { name, config } = await encoderConfig(o);
-  const output = new Output({ format: new WebMOutputFormat(), target: new BufferTarget() });
-  const source = new EncodedVideoPacketSource(name);
-  output.addVideoTrack(source, { frameRate: o.fps });
-  await output.start();
-  let failure: Error | undefined;
-  // The muxer takes packets one at a time, in order.
-  let muxed = Promise.resolve();
-  const encoder = new VideoEncoder({
-    output: (chunk, meta) => {
-      muxed = muxed.then(() => source.add(EncodedPacket.fromEncodedChunk(chunk), meta)).catch((error: unknown) => {
-        failure ??= error instanceof Error ? error : new Error(String(error));
-      });
-    },
-    error: (error) => (failure ??= error),
-  });
-  encoder.configure(config);
-  const keyEvery = Math.max(1, Math.round(KEY_FRAME_SECONDS * o.fps));
-  return {
-    async add(canvas, index, fps) {
-      if (failure) throw failure;
-      const frame = new VideoFrame(canvas, { timestamp: Math.round((index * 1e6) / fps), duration: Math.round(1e6 / fps) });
-      encoder.encode(frame, { keyFrame: index % keyEvery === 0 });
-      frame.close();
-      while (encoder.encodeQueueSize > ENCODE_QUEUE && !failure) await new Promise((resolve) => encoder.addEventListener('dequeue', resolve, { once: true }));
-    },
-    async finish() {
-      await encoder.flush();
-      encoder.close();
-      await muxed;
-      if (failure) throw failure;
-      await output.finalize();
-      return new Blob([output.target.buffer!], { type: 'video/webm' });
-    },
-    cancel() {
-      if (encoder.state !== 'closed') encoder.close();
-      void output.cancel();
-    },
-  };
-}
-
-/** Encodes each picture as a PNG and stores it (PNGs are compressed already) in a zip, `frame-00000.png` on. */
-function pngZipSink(): FrameSink {
-  const chunks: Uint8Array[] = [];
-  let failure: Error | undefined;
-  const zip = new Zip((error, chunk) => {
-    if (error) failure ??= error;
-    else chunks.push(chunk);
-  });
-  return {
-    async add(canvas, index) {
-      if (failure) throw failure;
-      const png = await new Promise<Blob>((resolve, reject) => canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('recordVideo: a frame could not be encoded as a PNG'))), 'image/png'));
-      const file = new ZipPassThrough(`frame-${String(index).padStart(5, '0')}.png`);
-      // A fixed date: the same recording gives the same file.
-      file.mtime = ZIP_DATE;
-      zip.add(file);
-      file.push(new Uint8Array(await png.arrayBuffer()), true);
-    },
-    async finish() {
-      zip.end();
-      if (failure) throw failure;
-      return new Blob(chunks as BlobPart[], { type: 'application/zip' });
-    },
-    cancel() {
-      zip.terminate();
-    },
-  };
-}

@@ -294,6 +294,11 @@ export class SkinSimulation {
     };
   }
 
+  /** Whether `dispose` was called. */
+  isDisposed(): boolean {
+    return this.disposed;
+  }
+
   /** Stops the solver (terminating its worker) and removes every listener. */
   dispose(): void {
     if (this.disposed) return;
