@@ -1,6 +1,6 @@
 /**
  * The skin worker: builds the topology and the solver, then solves a frame whenever the skin is awake and waits for
- * inputs while it sleeps. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
+ * inputs while it sleeps; on the stepped clock (a recorder's) it solves only the frames each `run` message asks for. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
 import { createBoard, PartnerTimeoutError } from '../core/partner-board';
