@@ -115,11 +115,15 @@ test('record video: 2 s at 10 fps decode to 20 frames from the neutral face, the
     const started = performance.now();
     const first = await face.recordVideo({ timeline, fps: 10, width: 320, height: 240, onProgress: (f) => progress.push(f) });
     const firstMs = performance.now() - started;
-    // The page goes on between the recordings: the timeline plays on its own clock, as a user might let it.
+    // The page goes on between the recordings: the timeline plays on its own clock, as a user might let it, and the
+    // eyes blink and look around (random, and kept out of the video).
     face.play();
+    face.setEyeSimulation(true);
     await new Promise((resolve) => setTimeout(resolve, 700));
     const second = await face.recordVideo({ fps: 10, width: 320, height: 240, seconds: 2 });
     return {
+      eyesAfter: face.getEyeSimulation(),
+      playingAfter: face.timelineState().playing,
       mode: face.stats().mode,
       type: first.type,
       canvas: [document.querySelector('#viewport canvas')!.clientWidth, (document.querySelector('#viewport canvas') as HTMLCanvasElement).width],
@@ -133,6 +137,9 @@ test('record video: 2 s at 10 fps decode to 20 frames from the neutral face, the
   }, SMILE);
   console.log(`recorded 20 frames in ${Math.round(recorded.firstMs)} ms, ${recorded.size} bytes, solver mode ${recorded.mode}`);
   expect(recorded.mode).toBe('shared');
+  // What the recording switched off or paused runs again.
+  expect(recorded.eyesAfter).toBe(true);
+  expect(recorded.playingAfter).toBe(true);
   expect(recorded.type).toBe('video/webm');
   // The canvas is its own size again after the recording.
   expect(recorded.canvas).toEqual([320, 320]);
