@@ -214,6 +214,9 @@ export class ActiveRegion {
 
   /** Empties the region: every vertex in it or next to it goes exactly to rest, normals too. */
   clear(x: Float32Array, normals: Float32Array): void {
+    // The shrink period starts over too: skin back at rest then moves the same whatever moved it before (a recorder
+    // relies on that to give the same frames twice).
+    this.frame = 0;
     if (!this.enabled || (this.count === 0 && this.ringCount === 0)) return;
     const X = this.topology.rest;
     for (let k = 0; k < this.count; k++) setRest(x, X, 3 * this.vertices[k]);

@@ -538,15 +538,18 @@ export class SkinSolver {
     if (r.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, r.shaded, this.shadedPlaces, null);
     this.listedRevision = this.region.revision;
     if (this.region.enabled) {
-      // Skin outside the region is at rest and does not move: its last step is zero and its previous place rest, so
-      // that a vertex joining within a frame (see settleRegion) starts from there.
+      // Skin outside the region is at rest and does not move: its last step is zero, its previous place rest and it
+      // has no turn to remember, so that a vertex joining within a frame (see settleRegion) starts from there, as it
+      // would had it never been in the region.
       const inside = this.region.inside;
       const last = this.lastStep;
       const prev = this.previous;
+      const restart = this.restart;
       const X = this.topology.rest;
       for (let v = 0; v < inside.length; v++) {
         if (inside[v]) continue;
         const i = 3 * v;
+        restart[v] = 0;
         last[i] = last[i + 1] = last[i + 2] = 0;
         prev[i] = X[i];
         prev[i + 1] = X[i + 1];

@@ -16,6 +16,7 @@ import type { SolverMode } from '../worker/protocol';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { EyeDriver } from './eye-driver';
 import { TimelinePlayer } from './timeline-player';
+import { VideoRecorder } from './video-recorder';
 import { FaceEditor } from './face-editor';
 import { RigAutosave } from './rig-autosave';
 import { RigBinding } from './rig-binding';
@@ -401,6 +402,7 @@ export class EmbeddedFace {
     const eyes = new EyeDriver(this.handle, this.view, head.eyes, { simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 } });
     own.push(() => eyes.dispose());
     this.handle.attachEyes(eyes);
+    this.handle.attachRecorder(new VideoRecorder({ handle: this.handle, simulation, view: this.view, skin: skinView }));
     this.mounted = own;
     const frame = prepared?.frame;
     this.head = {

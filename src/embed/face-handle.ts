@@ -19,6 +19,7 @@ import { parseTimeline, parseTimelineText } from '../core/timeline-schema';
 import { planTargets, timelineWeights } from '../core/morph-export';
 import type { HeadWriteOptions, JawPose, MorphClip, MorphShape } from '../render/gltf-export';
 import { checkExportOptions, type GLTFExportOptions } from './gltf-export-options';
+import { checkVideoOptions, type VideoOptions } from './video-options';
 
 /** The welded skin at one moment, in simulation vertex order. */
 export interface SkinSnapshot {
@@ -171,6 +172,13 @@ export interface FaceGLTFWriter {
   write(shapes: readonly MorphShape[], clip: MorphClip | null, options: HeadWriteOptions): Promise<ArrayBuffer | Record<string, unknown>>;
 }
 
+/** The recorder the handle drives (VideoRecorder). */
+export interface FaceRecorder {
+  /** Records `seconds` with checked options. */
+  record(options: Required<VideoOptions>, seconds: number): Promise<Blob>;
+  recording(): boolean;
+}
+
 /** Told after every successful change made through the handle (panels refresh their sliders with it). */
 export type FaceChangeListener = (change: FaceChange) => void;
 
@@ -203,6 +211,7 @@ export class FaceHandle {
   private gltfWriter: FaceGLTFWriter | undefined;
   /** Whether `exportGLTF` is solving its targets (one export at a time: each moves the face). */
   private exporting = false;
+  private recorder: FaceRecorder | undefined;
   private muscles: FaceMuscles | undefined;
   private muscleDisplay: MuscleDisplay = { all: false, actionUnits: [] };
   /**
@@ -281,6 +290,14 @@ export class FaceHandle {
    */
   attachGLTFWriter(writer: FaceGLTFWriter): void {
     this.gltfWriter = writer;
+  }
+
+  /**
+   * Connects the recorder that `recordVideo` drives (one per shown head).
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachRecorder(recorder: FaceRecorder): void {
+    this.recorder = recorder;
   }
 
   /**
@@ -783,6 +800,31 @@ export class FaceHandle {
   /** The eye simulation's blink and saccade counts and the gaze now. */
   eyeStats(): EyeStats {
     return this.eyeSimulation().stats();
+  }
+
+  /**
+   * Records the timeline frame by frame (see the README's "Video"): a WebM video (VP9, else VP8) or a zip of PNG
+   * frames of `width` x `height`, `fps` frames a second, for `seconds` or the timeline's duration. `timeline` loads
+   * one first, as `setTimeline` does. The solver runs a fixed number of frames per video frame, so a slow machine
+   * records the same video as a fast one; the eye simulation is off meanwhile. Bad options reject naming the option
+   * and change nothing; aborting `signal` stops the recording, which then rejects with the signal's reason.
+   */
+  async recordVideo(options: VideoOptions = {}): Promise<Blob> {
+    const o = checkVideoOptions(options);
+    const player = this.timelinePlayer();
+    if (!this.recorder) throw new Error('recordVideo: the face is not ready yet: await face.ready first');
+    if (this.recorder.recording()) throw new Error('recordVideo: a recording is already running');
+    if (o.timeline === null && o.seconds === 0 && !player.timeline()) {
+      throw new Error('recordVideo: seconds: give a length in seconds, or a timeline to record (the timeline option, or setTimeline first)');
+    }
+    o.signal?.throwIfAborted();
+    if (o.timeline !== null) this.setTimeline(o.timeline, 'recordVideo: timeline');
+    return this.recorder.record(o, o.seconds > 0 ? o.seconds : player.state().duration);
+  }
+
+  /** Whether a recording is running. */
+  isRecording(): boolean {
+    return this.recorder?.recording() ?? false;
   }
 
   /** A PNG of the canvas, rendered just before it is read. */

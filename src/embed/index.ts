@@ -11,5 +11,6 @@ export type { SkinParameters } from '../core/solver';
 export type { Rig } from '../core/rig-types';
 export type { RenderTiming } from '../render/head-view';
 export type { CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
+export { VIDEO_DEFAULTS, type VideoFormat, type VideoOptions } from './video-options';
 export type { HeadDescription, HeadFile, HeadSource, LoadHeadOptions } from './head-loader';
 export { LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/landmarks';

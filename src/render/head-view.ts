@@ -64,6 +64,19 @@ export interface RenderTiming {
   textures: number;
 }
 
+/** A fixed-size rendering of the view for a recorder: the render loop holds until `dispose`. */
+export interface ViewCapture {
+  /** The canvas, `width` x `height` pixels while the capture lasts. */
+  readonly canvas: HTMLCanvasElement;
+  /** Renders the scene as it is now. */
+  render(): void;
+  /** Gives the canvas its own size back and lets the render loop run again. */
+  dispose(): void;
+}
+
+/** Camera updates a capture allows for the orbit controls' damping to come to rest before the first picture. */
+const MAX_DAMPING_UPDATES = 10_000;
+
 /** How far the key light sits from the head's centre, in metres (a directional light: only its direction counts). */
 const KEY_DISTANCE = 1.3;
 /**
@@ -109,6 +122,8 @@ export class HeadView {
    */
   private inView = false;
   private readonly viewObserver: IntersectionObserver;
+  /** Set while a capture holds the canvas at its own size: the render loop and resizes wait. */
+  private capturing = false;
 
   constructor(
     private readonly container: HTMLElement,
@@ -235,11 +250,42 @@ export class HeadView {
     return remover(this.renderHooks, hook);
   }
 
+  /**
+   * Holds the render loop (no frame hooks, no drawing) and sizes the canvas to `width` x `height` pixels, for a
+   * recorder that renders each picture itself. The camera's damping comes to rest first, so that no motion left from
+   * a drag reaches the pictures. Throws if a capture is already running.
+   */
+  capture(width: number, height: number): ViewCapture {
+    if (this.capturing) throw new Error('the view is already being captured');
+    this.capturing = true;
+    for (let i = 0; i < MAX_DAMPING_UPDATES && this.controls.update(); i++);
+    const renderer = this.renderer;
+    const pixelRatio = renderer.getPixelRatio();
+    renderer.setPixelRatio(1);
+    renderer.setSize(width, height, false);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    let done = false;
+    return {
+      canvas: renderer.domElement,
+      render: () => {
+        if (!done) this.renderFrame();
+      },
+      dispose: () => {
+        if (done) return;
+        done = true;
+        this.capturing = false;
+        renderer.setPixelRatio(pixelRatio);
+        this.resize();
+      },
+    };
+  }
+
   /** Starts the render loop. */
   start(): void {
     const loop = (now: number): void => {
       this.frame = requestAnimationFrame(loop);
-      if (!this.inView) return;
+      if (!this.inView || this.capturing) return;
       let changed = this.drawFrames > 0 || performance.now() < this.drawUntil;
       for (let i = 0; i < this.frameHooks.length; i++) if (this.frameHooks[i](now) === true) changed = true;
       // True while the camera moves: a drag, or the damping after one.
@@ -437,6 +483,8 @@ export class HeadView {
   }
 
   private resize(): void {
+    // A capture sizes the canvas itself and calls this again once it ends.
+    if (this.capturing) return;
     const w = Math.max(1, this.container.clientWidth);
     const h = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(w, h, false);

@@ -9,6 +9,7 @@ import { OutputsPanel, type FrameSource } from './outputs-panel';
 import { PresetsPanel } from './presets-panel';
 import { RenderingPanel } from './rendering-panel';
 import { TimelinePanel } from './timeline-panel';
+import { VideoPanel } from './video-panel';
 import type { Resolution } from '../embed/face-options';
 
 export interface PanelsOptions {
@@ -37,6 +38,7 @@ export class Panels {
   readonly gui: GUI;
   readonly presets: PresetsPanel;
   readonly timeline: TimelinePanel;
+  readonly video: VideoPanel;
   readonly rendering: RenderingPanel;
   readonly light: LightPanel;
   readonly outputs: OutputsPanel;
@@ -58,6 +60,7 @@ export class Panels {
     this.gui.domElement.classList.add(PANELS_CLASS);
     this.presets = new PresetsPanel(this.gui, face);
     this.timeline = new TimelinePanel(this.gui, face);
+    this.video = new VideoPanel(this.timeline.folder, face);
     this.rendering = new RenderingPanel(this.gui, face, { resolution: o.resolution, onResolution: o.onResolution });
     this.light = new LightPanel(this.gui, face);
     this.editor = new EditorPanel(this.gui, face, o.container);
@@ -83,6 +86,7 @@ export class Panels {
     this.editor.dispose();
     this.light.dispose();
     this.rendering.dispose();
+    this.video.dispose();
     this.timeline.dispose();
     this.presets.dispose();
     this.gui.destroy();

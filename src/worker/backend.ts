@@ -1,6 +1,6 @@
 import type { ChangedInputs } from './input-staging';
 import type { FrameSlot } from './layout';
-import type { RigEdit, SolverMode } from './protocol';
+import type { RigEdit, SolverClock, SolverMode } from './protocol';
 
 /** How SkinSimulation reaches a solver: where it runs, how inputs get there and how frames come back. */
 export interface SolverBackend {
@@ -13,6 +13,13 @@ export interface SolverBackend {
   editRig(revision: number, edit: RigEdit): void;
   /** Solves on the calling thread for up to `budgetMs` (`main` mode); the worker modes do nothing here. */
   advance(budgetMs: number): void;
+  /** Paces the solver: `free` solves while the skin is awake, `stepped` only the frames `run` asks for. */
+  setClock(clock: SolverClock): void;
+  /**
+   * Once input batch `seq` is applied, solves `frames` frames (fewer if the skin falls asleep) and makes the last one
+   * the newest; resolves to the frames solved since creation.
+   */
+  run(seq: number, frames: number): Promise<number>;
   /** Why the solver stopped, if it failed. */
   failure(): Error | undefined;
   dispose(): void;

@@ -1,7 +1,7 @@
 import type { SolverBackend } from './backend';
 import { ControlReader } from './control-reader';
 import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
-import type { RigEdit } from './protocol';
+import type { RigEdit, SolverClock } from './protocol';
 import type { SolverHost } from './solver-host';
 
 /**
@@ -12,6 +12,7 @@ export class MainBackend implements SolverBackend {
   readonly mode = 'main';
   private readonly reader: ControlReader;
   private readonly slot: FrameSlot;
+  private stepped = false;
 
   constructor(
     private readonly host: SolverHost,
@@ -37,6 +38,7 @@ export class MainBackend implements SolverBackend {
 
   /** Applies new inputs, then solves frames until the budget is spent or the skin sleeps; at least one if awake. */
   advance(budgetMs: number): void {
+    if (this.stepped) return;
     this.reader.poll();
     const start = performance.now();
     let solved = false;
@@ -45,6 +47,18 @@ export class MainBackend implements SolverBackend {
       if (performance.now() - start >= budgetMs) break;
     }
     if (solved) this.host.writeFrame(this.slot);
+  }
+
+  setClock(clock: SolverClock): void {
+    this.stepped = clock === 'stepped';
+  }
+
+  /** Solves on this thread at once: the inputs were published just before, in this same task. */
+  run(seq: number, frames: number): Promise<number> {
+    this.reader.poll();
+    if (this.host.appliedInput < seq) return Promise.reject(new Error(`run: input batch ${seq} was not published whole`));
+    if (this.host.run(frames) > 0) this.host.writeFrame(this.slot);
+    return Promise.resolve(this.host.solver.frames);
   }
 
   failure(): Error | undefined {

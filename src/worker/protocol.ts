@@ -65,11 +65,41 @@ export interface FrameMessage {
   buffer: ArrayBuffer;
 }
 
+/**
+ * Main to worker: how the solver's frames are paced. `free` (the default) solves whenever the skin is awake;
+ * `stepped` solves only the frames a `run` asks for, so a recorder gets the same frames however fast the machine is.
+ */
+export interface ClockMessage {
+  type: 'clock';
+  clock: SolverClock;
+}
+
+/** How the solver's frames are paced (see ClockMessage). */
+export type SolverClock = 'free' | 'stepped';
+
+/**
+ * Main to worker: once input batch `seq` is applied, solve `frames` frames (fewer if the skin falls asleep, which
+ * changes nothing more), publish the last and answer with a `ran` message of the same `id`.
+ */
+export interface RunMessage {
+  type: 'run';
+  id: number;
+  seq: number;
+  frames: number;
+}
+
+/** Worker to main: run `id` is done and its last frame published; `frames` counts the frames solved since creation. */
+export interface RanMessage {
+  type: 'ran';
+  id: number;
+  frames: number;
+}
+
 /** Worker to main: the solver failed. */
 export interface ErrorMessage {
   type: 'error';
   message: string;
 }
 
-export type ToWorker = InitMessage | InputsMessage | FrameMessage | RigMessage;
-export type FromWorker = ReadyMessage | FrameMessage | ErrorMessage;
+export type ToWorker = InitMessage | InputsMessage | FrameMessage | RigMessage | ClockMessage | RunMessage;
+export type FromWorker = ReadyMessage | FrameMessage | ErrorMessage | RanMessage;

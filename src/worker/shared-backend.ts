@@ -1,6 +1,6 @@
 import type { SolverBackend } from './backend';
 import { OUTPUT_COMPLETED_SLOT, OUTPUT_FRAME_SEQ, frameSlot, outputHeader, slotByteOffset, type FrameSlot, type SlotLayout } from './layout';
-import type { RigEdit } from './protocol';
+import type { RigEdit, SolverClock } from './protocol';
 import type { WorkerConnection } from './worker-connection';
 
 /** Tries to copy a frame this many times when the worker keeps publishing during the copy, then keeps the last. */
@@ -46,6 +46,14 @@ export class SharedBackend implements SolverBackend {
   }
 
   advance(): void {}
+
+  setClock(clock: SolverClock): void {
+    this.connection.post({ type: 'clock', clock });
+  }
+
+  run(seq: number, frames: number): Promise<number> {
+    return this.connection.run(seq, frames);
+  }
 
   failure(): Error | undefined {
     return this.connection.failure();

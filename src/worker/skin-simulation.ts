@@ -20,7 +20,7 @@ import {
   type ControlViews,
 } from './layout';
 import { MainBackend } from './main-backend';
-import type { RigEdit, SolverMode } from './protocol';
+import type { RigEdit, SolverClock, SolverMode } from './protocol';
 import { SharedBackend } from './shared-backend';
 import { SolverHost } from './solver-host';
 import { TransferBackend } from './transfer-backend';
@@ -231,6 +231,28 @@ export class SkinSimulation {
   }
 
   /**
+   * Paces the solver: `free` (the default) solves whenever the skin is awake; `stepped` solves only the frames
+   * `runFrames` asks for, whatever the machine's speed (a recorder's clock). `settle` needs the free clock.
+   */
+  setClock(clock: SolverClock): void {
+    this.checkAlive();
+    if (clock !== 'free' && clock !== 'stepped') throw new Error(`setClock: expected 'free' or 'stepped', got ${String(clock)}`);
+    this.backend.setClock(clock);
+  }
+
+  /**
+   * Publishes the inputs given so far, then solves exactly `frames` frames from them (fewer if the skin falls asleep,
+   * which would change nothing more) and makes the last one the newest frame; resolves to the frames solved since
+   * the solver started. Meant for the `stepped` clock, under which nothing else solves.
+   */
+  async runFrames(frames: number): Promise<number> {
+    this.checkAlive();
+    if (!Number.isInteger(frames) || frames < 0) throw new Error(`runFrames: expected a whole number of frames, got ${String(frames)}`);
+    this.staging.flush();
+    return this.backend.run(this.staging.publishedSeq(), frames);
+  }
+
+  /**
    * Copies the newest complete frame in render-vertex order (xyz per render vertex) and its bounds into `bounds`.
    * Returns false, copying nothing, if that frame was read already. Allocates nothing.
    */
@@ -281,6 +303,11 @@ export class SkinSimulation {
       frames: slotFrames(slot),
       workers: slotWorkers(slot),
     };
+  }
+
+  /** Whether `dispose` was called. */
+  isDisposed(): boolean {
+    return this.disposed;
   }
 
   /** Stops the solver (terminating its worker) and removes every listener. */

@@ -1,13 +1,13 @@
 /**
  * The skin worker: builds the topology and the solver, then solves a frame whenever the skin is awake and waits for
- * inputs while it sleeps. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
+ * inputs while it sleeps; on the stepped clock (a recorder's) it solves only the frames each `run` message asks for. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
 import { createBoard, PartnerTimeoutError } from '../core/partner-board';
 import { PartnerLink } from '../core/partner-link';
 import { ControlReader } from './control-reader';
 import { contractionCapacity, controlLayout, controlViews, initControl, slotLayout } from './layout';
-import type { FromWorker, InitMessage, ToWorker } from './protocol';
+import type { FromWorker, InitMessage, RunMessage, ToWorker } from './protocol';
 import { SharedOutput } from './shared-output';
 import { SolverHost } from './solver-host';
 import { spawnPartnerWorker } from './spawn-partner-worker';
@@ -26,6 +26,8 @@ let transferOutput: TransferOutput | undefined;
 // handled between frames.
 const channel = new MessageChannel();
 let scheduled = false;
+/** `stepped` clock: the worker solves only the frames `run` messages ask for (see ClockMessage). */
+let stepped = false;
 /** The partner worker, while one takes half of the passes. */
 let partnerWorker: Worker | undefined;
 channel.port1.onmessage = tick;
@@ -42,6 +44,10 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
       host?.editRig(m.revision, m.edit);
       schedule();
     } else if (m.type === 'frame-buffer') transferOutput?.giveBack(m.buffer);
+    else if (m.type === 'clock') {
+      stepped = m.clock === 'stepped';
+      schedule();
+    } else if (m.type === 'run') run(m);
   } catch (error) {
     failed(error);
   }
@@ -99,7 +105,8 @@ function schedule(): void {
 /** One turn: apply new inputs, solve a frame if awake and publish it, else wait for inputs. */
 function tick(): void {
   scheduled = false;
-  if (!host) return;
+  // A stepped clock solves in `run` alone; inputs wait there too, so that they land before the frames that follow.
+  if (!host || stepped) return;
   try {
     reader?.poll();
     if (host.step()) {
@@ -110,6 +117,30 @@ function tick(): void {
       // `transfer` mode: the next inputs message schedules the next turn.
       reader?.waitForInput(schedule);
     }
+  } catch (error) {
+    failed(error);
+  }
+}
+
+/**
+ * Solves the frames a run asks for, once its input batch is applied. In `shared` mode the batch is read from the
+ * control block, which the main thread may be writing again: the run then waits a turn and reads it again.
+ */
+function run(m: RunMessage): void {
+  const h = host;
+  if (!h) return;
+  try {
+    reader?.poll();
+    if (h.appliedInput < m.seq) {
+      setTimeout(() => run(m), 0);
+      return;
+    }
+    h.run(m.frames);
+    sharedOutput?.publish(h);
+    const ran = (): void => post({ type: 'ran', id: m.id, frames: h.solver.frames });
+    // `transfer` mode: the frame goes first (perhaps once a slot comes back), so it has arrived when `ran` does.
+    if (transferOutput) transferOutput.publish(ran);
+    else ran();
   } catch (error) {
     failed(error);
   }

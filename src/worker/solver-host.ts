@@ -116,6 +116,18 @@ export class SolverHost {
     this.countConstraints();
   }
 
+  /** The input batch applied last (its sequence number). */
+  get appliedInput(): number {
+    return this.header.appliedInput;
+  }
+
+  /** Solves up to `frames` frames, stopping early once the solver sleeps; returns how many it solved. */
+  run(frames: number): number {
+    let solved = 0;
+    while (solved < frames && this.step()) solved++;
+    return solved;
+  }
+
   /** Solves one frame unless the solver sleeps; returns whether it solved. */
   step(): boolean {
     const start = performance.now();

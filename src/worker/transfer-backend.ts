@@ -1,7 +1,7 @@
 import type { SolverBackend } from './backend';
 import type { ChangedInputs } from './input-staging';
 import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
-import type { RigEdit } from './protocol';
+import type { RigEdit, SolverClock } from './protocol';
 import type { WorkerConnection } from './worker-connection';
 
 /**
@@ -41,6 +41,14 @@ export class TransferBackend implements SolverBackend {
   }
 
   advance(): void {}
+
+  setClock(clock: SolverClock): void {
+    this.connection.post({ type: 'clock', clock });
+  }
+
+  run(seq: number, frames: number): Promise<number> {
+    return this.connection.run(seq, frames);
+  }
 
   failure(): Error | undefined {
     return this.connection.failure();

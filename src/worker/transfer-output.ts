@@ -8,6 +8,8 @@ import type { SolverHost } from './solver-host';
 export class TransferOutput {
   private readonly free: FrameSlot[] = [];
   private waiting = false;
+  /** Called once the frame waiting for a slot is sent. */
+  private sent: (() => void) | undefined;
 
   constructor(
     private readonly layout: SlotLayout,
@@ -24,8 +26,9 @@ export class TransferOutput {
     return slot.buffer as ArrayBuffer;
   }
 
-  /** Sends the current frame, or sends it once a slot comes back. */
-  publish(): void {
+  /** Sends the current frame, or sends it once a slot comes back; then calls `sent`, if given. */
+  publish(sent?: () => void): void {
+    if (sent) this.sent = sent;
     const slot = this.free.pop();
     if (!slot) {
       this.waiting = true;
@@ -34,6 +37,9 @@ export class TransferOutput {
     this.waiting = false;
     this.host.writeFrame(slot);
     this.post(slot.buffer as ArrayBuffer);
+    const then = this.sent;
+    this.sent = undefined;
+    then?.();
   }
 
   /** Takes back a slot the main thread is done with. */

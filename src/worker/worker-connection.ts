@@ -6,9 +6,16 @@ export class WorkerConnection {
   /** Called with each frame buffer the worker sends (`transfer` mode). */
   onFrame: ((buffer: ArrayBuffer) => void) | undefined;
   private failed: Error | undefined;
+  /** Runs asked for and not answered yet, by id. */
+  private readonly runs = new Map<number, { resolve: (frames: number) => void; reject: (error: Error) => void }>();
+  private runId = 0;
   private readonly onMessage = (event: MessageEvent<FromWorker>): void => {
     const m = event.data;
     if (m.type === 'frame') this.onFrame?.(m.buffer);
+    else if (m.type === 'ran') {
+      this.runs.get(m.id)?.resolve(m.frames);
+      this.runs.delete(m.id);
+    }
     else if (m.type === 'error') this.fail(new Error(`the skin solver failed: ${m.message}`));
   };
   private readonly onError = (event: ErrorEvent): void => {
@@ -49,6 +56,16 @@ export class WorkerConnection {
     this.worker.postMessage(message, { transfer });
   }
 
+  /** Asks the worker for a run (see RunMessage); resolves to its frame count, rejects if the worker fails first. */
+  run(seq: number, frames: number): Promise<number> {
+    if (this.failed) return Promise.reject(this.failed);
+    const id = ++this.runId;
+    return new Promise((resolve, reject) => {
+      this.runs.set(id, { resolve, reject });
+      this.post({ type: 'run', id, seq, frames });
+    });
+  }
+
   failure(): Error | undefined {
     return this.failed;
   }
@@ -59,11 +76,18 @@ export class WorkerConnection {
     this.worker.removeEventListener('error', this.onError);
     this.onFrame = undefined;
     this.worker.terminate();
+    this.rejectRuns(new Error('the skin simulation was disposed'));
   }
 
   private fail(error: Error): void {
     if (this.failed) return;
     this.failed = error;
     console.error(error);
+    this.rejectRuns(error);
+  }
+
+  private rejectRuns(error: Error): void {
+    for (const run of this.runs.values()) run.reject(error);
+    this.runs.clear();
   }
 }

@@ -1,0 +1,90 @@
+/** The options of `face.recordVideo`, checked at the boundary. */
+
+/** What a recording is saved as: a WebM video (VP9, or VP8 where VP9 cannot be encoded) or a zip of PNG frames. */
+export type VideoFormat = 'webm' | 'png-zip';
+
+/** Options of `face.recordVideo`. */
+export interface VideoOptions {
+  /** Frames per second of the video, 1 to 120. */
+  fps?: number;
+  /** Size of the video in pixels: even, 16 to 4096. */
+  width?: number;
+  height?: number;
+  /** Length in seconds (up to 3600); 0 records the timeline's whole duration. */
+  seconds?: number;
+  /** A timeline document (JSON text or object) to load first, as `setTimeline` does; null records the loaded one. */
+  timeline?: string | object | null;
+  format?: VideoFormat;
+  /**
+   * Solver frames between two video frames, 1 to 100: the skin reaches 2 % of a step's final shape in 44 to 63
+   * frames (see the README's benchmark), so 6 lets it follow a 10 fps video about as it follows the live page, and a
+   * 30 fps video more closely.
+   */
+  solverFramesPerVideoFrame?: number;
+  /** Bits per second the WebM encoder aims at. */
+  bitrate?: number;
+  /** Aborting it stops the recording, which then rejects with the signal's reason. */
+  signal?: AbortSignal | null;
+  /** Told after each frame how much of the recording is done, 0 to 1. */
+  onProgress?: ((fraction: number) => void) | null;
+}
+
+export const VIDEO_DEFAULTS: Readonly<Required<VideoOptions>> = Object.freeze({
+  fps: 30,
+  width: 640,
+  height: 480,
+  seconds: 0,
+  timeline: null,
+  format: 'webm',
+  solverFramesPerVideoFrame: 6,
+  bitrate: 4_000_000,
+  signal: null,
+  onProgress: null,
+});
+
+/** The largest width or height a recording may have. */
+export const MAX_VIDEO_SIZE = 4096;
+/** The longest recording, in seconds (as long as the longest timeline). */
+export const MAX_VIDEO_SECONDS = 3600;
+
+const FORMATS: readonly VideoFormat[] = ['webm', 'png-zip'];
+
+/** Fills in the defaults and checks every option; a bad one throws naming it (`recordVideo: fps: ...`). */
+export function checkVideoOptions(options: VideoOptions): Required<VideoOptions> {
+  if (typeof options !== 'object' || options === null) throw new Error(`recordVideo: options must be an object, got ${String(options)}`);
+  for (const name of Object.keys(options)) {
+    if (!(name in VIDEO_DEFAULTS)) throw new Error(`recordVideo: unknown option "${name}" (known: ${Object.keys(VIDEO_DEFAULTS).join(', ')})`);
+  }
+  const o: Required<VideoOptions> = { ...VIDEO_DEFAULTS };
+  for (const [name, value] of Object.entries(options)) if (value !== undefined) (o as Record<string, unknown>)[name] = value;
+  number('fps', o.fps, 1, 120, false);
+  number('width', o.width, 16, MAX_VIDEO_SIZE, true);
+  number('height', o.height, 16, MAX_VIDEO_SIZE, true);
+  // The encoders take 4:2:0 pictures, whose colour planes are half the size each way.
+  if (o.width % 2 !== 0) throw new Error(`recordVideo: width: must be even, got ${o.width}`);
+  if (o.height % 2 !== 0) throw new Error(`recordVideo: height: must be even, got ${o.height}`);
+  number('seconds', o.seconds, 0, MAX_VIDEO_SECONDS, false);
+  number('solverFramesPerVideoFrame', o.solverFramesPerVideoFrame, 1, 100, true);
+  number('bitrate', o.bitrate, 10_000, 100_000_000, false);
+  if (!FORMATS.includes(o.format)) throw new Error(`recordVideo: format: expected one of ${FORMATS.join(', ')}, got ${JSON.stringify(o.format)}`);
+  if (o.timeline !== null && typeof o.timeline !== 'string' && typeof o.timeline !== 'object') {
+    throw new Error(`recordVideo: timeline: expected a timeline document (JSON text or object) or null, got ${String(o.timeline)}`);
+  }
+  if (o.signal !== null && !(typeof o.signal === 'object' && typeof (o.signal as AbortSignal).throwIfAborted === 'function')) {
+    throw new Error(`recordVideo: signal: expected an AbortSignal, got ${String(o.signal)}`);
+  }
+  if (o.onProgress !== null && typeof o.onProgress !== 'function') throw new Error(`recordVideo: onProgress: expected a function, got ${String(o.onProgress)}`);
+  return o;
+}
+
+/** Video frames a recording of `seconds` at `fps` has: the frame at each whole step of 1 / fps before the end. */
+export function videoFrameCount(seconds: number, fps: number): number {
+  // A hair under a whole step counts as one (2 s at 10 fps is 20 frames, not 19 for a float's rounding).
+  return Math.max(1, Math.ceil(seconds * fps - 1e-9));
+}
+
+function number(name: string, value: unknown, min: number, max: number, integer: boolean): void {
+  if (typeof value !== 'number' || !Number.isFinite(value) || value < min || value > max || (integer && !Number.isInteger(value))) {
+    throw new Error(`recordVideo: ${name}: expected ${integer ? 'a whole number' : 'a number'} from ${min} to ${max}, got ${String(value)}`);
+  }
+}
