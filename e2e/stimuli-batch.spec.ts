@@ -23,7 +23,7 @@ function pngSize(file: string): [number, number] {
   return [b.readUInt32BE(16), b.readUInt32BE(20)];
 }
 
-test('a 4-stimulus batch writes its pictures and manifest, and a second run skips what is there', async ({ page }) => {
+test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a second run skips what is there', async ({ page }) => {
   test.setTimeout(240_000);
   const dir = mkdtempSync(join(tmpdir(), 'softface-stimuli-'));
   const list = join(dir, 'list.json');
@@ -34,16 +34,28 @@ test('a 4-stimulus batch writes its pictures and manifest, and a second run skip
       format: 'softface-stimuli',
       version: 1,
       defaults: { resolution: 'low', width: 200, height: 150 },
-      stimuli: [{ name: 'smile', expression: { AU12: 1 }, intensity: [0.3, 1], camera: [{}, { yaw: 40, distance: 0.7 }] }],
+      stimuli: [
+        { name: 'smile', expression: { AU12: 1 }, intensity: [0.3, 1], camera: [{}, { yaw: 40, distance: 0.7 }] },
+        {
+          name: 'brows',
+          timeline: { format: 'softface-timeline', version: 1, tracks: {}, actions: [{ target: 'AU1', start: 0, intensity: 1, onset: 0.3, apex: 0.2, offset: 0.3 }] },
+          fps: 5,
+        },
+      ],
     }),
   );
   const first = await stimuli(list, out);
   const files = ['smile_i0.3_l0_c0_low.png', 'smile_i0.3_l0_c1_low.png', 'smile_i1_l0_c0_low.png', 'smile_i1_l0_c1_low.png'];
   for (const f of files) expect(first).toContain(`wrote ${f}`);
   for (const f of files) expect(pngSize(join(out, f))).toEqual([200, 150]);
+  // The timeline became a WebM (its frames are decoded and checked in video-record.spec.ts).
+  expect(first).toContain('wrote brows_i1_l0_c0_low.webm');
+  const webm = readFileSync(join(out, 'brows_i1_l0_c0_low.webm'));
+  expect([...webm.subarray(0, 4)]).toEqual([0x1a, 0x45, 0xdf, 0xa3]);
+  expect(webm.length).toBeGreaterThan(1000);
   const manifest = readFileSync(join(out, 'manifest.csv'), 'utf8').trim().split('\n');
   expect(manifest[0]).toBe('file,name,format,expression,timeline,intensity,light,camera,resolution,width,height,fps');
-  expect(manifest.slice(1).map((row) => row.split(',')[0])).toEqual(files);
+  expect(manifest.slice(1).map((row) => row.split(',')[0])).toEqual([...files, 'brows_i1_l0_c0_low.webm']);
   expect(manifest[4]).toContain('"{""yaw"":40,""distance"":0.7}"');
 
   // The pictures are of what the list asked: the stronger smile and the other camera each change the picture.
@@ -71,10 +83,11 @@ test('a 4-stimulus batch writes its pictures and manifest, and a second run skip
   expect(differs.camera).toBeGreaterThan(2);
 
   // Run again: every file is there, so nothing is rendered and nothing is touched.
-  const times = files.map((f) => statSync(join(out, f)).mtimeMs);
+  const all = [...files, 'brows_i1_l0_c0_low.webm'];
+  const times = all.map((f) => statSync(join(out, f)).mtimeMs);
   const second = await stimuli(list, out);
   expect(second).not.toContain('wrote ');
-  expect(second).toMatch(/4 skipped/);
-  expect(files.map((f) => statSync(join(out, f)).mtimeMs)).toEqual(times);
+  expect(second).toMatch(/5 skipped/);
+  expect(all.map((f) => statSync(join(out, f)).mtimeMs)).toEqual(times);
   rmSync(dir, { recursive: true, force: true });
 });

@@ -28,9 +28,7 @@ for (const [index, s] of stimuli.entries()) {
         blob = await face.savePNG();
       } else {
         face.setTimeline(s.timeline!);
-        const recorder = face as unknown as { recordVideo?(o: object): Promise<Blob> };
-        if (!recorder.recordVideo) throw new Error(`${s.file}: this build of the face cannot record video`);
-        blob = await recorder.recordVideo({ fps: s.fps, width: s.width, height: s.height });
+        blob = await face.recordVideo({ fps: s.fps, width: s.width, height: s.height, format: 'webm' });
       }
       const bytes = new Uint8Array(await blob.arrayBuffer());
       let text = '';

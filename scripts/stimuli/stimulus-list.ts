@@ -140,6 +140,10 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
     if (seen.has(entry.name)) problems.push({ path: at('name'), message: `a second stimulus named ${JSON.stringify(entry.name)}` });
     seen.add(entry.name);
     const format = timeline ? 'webm' : 'png';
+    // Video frames are whole 2 x 2 blocks of colour samples (4:2:0).
+    for (const side of ['width', 'height'] as const) {
+      if (timeline && (merged[side] ?? 512) % 2 === 1) problems.push({ path: at(side), message: `a video needs an even ${side}, got ${merged[side]}` });
+    }
     for (const i of list(merged.intensity, [1])) {
       for (let l = 0; l < lights.length; l++) {
         for (let c = 0; c < cameras.length; c++) {
