@@ -36,8 +36,10 @@ export default defineConfig(({ mode }) => {
       lib: { entry, formats: ['es'] },
       rollupOptions: {
         external: standalone ? [] : [/^three($|\/)/],
-        // Every module at the root, side by side: the default asset base is the folder of the module's own URL.
-        output: { chunkFileNames: '[name]-[hash].js' },
+        // Every module at the root, side by side: the default asset base is the folder of the module's own URL. The
+        // standalone module is one file whole: its lazily loaded parts (decimation, video encoding, glTF export) go
+        // inside it, so that a host serves it alone.
+        output: standalone ? { inlineDynamicImports: true } : { chunkFileNames: '[name]-[hash].js' },
       },
     },
   };
