@@ -52,7 +52,8 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
   }
 
   const teeth = [HEAD_NODES.upperTeeth, HEAD_NODES.lowerTeeth].map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
-  for (const t of teeth) forEachMesh(t, (m) => replaceMaterial(m, materials.teeth));
+  // The rows hold crowns and gums: the gums by their material's name, everything else as enamel.
+  for (const t of teeth) forEachMesh(t, (m) => replaceMaterial(m, (m.material as Material).name === 'gums' ? materials.gums : materials.teeth));
   const tongue = root.getObjectByName(HEAD_NODES.tongue);
   if (tongue) forEachMesh(tongue, (m) => replaceMaterial(m, materials.tongue));
 
