@@ -1,5 +1,5 @@
 /**
- * Procedural dental arches: per arch fourteen crowns (incisors, canines, premolars, first and second molars) of
+ * Procedural dental arches: per arch sixteen crowns (incisors, canines, premolars, three molars a side) of
  * typical adult sizes set along an arch curve, and a gum band with papillae between them. The arch curve and the
  * occlusal plane are fitted to where the base mesh's low-poly teeth sit, so that the crowns fit inside its lips.
  */
@@ -15,7 +15,7 @@ interface ToothSpec {
   kind: 'incisor' | 'canine' | 'premolar' | 'molar';
 }
 
-/** Typical adult crowns from the midline back (central incisor to second molar). */
+/** Typical adult crowns from the midline back (central incisor to third molar). */
 const UPPER_TEETH: ToothSpec[] = [
   { width: 8.5, depth: 7, height: 10.5, kind: 'incisor' },
   { width: 6.5, depth: 6, height: 9, kind: 'incisor' },
@@ -49,18 +49,17 @@ export interface ArchOptions {
   gumSamples: number;
 }
 
+/** The arches of the default head. */
 export const ARCH_DEFAULTS: ArchOptions = { inset: 1.8, incisorOverlap: 1.4, segments: 20, gumSamples: 6 };
 
 /** A built arch: the crowns as one geometry, the gum as another (metres, head space). */
 export interface DentalArch {
   teeth: TriGeometry;
   gums: TriGeometry;
-  /** Number of crowns. */
-  count: number;
 }
 
 /** A plane curve in x-z (the arch seen from above), sampled densely from the midline to one side. */
-interface ArchCurve {
+export interface ArchCurve {
   x: number[];
   z: number[];
   /** Arc length at each sample. */
@@ -327,7 +326,7 @@ export function buildArch(outline: ArchCurve, occlusal: { a: number; b: number }
     });
   }
   const teethGeometry = teeth.finish((i) => centres[i]);
-  return { teeth: teethGeometry, gums: buildGum(labial, specs, starts, occlusal, up, options), count: 2 * specs.length };
+  return { teeth: teethGeometry, gums: buildGum(labial, specs, starts, occlusal, up, options) };
 }
 
 /** The curve moved inward (against its outward normal) by `by`. */
