@@ -2,6 +2,7 @@ import { readFileSync } from 'node:fs';
 import { NodeIO, type Document, type Node as GltfNode, type Primitive } from '@gltf-transform/core';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { archSlabs } from '../src/core/colliders';
+import { loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression } from './fixtures/head-simulation';
 
 /** A primitive's positions in head space (the nodes here carry translations only). */
 function worldPositions(node: GltfNode, prim: Primitive): Float32Array {
@@ -99,25 +100,36 @@ describe('the dental arches of the default head', () => {
     expect(overjet).toBeLessThan(0.008);
   });
 
-  it('keeps every crown and gum behind the lips and cheeks at rest: a ray outward through its own lip meets the skin', () => {
-    const skinPrim = doc.getRoot().listMeshes().find((m) => m.getName() === 'skin')!.listPrimitives()[0];
-    const skin = skinPrim.getAttribute('POSITION')!.getArray()!;
-    const skinIndices = skinPrim.getIndices()!.getArray()!;
-    const exposed: string[] = [];
-    // Outward from the back of the mouth, tilted up for the upper row and down for the lower one: through the upper
-    // lip or the lower (a ray level with the lips' parting line may leave between them, as a sight line does).
+  /**
+   * Teeth and gum vertices no skin covers: a ray outward from the back of the mouth, tilted up for the upper row and
+   * down for the lower one, must pass through the upper lip or the lower (a ray level with the lips' parting line
+   * may leave between them, as a sight line does). Every `stride`-th vertex is checked.
+   */
+  const exposed = (skin: ArrayLike<number>, skinIndices: ArrayLike<number>, stride: number): string[] => {
+    const out: string[] = [];
     for (const [name, tilt] of [['teeth-upper', 0.3], ['teeth-lower', -0.3]] as const) {
       for (const material of ['teeth', 'gums']) {
         const p = part(name, material).positions;
-        for (let i = 0; i < p.length; i += 3 * 2) {
+        for (let i = 0; i < p.length; i += 3 * stride) {
           const dx = p[i];
           const dz = p[i + 2] - 0.1;
           const length = Math.hypot(dx, dz);
-          if (crossings(skin, skinIndices, [p[i], p[i + 1], p[i + 2]], [dx / length, tilt, dz / length]) === 0) exposed.push(`${name} ${material} vertex ${i / 3}`);
+          if (crossings(skin, skinIndices, [p[i], p[i + 1], p[i + 2]], [dx / length, tilt, dz / length]) === 0) out.push(`${name} ${material} vertex ${i / 3}`);
         }
       }
     }
-    expect(exposed).toEqual([]);
+    return out;
+  };
+
+  it('keeps every crown and gum behind the lips and cheeks at rest: a ray outward through its own lip meets the skin', () => {
+    const skinPrim = doc.getRoot().listMeshes().find((m) => m.getName() === 'skin')!.listPrimitives()[0];
+    expect(exposed(skinPrim.getAttribute('POSITION')!.getArray()!, skinPrim.getIndices()!.getArray()!, 2)).toEqual([]);
+  });
+
+  it.each(['happiness', 'AU12'])('keeps them covered in a closed-lips smile (%s): the lips slide over the teeth', async (item) => {
+    const sim = await loadHeadSimulation('low');
+    expect(settleExpression(sim, item, MAX_SETTLE_FRAMES)).toMatchObject({ sleeping: true, inverted: 0 });
+    expect(exposed(sim.host.solver.buffers.positions, sim.triangles, 3)).toEqual([]);
   });
 
   it('gives the skin colliders that wrap the rows closely (thin walls along each arch)', () => {
