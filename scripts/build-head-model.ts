@@ -52,7 +52,8 @@ we credit MakeHuman because their work made this head possible. The files here a
 3. Subdivides the skin with Catmull-Clark (crease rules on the neck boundary, UVs interpolated per face) 0, 1 and 2 times.
 4. Builds an eyeball (sclera, iris with pupil, clear cornea) of the base mesh's eye radius at each eye joint.
 5. Builds the teeth procedurally (\`scripts/model/teeth.ts\`, no outside model): per arch sixteen crowns of typical
-   adult sizes along an arch fitted to the base mesh's low-poly teeth, and a pink gum band round their necks. The
+   adult sizes along an arch fitted to the base mesh's low-poly teeth, and a pink gum band round their necks, with
+   occlusion baked into their vertex colours (darker toward the back of the mouth). The
    tongue is the base mesh's, subdivided once, lowered and narrowed a little. Lower teeth and tongue hang under a
    \`jaw\` node placed at the jaw hinge.
 6. Records pivots (eye centres, lid joints, jaw hinge, chin, head, neck) as \`pivot-*\` nodes and in the scene's

@@ -80,6 +80,24 @@ describe('the dental arches of the default head', () => {
     expect(maxX - minX).toBeLessThan(0.065);
   });
 
+  it.each(['teeth-upper', 'teeth-lower'])('%s is shaded darker at the back of the mouth than at the front (baked occlusion)', (name) => {
+    const { prim, positions } = part(name, 'teeth');
+    const shade = prim.getAttribute('COLOR_0')!.getArray()!;
+    let minZ = Infinity;
+    for (let i = 2; i < positions.length; i += 3) minZ = Math.min(minZ, positions[i]);
+    const mean = (pick: (i: number) => boolean): number => {
+      let sum = 0;
+      let n = 0;
+      for (let i = 0; i < positions.length; i += 3) if (pick(i)) (sum += shade[i]), n++;
+      return sum / n;
+    };
+    const front = mean((i) => Math.abs(positions[i]) < 0.005);
+    const back = mean((i) => positions[i + 2] < minZ + 0.01);
+    expect(front).toBeGreaterThan(0.8);
+    expect(front).toBeLessThanOrEqual(1);
+    expect(back).toBeLessThan(0.75 * front);
+  });
+
   it('bites with the upper incisors over and in front of the lower ones (a few millimetres of overbite and overjet)', () => {
     const front = (p: Float32Array, pick: (y: number, z: number) => number, start: number) => {
       let best = start;

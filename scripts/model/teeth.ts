@@ -182,14 +182,28 @@ export function fitOcclusalPlane(upper: ArrayLike<number>, lower: ArrayLike<numb
   return { a: my - b * mz, b };
 }
 
+/**
+ * Baked occlusion (a grey vertex colour the material multiplies): the mouth's inside gets little light, so the back
+ * teeth, the tongue side and the necks at the gum are darker than the front teeth's faces. `s` is the arc length
+ * from the midline (metres), `inner` 0 on the lip side to 1 on the tongue side, `neck` 0 at the gum line to 1 away
+ * from it.
+ */
+export function occlusion(s: number, inner: number, neck: number): number {
+  const t = Math.min(1, Math.max(0, (s - 0.012) / 0.04));
+  const back = 1 - 0.5 * t * t * (3 - 2 * t);
+  return back * (1 - 0.2 * inner) * (0.8 + 0.2 * Math.min(1, Math.max(0, neck)));
+}
+
 /** Growing lists of a triangle geometry. */
 class Builder {
   positions: number[] = [];
   indices: number[] = [];
   uvs: number[] = [];
-  vertex(x: number, y: number, z: number, u = 0, v = 0): number {
+  colors: number[] = [];
+  vertex(x: number, y: number, z: number, u: number, v: number, shade: number): number {
     this.positions.push(x, y, z);
     this.uvs.push(u, v);
+    this.colors.push(shade, shade, shade);
     return this.positions.length / 3 - 1;
   }
   /** A quad a b c d, as two triangles. */
@@ -217,7 +231,7 @@ class Builder {
       const l = Math.hypot(normals[v], normals[v + 1], normals[v + 2]) || 1;
       for (let k = 0; k < 3; k++) normals[v + k] /= l;
     }
-    return { positions: Float32Array.from(P), normals, uvs: Float32Array.from(this.uvs), indices: Uint32Array.from(I) };
+    return { positions: Float32Array.from(P), normals, uvs: Float32Array.from(this.uvs), colors: Float32Array.from(this.colors), indices: Uint32Array.from(I) };
   }
 }
 
@@ -270,7 +284,8 @@ export function buildArch(outline: ArchCurve, occlusal: { a: number; b: number }
 
   for (const side of [1, -1]) {
     specs.forEach((spec, k) => {
-      const mid = pointAt(labial, (starts[k] + starts[k + 1]) / 2);
+      const arc = (starts[k] + starts[k + 1]) / 2;
+      const mid = pointAt(labial, arc);
       const tx = -mid.nz * side;
       const tz = mid.nx;
       const nx = mid.nx * side;
@@ -294,7 +309,7 @@ export function buildArch(outline: ArchCurve, occlusal: { a: number; b: number }
           const along = a * w * Math.sign(c) * Math.abs(c) ** e;
           const across = b * d * Math.sign(s) * Math.abs(s) ** e - d * b - back * MM;
           const y = tipY + up * (1 - v) * h - up * lift(c, s) * h;
-          teeth.vertex(cx + along * tx + across * nx, y, mid.z + along * tz + across * nz, j / S, v);
+          teeth.vertex(cx + along * tx + across * nx, y, mid.z + along * tz + across * nz, j / S, v, occlusion(arc, (1 - s) / 2, v / 0.3));
         }
       };
       for (const v of ROWS) {
@@ -312,9 +327,9 @@ export function buildArch(outline: ArchCurve, occlusal: { a: number; b: number }
       // Caps: the root end (hidden in the gum) and the biting surface, its middle a little sunk on back teeth.
       const axis = section(spec.kind, 1);
       const axisAcross = -d * axis.b - axis.back * MM;
-      const root = teeth.vertex(cx + axisAcross * nx, tipY + up * (1 - ROWS[0]) * h, mid.z + axisAcross * nz, 0.5, ROWS[0]);
+      const root = teeth.vertex(cx + axisAcross * nx, tipY + up * (1 - ROWS[0]) * h, mid.z + axisAcross * nz, 0.5, ROWS[0], occlusion(arc, 0.5, 0));
       const sink = spec.kind === 'molar' || spec.kind === 'premolar' ? 0.1 : 0;
-      const tip = teeth.vertex(cx + axisAcross * nx, tipY + up * sink * h, mid.z + axisAcross * nz, 0.5, 1);
+      const tip = teeth.vertex(cx + axisAcross * nx, tipY + up * sink * h, mid.z + axisAcross * nz, 0.5, 1, occlusion(arc, 0.5, 1 - sink * 4));
       const last = first + (ROWS.length - 1) * S;
       for (let j = 0; j < S; j++) {
         teeth.indices.push(root, first + j, first + ((j + 1) % S));
@@ -395,7 +410,8 @@ function buildGum(labial: ArchCurve, specs: ToothSpec[], starts: number[], occlu
     for (const q of profile) {
       const across = q.lingual ? -mixD - q.out : q.out < 0 ? -mixD / 2 : q.out;
       const rise = q.edge ? -papilla : q.rise - (q.rise < 2 ? papilla * 0.4 : 0);
-      row.push(gum.vertex(x + across * MM * nx, neck + up * rise * MM, p.z + across * MM * nz, sample.s / end, q.rise / 7.5));
+      const shade = occlusion(sample.s, q.lingual ? 1 : q.out < 0 ? 0.5 : 0, 1);
+      row.push(gum.vertex(x + across * MM * nx, neck + up * rise * MM, p.z + across * MM * nz, sample.s / end, q.rise / 7.5, shade));
     }
     rows.push(row);
     inner.push([x - (mixD / 2) * MM * nx, neck - up * 2 * MM, p.z - (mixD / 2) * MM * nz]);
@@ -408,7 +424,7 @@ function buildGum(labial: ArchCurve, specs: ToothSpec[], starts: number[], occlu
   // Close both back ends behind the last molars.
   for (const r of [0, rows.length - 1]) {
     const centre = inner[r];
-    const c = gum.vertex(centre[0], centre[1] + up * 3 * MM, centre[2], 0, 0.5);
+    const c = gum.vertex(centre[0], centre[1] + up * 3 * MM, centre[2], 0, 0.5, occlusion(end, 1, 1));
     // Faces out of the band's end: away from the next row in.
     centreOf[c] = inner[r === 0 ? 1 : rows.length - 2];
     for (let k = 0; k + 1 < profile.length; k++) gum.indices.push(c, rows[r][k], rows[r][k + 1]);
