@@ -7,18 +7,22 @@ import type { TriGeometry } from './eye';
 
 const MM = 0.001;
 
-/** One tooth type's crown, millimetres: mesiodistal width, labiolingual depth, crown height, and its shape. */
+/**
+ * One tooth type's crown, millimetres: mesiodistal width, labiolingual depth, crown height, its shape, and how far
+ * its edge stops short of its neighbours' (the upper lateral incisors' edges sit a little higher than the centrals').
+ */
 interface ToothSpec {
   width: number;
   depth: number;
   height: number;
   kind: 'incisor' | 'canine' | 'premolar' | 'molar';
+  short?: number;
 }
 
 /** Typical adult crowns from the midline back (central incisor to third molar). */
 const UPPER_TEETH: ToothSpec[] = [
   { width: 8.5, depth: 7, height: 10.5, kind: 'incisor' },
-  { width: 6.5, depth: 6, height: 9, kind: 'incisor' },
+  { width: 6.5, depth: 6, height: 9, kind: 'incisor', short: 0.8 },
   { width: 7.5, depth: 8, height: 10, kind: 'canine' },
   { width: 7, depth: 9, height: 8, kind: 'premolar' },
   { width: 6.5, depth: 9, height: 7.5, kind: 'premolar' },
@@ -293,7 +297,7 @@ export function buildArch(outline: ArchCurve, occlusal: { a: number; b: number }
       const cx = mid.x * side;
       // Front teeth reach past the plane so that the upper ones overlap the lower ones; back teeth meet on it.
       const overlap = spec.kind === 'incisor' ? options.incisorOverlap : spec.kind === 'canine' ? 0.7 * options.incisorOverlap : 0.15;
-      const tipY = occlusal.a + occlusal.b * mid.z - up * overlap * MM;
+      const tipY = occlusal.a + occlusal.b * mid.z - up * (overlap - (spec.short ?? 0)) * MM;
       const w = (spec.width * MM) / 2;
       const d = (spec.depth * MM) / 2;
       const h = spec.height * MM;
@@ -403,7 +407,7 @@ function buildGum(labial: ArchCurve, specs: ToothSpec[], starts: number[], occlu
     const nz = p.nz;
     const x = p.x * sample.side;
     const overlap = spec.kind === 'incisor' ? options.incisorOverlap : spec.kind === 'canine' ? 0.7 * options.incisorOverlap : 0.15;
-    const neck = occlusal.a + occlusal.b * p.z - up * overlap * MM + up * mixH * MM;
+    const neck = occlusal.a + occlusal.b * p.z - up * (overlap - (spec.short ?? 0)) * MM + up * mixH * MM;
     // Papillae: the edge comes down toward the biting edge between crowns (about 3 mm in front, less at the back).
     const papilla = (spec.kind === 'molar' ? 1.6 : 2.8) * Math.abs(Math.cos(Math.PI * sample.frac)) ** 3;
     const row: number[] = [];
