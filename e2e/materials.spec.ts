@@ -1,11 +1,11 @@
 import { openFace } from './face';
 import { expect, test } from './fixtures';
 
-test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth and tongue have their own materials', async ({ page }) => {
+test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth, gums and tongue have their own materials', async ({ page }) => {
   await openFace(page, '/?resolution=low');
   const materials = await page.evaluate(() => window.face.describeMaterials());
   const byName = Object.fromEntries(materials.map((m) => [m.name, m]));
-  expect(Object.keys(byName).sort()).toEqual(['cornea', 'iris', 'sclera', 'skin', 'teeth', 'tongue']);
+  expect(Object.keys(byName).sort()).toEqual(['cornea', 'gums', 'iris', 'sclera', 'skin', 'teeth', 'tongue']);
 
   const skin = byName.skin;
   expect(skin.type).toBe('MeshPhysicalMaterial');
@@ -33,10 +33,18 @@ test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth
   expect(byName.cornea.transparent).toBe(true);
   expect(byName.cornea.clearcoat).toBeGreaterThan(0.5);
   expect(byName.cornea.roughness).toBeLessThan(0.1);
-  // Teeth: not pure white, warm (ivory).
+  // Teeth: off-white (light, but not pure white), warm, glossy enamel.
   const teeth = [1, 3, 5].map((i) => parseInt(byName.teeth.color.slice(i, i + 2), 16));
   expect(Math.max(...teeth)).toBeLessThan(0xf0);
+  expect(Math.min(...teeth)).toBeGreaterThan(0xb0);
   expect(teeth[0]).toBeGreaterThan(teeth[2]);
+  expect(byName.teeth.roughness).toBeGreaterThan(0.2);
+  expect(byName.teeth.roughness).toBeLessThan(0.4);
+  // Gums: pink, redder than the teeth and far less bright.
+  const gums = [1, 3, 5].map((i) => parseInt(byName.gums.color.slice(i, i + 2), 16));
+  expect(gums[0]).toBeGreaterThan(1.4 * gums[1]);
+  expect(gums[0]).toBeGreaterThan(gums[2]);
+  expect(gums[1]).toBeLessThan(teeth[1] - 0x30);
   // Tongue: pinkish red and rough.
   const tongue = [1, 3, 5].map((i) => parseInt(byName.tongue.color.slice(i, i + 2), 16));
   expect(tongue[0]).toBeGreaterThan(1.5 * tongue[1]);

@@ -50,12 +50,15 @@ we credit MakeHuman because their work made this head possible. The files here a
 2. Cuts the head and upper neck off along the quad edge loop that runs around the neck through the front-midline
    vertex nearest (0, 5.78, 0.69) dm: every kept face is a whole quad, the cut is one clean loop.
 3. Subdivides the skin with Catmull-Clark (crease rules on the neck boundary, UVs interpolated per face) 0, 1 and 2 times.
-4. Builds an eyeball (sclera, iris with pupil, clear cornea) of the helper eye's radius at each eye joint, and takes
-   the upper and lower teeth and the tongue from the helper meshes, subdivided once. Lower teeth and tongue hang
-   under a \`jaw\` node placed at the jaw hinge.
-5. Records pivots (eye centres, lid joints, jaw hinge, chin, head, neck) as \`pivot-*\` nodes and in the scene's
+4. Builds an eyeball (sclera, iris with pupil, clear cornea) of the base mesh's eye radius at each eye joint.
+5. Builds the teeth procedurally (\`scripts/model/teeth.ts\`, no outside model): per arch sixteen crowns of typical
+   adult sizes along an arch fitted to the base mesh's low-poly teeth, and a pink gum band round their necks, with
+   occlusion baked into their vertex colours (darker toward the back of the mouth). The
+   tongue is the base mesh's, subdivided once, lowered and narrowed a little. Lower teeth and tongue hang under a
+   \`jaw\` node placed at the jaw hinge.
+6. Records pivots (eye centres, lid joints, jaw hinge, chin, head, neck) as \`pivot-*\` nodes and in the scene's
    \`extras.softface.pivots\`.
-6. Converts decimetres to metres (+y up, the face looks along +z, the subject's left is +x) and writes GLB.
+7. Converts decimetres to metres (+y up, the face looks along +z, the subject's left is +x) and writes GLB.
 
 ## Resolutions
 

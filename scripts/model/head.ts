@@ -1,6 +1,7 @@
 import { HEAD_NODES } from '../../src/core/head-nodes';
 import { boundaryLoops, cutAlongLoop, findEdgeLoop, subsetFaces } from './cut';
 import { buildEyeball, type TriGeometry } from './eye';
+import { buildArch, fitArchOutline, fitOcclusalPlane } from './teeth';
 import type { MaterialSpec, NodeSpec } from './glb';
 import type { ObjMesh } from './obj';
 import { catmullClark } from '../../src/core/subdivide';
@@ -33,12 +34,17 @@ export const PIVOT_JOINTS: Record<string, string> = {
   neck: 'joint-neck',
 };
 
+/** How much narrower the tongue is made, and how far it is lowered (metres): see buildHeadLevels. */
+const TONGUE_NARROWING = 0.88;
+const TONGUE_DROP = 0.003;
+
 export const MATERIALS = {
   skin: { name: 'skin', baseColor: [0.72, 0.42, 0.31, 1], roughness: 0.55 },
   sclera: { name: 'sclera', baseColor: [0.86, 0.83, 0.79, 1], roughness: 0.3 },
   iris: { name: 'iris', baseColor: [1, 1, 1, 1], roughness: 0.5 },
   cornea: { name: 'cornea', baseColor: [1, 1, 1, 0.06], roughness: 0.02, blend: true },
   teeth: { name: 'teeth', baseColor: [0.84, 0.79, 0.67, 1], roughness: 0.3, doubleSided: true },
+  gums: { name: 'gums', baseColor: [0.66, 0.27, 0.28, 1], roughness: 0.4, doubleSided: true },
   tongue: { name: 'tongue', baseColor: [0.52, 0.17, 0.16, 1], roughness: 0.45 },
 } satisfies Record<string, MaterialSpec>;
 
@@ -184,10 +190,28 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
   const hinge = pivots['jaw-hinge'];
   // Vertices stay in head space; the nodes under the jaw undo the jaw's translation, so turning the jaw node turns
   // them about the hinge.
-  const helper = (group: string): TriGeometry => toRenderMesh(catmullClark(groupMesh(source, group).mesh), DECIMETRE);
-  const teethUpper = helper('helper-upper-teeth');
-  const teethLower = helper('helper-lower-teeth');
-  const tongue = helper('helper-tongue');
+  const tongue: TriGeometry = toRenderMesh(catmullClark(groupMesh(source, 'helper-tongue').mesh), DECIMETRE);
+  // The base mesh's tongue stands above the lower teeth's edges and as wide as the molars: lowered and narrowed a
+  // little, it lies in the floor of the mouth inside the lower arch, so that an open mouth shows the lower teeth.
+  for (let i = 0; i < tongue.positions.length; i += 3) {
+    tongue.positions[i] *= TONGUE_NARROWING;
+    tongue.positions[i + 1] -= TONGUE_DROP;
+    // Normals of a surface squeezed along x turn toward x by the inverse factor.
+    const n = [tongue.normals[i] / TONGUE_NARROWING, tongue.normals[i + 1], tongue.normals[i + 2]];
+    const length = Math.hypot(n[0], n[1], n[2]);
+    for (let k = 0; k < 3; k++) tongue.normals[i + k] = n[k] / length;
+  }
+  // The base mesh's low-poly teeth say where the rows sit: the arches are fitted to them.
+  const band = (group: string): Float64Array => groupMesh(source, group).mesh.positions.map((p) => p * DECIMETRE);
+  const upperBand = band('helper-upper-teeth');
+  const lowerBand = band('helper-lower-teeth');
+  const occlusal = fitOcclusalPlane(upperBand, lowerBand);
+  const upperArch = buildArch(fitArchOutline(upperBand), occlusal, 1);
+  const lowerArch = buildArch(fitArchOutline(lowerBand), occlusal, -1);
+  const archParts = (arch: typeof upperArch) => [
+    { geometry: arch.teeth, material: MATERIALS.teeth },
+    { geometry: arch.gums, material: MATERIALS.gums },
+  ];
 
   return LEVELS.map(({ name, subdivisions }) => {
     const mesh = subdivide(cut.mesh, subdivisions);
@@ -206,13 +230,13 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
       children: [
         { name: HEAD_NODES.skin, parts: [{ geometry: skin, material: MATERIALS.skin }] },
         ...HEAD_NODES.eyes.map((eye) => ({ name: eye, translation: pivots[eye], meshName: 'eyeball', parts: eyeParts, extras: { softface: { pivot: eye } } })),
-        { name: HEAD_NODES.upperTeeth, parts: [{ geometry: teethUpper, material: MATERIALS.teeth }] },
+        { name: HEAD_NODES.upperTeeth, parts: archParts(upperArch) },
         {
           name: HEAD_NODES.jaw,
           translation: hinge,
           extras: { softface: { pivot: 'jaw-hinge' } },
           children: [
-            { name: HEAD_NODES.lowerTeeth, translation: negHinge, parts: [{ geometry: teethLower, material: MATERIALS.teeth }] },
+            { name: HEAD_NODES.lowerTeeth, translation: negHinge, parts: archParts(lowerArch) },
             { name: HEAD_NODES.tongue, translation: negHinge, parts: [{ geometry: tongue, material: MATERIALS.tongue }] },
           ],
         },

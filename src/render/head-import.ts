@@ -5,7 +5,7 @@ import { HEAD_NODES } from '../core/head-nodes';
 import type { HeadFrame, TriangleMesh } from '../core/head-mesh';
 import type { Landmarks } from '../core/landmarks';
 import { warpPoint, type ThinPlateWarp } from '../core/thin-plate';
-import type { HeadModel } from './head-model';
+import { whiteVertexColors, type HeadModel } from './head-model';
 import { skinTint, SKIN_TINT_DEFAULTS } from './skin-tint';
 
 /** A file given for a head: its name (with extension) and bytes. A `.gltf` comes with the files it refers to. */
@@ -180,6 +180,8 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
       if (!(m instanceof Mesh) || Array.isArray(m.material)) return;
       const own = materials.get((m.material as Material).name);
       if (own) m.material = own;
+      // The app's teeth and gums multiply by vertex colours (baked occlusion): a part without them gets white.
+      if (own && own.vertexColors && !m.geometry.getAttribute('color')) whiteVertexColors(m);
       // The cornea blends over the iris, so it is drawn after the opaque parts.
       m.renderOrder = (m.material as Material).transparent ? 2 : 0;
     });

@@ -52,7 +52,17 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
   }
 
   const teeth = [HEAD_NODES.upperTeeth, HEAD_NODES.lowerTeeth].map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
-  for (const t of teeth) forEachMesh(t, (m) => replaceMaterial(m, materials.teeth));
+  // The rows hold crowns and gums: the gums by their material's name, everything else as enamel. Their vertex
+  // colours are baked occlusion (the mouth's inside is darker); a mesh without them gets white, as the materials
+  // then multiply by the colour attribute.
+  for (const t of teeth) {
+    forEachMesh(t, (m) => {
+      replaceMaterial(m, (m.material as Material).name === 'gums' ? materials.gums : materials.teeth);
+      if (!m.geometry.getAttribute('color')) whiteVertexColors(m);
+    });
+  }
+  materials.teeth.vertexColors = true;
+  materials.gums.vertexColors = true;
   const tongue = root.getObjectByName(HEAD_NODES.tongue);
   if (tongue) forEachMesh(tongue, (m) => replaceMaterial(m, materials.tongue));
 
@@ -100,6 +110,12 @@ function forEachMesh(o: Object3D, fn: (m: Mesh) => void): void {
   o.traverse((c) => {
     if (c instanceof Mesh) fn(c);
   });
+}
+
+/** Gives a mesh white vertex colours, for a material that multiplies by them. */
+export function whiteVertexColors(mesh: Mesh): void {
+  const count = mesh.geometry.getAttribute('position').count;
+  mesh.geometry.setAttribute('color', new BufferAttribute(new Float32Array(3 * count).fill(1), 3));
 }
 
 function replaceMaterial(mesh: Mesh, material: Material): void {

@@ -80,6 +80,7 @@ export interface HeadMaterials {
   iris: MeshPhysicalMaterial;
   cornea: MeshPhysicalMaterial;
   teeth: MeshPhysicalMaterial;
+  gums: MeshPhysicalMaterial;
   tongue: MeshPhysicalMaterial;
 }
 
@@ -94,6 +95,7 @@ export function createHeadMaterials(skin: Partial<SkinLookOptions> = {}): HeadMa
     iris: createIrisMaterial(),
     cornea: createCorneaMaterial(),
     teeth: createTeethMaterial(),
+    gums: createGumsMaterial(),
     tongue: createTongueMaterial(pores),
   };
 }
@@ -152,10 +154,16 @@ export function createCorneaMaterial(): MeshPhysicalMaterial {
   });
 }
 
-/** Teeth: ivory enamel, glossy, with light wrapping round their edges as through translucent enamel. */
+/** Teeth: off-white enamel, glossy, with light wrapping round their edges as through translucent enamel. */
 export function createTeethMaterial(): MeshPhysicalMaterial {
-  const material = new MeshPhysicalMaterial({ name: 'teeth', color: new Color(0.7, 0.62, 0.46), roughness: 0.28, ior: 1.55, side: DoubleSide });
+  const material = new MeshPhysicalMaterial({ name: 'teeth', color: new Color(0.8, 0.75, 0.63), roughness: 0.3, ior: 1.55, side: DoubleSide });
   return addSubsurface(material, { wrap: [0.45, 0.4, 0.3], normalBlur: [0, 0, 0], cavity: 0 });
+}
+
+/** Gums: pale coral pink, moist, with a reddish subsurface wrap like the lips'. */
+export function createGumsMaterial(): MeshPhysicalMaterial {
+  const material = new MeshPhysicalMaterial({ name: 'gums', color: new Color(0.62, 0.22, 0.22), roughness: 0.38, sheen: 0.3, sheenColor: new Color(0.9, 0.55, 0.55), side: DoubleSide });
+  return addSubsurface(material, { wrap: [0.5, 0.22, 0.2], normalBlur: [0, 0, 0], cavity: 0 });
 }
 
 /** Tongue: pinkish red, moist but rough (papillae, from the pore map at a finer scale), with a soft sheen. */
