@@ -1,10 +1,10 @@
 import type { Page } from '@playwright/test';
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { comparePictures, expect, test } from './fixtures';
 
-/** The face at rest as the canvas shows it, a PNG in base64 (the canvas only: no panels, no status bar). */
-async function restPicture(page: Page): Promise<string> {
-  return page.evaluate(async () => {
+/** The face at rest as the canvas shows it, as PNG bytes (the canvas only: no panels, no status bar). */
+async function restPicture(page: Page): Promise<Buffer> {
+  const base64 = await page.evaluate(async () => {
     await window.face.settle(30_000);
     const blob = await window.face.savePNG();
     const bytes = new Uint8Array(await blob.arrayBuffer());
@@ -12,6 +12,7 @@ async function restPicture(page: Page): Promise<string> {
     for (let i = 0; i < bytes.length; i++) text += String.fromCharCode(bytes[i]);
     return btoa(text);
   });
+  return Buffer.from(base64, 'base64');
 }
 
 test('the face is lit by the baked room environment, the very picture the view makes without it', async ({ page, browser }) => {
@@ -40,34 +41,9 @@ test('the face is lit by the baked room environment, the very picture the view m
   const made = await restPicture(other);
   expect(otherWarnings.some((w) => /lighting environment .*room\.pmrem could not be loaded \(HTTP 404\)/.test(w))).toBe(true);
 
-  const difference = await page.evaluate(
-    async ([a, b]) => {
-      const pixels = async (data: string): Promise<Uint8ClampedArray> => {
-        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
-        const c = new OffscreenCanvas(image.width, image.height);
-        const ctx = c.getContext('2d')!;
-        ctx.drawImage(image, 0, 0);
-        return ctx.getImageData(0, 0, image.width, image.height).data;
-      };
-      const [A, B] = [await pixels(a), await pixels(b)];
-      let sum = 0;
-      let max = 0;
-      let lit = 0;
-      for (let i = 0; i < A.length; i += 4) {
-        for (let c = 0; c < 3; c++) {
-          const d = Math.abs(A[i + c] - B[i + c]);
-          sum += d;
-          max = Math.max(max, d);
-        }
-        // Pixels of the face (far from the background's dark grey): the comparison is about them.
-        if (A[i] > 90) lit++;
-      }
-      return { length: A.length === B.length, mean: sum / ((3 * A.length) / 4), max, lit };
-    },
-    [baked, made],
-  );
+  const difference = await comparePictures(page, baked, made);
   console.log(`baked vs made environment: mean difference ${difference.mean.toFixed(4)}, max ${difference.max}, ${difference.lit} lit pixels`);
-  expect(difference.length).toBe(true);
+  expect(difference.sameSize).toBe(true);
   expect(difference.lit).toBeGreaterThan(20_000);
   // The file holds the generator's own half floats, so the pictures agree to the last rounding of a channel.
   expect(difference.max).toBeLessThanOrEqual(1);

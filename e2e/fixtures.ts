@@ -50,3 +50,41 @@ export const BACKGROUND: [number, number, number] = [0x1d, 0x20, 0x24];
 export function meanDistance(patch: number[][], rgb: readonly number[]): number {
   return patch.reduce((s, p) => s + Math.abs(p[0] - rgb[0]) + Math.abs(p[1] - rgb[1]) + Math.abs(p[2] - rgb[2]), 0) / patch.length;
 }
+
+/** How two pictures (PNG bytes) differ, decoded by the browser: mean and largest channel difference, RGB only. */
+export interface PictureDifference {
+  sameSize: boolean;
+  mean: number;
+  max: number;
+  /** Pixels of the first picture brighter than the background in red (the face's, not the backdrop's). */
+  lit: number;
+}
+
+export async function comparePictures(page: Page, a: Buffer, b: Buffer): Promise<PictureDifference> {
+  return page.evaluate(
+    async ([a, b]) => {
+      const pixels = async (data: string): Promise<Uint8ClampedArray> => {
+        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
+        const c = new OffscreenCanvas(image.width, image.height);
+        const ctx = c.getContext('2d')!;
+        ctx.drawImage(image, 0, 0);
+        return ctx.getImageData(0, 0, image.width, image.height).data;
+      };
+      const [A, B] = [await pixels(a), await pixels(b)];
+      if (A.length !== B.length) return { sameSize: false, mean: Number.NaN, max: Number.NaN, lit: 0 };
+      let sum = 0;
+      let max = 0;
+      let lit = 0;
+      for (let i = 0; i < A.length; i += 4) {
+        for (let c = 0; c < 3; c++) {
+          const d = Math.abs(A[i + c] - B[i + c]);
+          sum += d;
+          max = Math.max(max, d);
+        }
+        if (A[i] > 90) lit++;
+      }
+      return { sameSize: true, mean: sum / ((3 * A.length) / 4), max, lit };
+    },
+    [a.toString('base64'), b.toString('base64')],
+  );
+}

@@ -4,7 +4,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
 import { ISOLATED_PORT } from '../playwright.config';
-import { expect, test } from './fixtures';
+import { comparePictures, expect, test } from './fixtures';
 
 const run = promisify(execFile);
 
@@ -59,25 +59,8 @@ test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a s
   expect(manifest[4]).toContain('"{""yaw"":40,""distance"":0.7}"');
 
   // The pictures are of what the list asked: the stronger smile and the other camera each change the picture.
-  const differs = await page.evaluate(
-    async (pngs) => {
-      const pixels = async (data: string): Promise<Uint8ClampedArray> => {
-        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
-        const c = new OffscreenCanvas(image.width, image.height);
-        const ctx = c.getContext('2d')!;
-        ctx.drawImage(image, 0, 0);
-        return ctx.getImageData(0, 0, image.width, image.height).data;
-      };
-      const [weak, weakTurned, strong] = await Promise.all(pngs.map(pixels));
-      const mean = (a: Uint8ClampedArray, b: Uint8ClampedArray): number => {
-        let s = 0;
-        for (let i = 0; i < a.length; i++) s += Math.abs(a[i] - b[i]);
-        return s / a.length;
-      };
-      return { intensity: mean(weak, strong), camera: mean(weak, weakTurned) };
-    },
-    files.slice(0, 3).map((f) => readFileSync(join(out, f)).toString('base64')),
-  );
+  const picture = (f: string): Buffer => readFileSync(join(out, f));
+  const differs = { intensity: (await comparePictures(page, picture(files[0]), picture(files[2]))).mean, camera: (await comparePictures(page, picture(files[0]), picture(files[1]))).mean };
   console.log(`mean pixel difference: intensity 0.3 vs 1 ${differs.intensity.toFixed(2)}, front vs turned ${differs.camera.toFixed(2)}`);
   expect(differs.intensity).toBeGreaterThan(0.2);
   expect(differs.camera).toBeGreaterThan(2);
