@@ -132,6 +132,14 @@ describe('mirroring across x = 0', () => {
     expect(changes).toEqual([]);
   });
 
+  it('a mirrored muscle takes its painted brush spheres to the other side', () => {
+    const rig = parseRig(defaultRig());
+    const left = rig.muscles.find((m) => m.name === 'orbicularis-oculi-orbital-l')!;
+    expect(left.brush?.remove.length).toBeGreaterThan(0);
+    const mirrored = mirrorMuscle(left);
+    expect(mirrored.brush!.remove).toEqual(left.brush!.remove.map(([x, y, z, r]) => [-x, y, z, r]));
+  });
+
   it('a mirrored update moves the twin to the reflected point in the same step', () => {
     const { doc } = open();
     doc.updateMuscle('zygomaticus-major-l', { insertion: [0.051, 0.65, 0.125] }, { mirror: true });

@@ -47,7 +47,7 @@ describe('the default rig (public/rigs/default.json)', () => {
     );
   });
 
-  it('mirrors every left muscle exactly onto the right (x negated, Euler y and z negated, all else equal)', () => {
+  it('mirrors every left muscle exactly onto the right (x negated, brush spheres too, Euler y and z negated, all else equal)', () => {
     const byName = new Map(rig.muscles.map((m) => [m.name, m]));
     const left = rig.muscles.filter((m) => m.side === 'left');
     expect(left.length).toBe(rig.muscles.filter((m) => m.side === 'right').length);
@@ -57,6 +57,7 @@ describe('the default rig (public/rigs/default.json)', () => {
       const mirrored = JSON.parse(JSON.stringify(l), (key, value) => {
         if (['origin', 'insertion', 'center'].includes(key)) return [-value[0] || 0, value[1], value[2]];
         if (key === 'rotation') return [value[0], -value[1] || 0, -value[2] || 0];
+        if (key === 'add' || key === 'remove') return value.map((s: number[]) => [-s[0] || 0, s[1], s[2], s[3]]);
         return value;
       });
       expect({ ...r, name: l.name, side: 'left' }).toEqual(mirrored);

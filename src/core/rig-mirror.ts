@@ -1,9 +1,10 @@
 /**
  * Mirroring muscles across the face's midplane x = 0 (the subject's left is +x): points get x negated, Euler angles
- * (R = Rz Ry Rx) get y and z negated, and `-l` / `-r` names and left / right sides swap. This is how the default rig's
+ * (R = Rz Ry Rx) get y and z negated, brush spheres move with the points, and `-l` / `-r` names and left / right sides
+ * swap. This is how the default rig's
  * right side is made from its left. Pure: no DOM, no three.js.
  */
-import type { Muscle, MuscleSide, Vec3 } from './rig-types';
+import type { BrushSphere, Muscle, MuscleSide, Vec3 } from './rig-types';
 
 const POINT_KEYS = ['origin', 'insertion', 'center', 'joint'] as const;
 
@@ -29,6 +30,10 @@ export function mirrorMuscle(muscle: Muscle, name = twinName(muscle.name) ?? mus
   }
   const r = out.rotation as Vec3 | undefined;
   if (r) out.rotation = [r[0], -r[1] || 0, -r[2] || 0];
+  if (out.brush) {
+    const flip = (s: BrushSphere): BrushSphere => [-s[0] || 0, s[1], s[2], s[3]];
+    out.brush = { add: out.brush.add.map(flip), remove: out.brush.remove.map(flip) };
+  }
   out.name = name;
   out.side = otherSide(muscle.side);
   return out;
