@@ -33,3 +33,39 @@ test('save PNG: face.savePNG() gives the canvas as a PNG, and the button downloa
   expect(Array.from(file.subarray(0, 8))).toEqual(PNG_MAGIC);
   expect(file.length).toBeGreaterThan(10_000);
 });
+
+test('face.savePNG() taken as soon as settle() resolves shows the settled skin, not the frame drawn before it', async ({ page }) => {
+  await openFace(page, '/?resolution=low');
+  const differences = await page.evaluate(async () => {
+    const face = window.face;
+    const pixels = async (): Promise<Uint8ClampedArray> => {
+      const image = await createImageBitmap(await face.savePNG());
+      const c = new OffscreenCanvas(image.width, image.height);
+      const ctx = c.getContext('2d')!;
+      ctx.drawImage(image, 0, 0);
+      return ctx.getImageData(0, 0, image.width, image.height).data;
+    };
+    const changed = (a: Uint8ClampedArray, b: Uint8ClampedArray): number => {
+      let n = 0;
+      for (let i = 0; i < a.length; i += 4) if (a[i] !== b[i] || a[i + 1] !== b[i + 1] || a[i + 2] !== b[i + 2]) n++;
+      return n;
+    };
+    const neutral = await pixels();
+    const out: { item: string; smiling: number; back: number }[] = [];
+    // A one-sided expression and a full preset; after each, back to neutral and a picture at once.
+    for (const item of ['AU14R=0.7&AU12R=0.3', 'preset:happiness=1']) {
+      face.setExpression(item);
+      await face.settle(60_000);
+      const smiling = changed(await pixels(), neutral);
+      face.setExpression('');
+      await face.settle(60_000);
+      out.push({ item, smiling, back: changed(await pixels(), neutral) });
+    }
+    return out;
+  });
+  for (const d of differences) {
+    // The expression shows in its picture, and the neutral picture after it is the first one, pixel for pixel.
+    expect(d.smiling, d.item).toBeGreaterThan(200);
+    expect(d.back, d.item).toBe(0);
+  }
+});

@@ -229,6 +229,10 @@ export class HeadView {
 
   /** Renders a frame now and encodes the canvas as a PNG (what the user sees, at the canvas's pixel size). */
   snapshot(): Promise<Blob> {
+    // The frame hooks first, as the render loop runs them: the skin takes the solver's newest frame, so a picture
+    // taken as soon as `settle` resolves shows the settled skin, not the frame drawn before it.
+    const now = performance.now();
+    for (let i = 0; i < this.frameHooks.length; i++) this.frameHooks[i](now);
     this.controls.update();
     this.renderFrame();
     // Read in the same task as the render, so the picture is there even without a preserved drawing buffer.
