@@ -12,12 +12,12 @@ test('a preset slider sets the Action Units it names (presets add to the sliders
     effective: window.face.getEffectiveActionUnits(),
     presets: window.face.listPresets(),
   }));
-  // The sliders stay at 0; the preset's units (happiness: AU6 0.6, AU12 0.8) take effect on both sides.
+  // The sliders stay at 0; the preset's units (happiness: AU6 0.8, AU12 0.9) take effect on both sides.
   expect(Object.values(state.sliders).every((v) => v === 0)).toBe(true);
-  expect(state.effective.AU6L).toBeCloseTo(0.6, 6);
-  expect(state.effective.AU6R).toBeCloseTo(0.6, 6);
-  expect(state.effective.AU12L).toBeCloseTo(0.8, 6);
-  expect(state.effective.AU12R).toBeCloseTo(0.8, 6);
+  expect(state.effective.AU6L).toBeCloseTo(0.8, 6);
+  expect(state.effective.AU6R).toBeCloseTo(0.8, 6);
+  expect(state.effective.AU12L).toBeCloseTo(0.9, 6);
+  expect(state.effective.AU12R).toBeCloseTo(0.9, 6);
   expect(state.effective.AU4L).toBe(0);
   expect(state.presets.find((p) => p.name === 'happiness')?.weight).toBe(1);
   expect((await settledSkin(page)).moved).toBeGreaterThan(0.002);
@@ -25,8 +25,8 @@ test('a preset slider sets the Action Units it names (presets add to the sliders
   // Presets combine: a second one adds its own units.
   await setSlider(page, 'preset-surprise', 0.5);
   const combined = await page.evaluate(() => window.face.getEffectiveActionUnits());
-  expect(combined.AU12L).toBeCloseTo(0.8, 6);
-  expect(combined.AU1L).toBeCloseTo(0.35, 6);
+  expect(combined.AU12L).toBeCloseTo(0.9, 6);
+  expect(combined.AU1L).toBeCloseTo(0.4, 6);
 
   // Reset: every preset and slider back to 0, and the panel's sliders with them.
   await setSlider(page, 'AU4L', 0.5);

@@ -116,16 +116,16 @@ describe('ExpressionState sliders', () => {
 describe('ExpressionState presets', () => {
   it('adds weighted presets to the sliders and clamps the sum (happiness + surprise)', () => {
     const s = new ExpressionState(DEFAULT_RIG.presets);
-    s.applyPreset('happiness', 1); // AU6 0.6, AU12 0.8
-    s.applyPreset('surprise', 0.5); // AU1 0.7, AU2 0.7, AU5 0.15, AU26 0.6
+    s.applyPreset('happiness', 1); // AU6 0.8, AU12 0.9
+    s.applyPreset('surprise', 0.5); // AU1 0.8, AU2 0.8, AU5 0.2, AU26 0.6
     s.setActionUnit('AU12L', 0.5);
     s.setActionUnit('AU26', 0.1);
     const e = s.effective();
-    expect(e.AU12L).toBe(1); // 0.5 + 0.8, clamped
-    expect(e.AU12R).toBeCloseTo(0.8, 12);
-    expect(e.AU6L).toBeCloseTo(0.6, 12);
-    expect(e.AU1R).toBeCloseTo(0.35, 12);
-    expect(e.AU5L).toBeCloseTo(0.075, 12);
+    expect(e.AU12L).toBe(1); // 0.5 + 0.9, clamped
+    expect(e.AU12R).toBeCloseTo(0.9, 12);
+    expect(e.AU6L).toBeCloseTo(0.8, 12);
+    expect(e.AU1R).toBeCloseTo(0.4, 12);
+    expect(e.AU5L).toBeCloseTo(0.1, 12);
     expect(e.AU26).toBeCloseTo(0.4, 12); // 0.1 + 0.5 x 0.6
     expect(e.AU15L).toBe(0);
     expect(s.getActionUnits().AU12R).toBe(0); // sliders stay what was set
@@ -138,16 +138,16 @@ describe('ExpressionState presets', () => {
     expect(s.effective()).toMatchObject({ AU12L: 0.6, AU12R: 1, AU26: 0.5 });
   });
 
-  it('drives only the right lip corner with the contempt preset, at grade A', () => {
+  it('drives only the right lip corner with the contempt preset: AU14 at grade D, AU12 at grade C', () => {
     const s = new ExpressionState(DEFAULT_RIG.presets);
     s.applyPreset('contempt', 1);
     const e = s.effective();
     expect(e).toMatchObject({ AU12L: 0, AU14L: 0 });
-    expect(gradeOf(e.AU12R)).toBe('A');
-    expect(gradeOf(e.AU14R)).toBe('A');
+    expect(gradeOf(e.AU12R)).toBe('C');
+    expect(gradeOf(e.AU14R)).toBe('D');
     const c = contractions(s, DEFAULT_RIG);
-    expect(c['zygomaticus-major-r']).toBeCloseTo(0.08, 6);
-    expect(c['buccinator-r']).toBeCloseTo(0.08, 6);
+    expect(c['zygomaticus-major-r']).toBeCloseTo(0.25, 6);
+    expect(c['buccinator-r']).toBeCloseTo(0.7, 6);
     const driven = Object.entries(c).filter(([, v]) => v > 0).map(([name]) => name);
     expect(driven.sort()).toEqual(['buccinator-r', 'zygomaticus-major-r']);
   });
