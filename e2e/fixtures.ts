@@ -1,4 +1,4 @@
-import { test as base, expect, type Page } from '@playwright/test';
+import { test as base, expect, type JSHandle, type Page } from '@playwright/test';
 
 /** Every test fails if the page logs a console error or throws. */
 export const test = base.extend<{ consoleErrors: string[] }>({
@@ -24,22 +24,54 @@ export async function waitForHead(page: Page): Promise<void> {
   await expect(page.locator('html')).toHaveAttribute('data-state', 'ready');
 }
 
+/**
+ * PNG bytes decoded in the page, by the browser itself: a handle to their pixels, to measure them there (a
+ * screenshot's pixels would be megabytes to send back). Dispose of it when done.
+ */
+export async function decodePNG(page: Page, png: Buffer): Promise<JSHandle<ImageData>> {
+  return page.evaluateHandle(async (data) => {
+    const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
+    const c = new OffscreenCanvas(image.width, image.height);
+    const ctx = c.getContext('2d')!;
+    ctx.drawImage(image, 0, 0);
+    return ctx.getImageData(0, 0, image.width, image.height);
+  }, png.toString('base64'));
+}
+
+/**
+ * Runs `measure` in the page on a PNG's pixels (see `decodePNG`) and returns what it returns. It runs in the page:
+ * it sees only its argument, `arg` with the pixels added.
+ */
+export async function measurePNG<A extends object, R>(page: Page, png: Buffer, measure: (arg: A & { pixels: ImageData }) => R | Promise<R>, arg: A): Promise<R> {
+  const pixels = await decodePNG(page, png);
+  try {
+    // The page gets the pixels in place of their handle; Playwright's types cannot follow that through a generic `A`.
+    return await page.evaluate<R, A & { pixels: JSHandle<ImageData> }>(measure as never, { ...arg, pixels });
+  } finally {
+    await pixels.dispose();
+  }
+}
+
 /** RGB of a screenshot's pixels, decoded by the browser itself: a patch of size x size around (x, y). */
 export async function screenshotPatch(page: Page, png: Buffer, x: number, y: number, size = 8): Promise<number[][]> {
-  return page.evaluate(
-    async ({ data, x, y, size }) => {
-      const img = new Image();
-      img.src = `data:image/png;base64,${data}`;
-      await img.decode();
-      const c = new OffscreenCanvas(img.width, img.height);
-      const ctx = c.getContext('2d')!;
-      ctx.drawImage(img, 0, 0);
-      const d = ctx.getImageData(Math.round(x - size / 2), Math.round(y - size / 2), size, size).data;
+  return measurePNG(
+    page,
+    png,
+    ({ pixels, x, y, size }) => {
+      const { data: d, width, height } = pixels;
+      const x0 = Math.round(x - size / 2);
+      const y0 = Math.round(y - size / 2);
       const out: number[][] = [];
-      for (let i = 0; i < d.length; i += 4) out.push([d[i], d[i + 1], d[i + 2]]);
+      for (let py = y0; py < y0 + size; py++) {
+        for (let px = x0; px < x0 + size; px++) {
+          const i = 4 * (py * width + px);
+          // Outside the picture, black (as a canvas reads there).
+          out.push(px >= 0 && px < width && py >= 0 && py < height ? [d[i], d[i + 1], d[i + 2]] : [0, 0, 0]);
+        }
+      }
       return out;
     },
-    { data: png.toString('base64'), x, y, size },
+    { x, y, size },
   );
 }
 
@@ -61,30 +93,28 @@ export interface PictureDifference {
 }
 
 export async function comparePictures(page: Page, a: Buffer, b: Buffer): Promise<PictureDifference> {
-  return page.evaluate(
-    async ([a, b]) => {
-      const pixels = async (data: string): Promise<Uint8ClampedArray> => {
-        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
-        const c = new OffscreenCanvas(image.width, image.height);
-        const ctx = c.getContext('2d')!;
-        ctx.drawImage(image, 0, 0);
-        return ctx.getImageData(0, 0, image.width, image.height).data;
-      };
-      const [A, B] = [await pixels(a), await pixels(b)];
-      if (A.length !== B.length) return { sameSize: false, mean: Number.NaN, max: Number.NaN, lit: 0 };
-      let sum = 0;
-      let max = 0;
-      let lit = 0;
-      for (let i = 0; i < A.length; i += 4) {
-        for (let c = 0; c < 3; c++) {
-          const d = Math.abs(A[i + c] - B[i + c]);
-          sum += d;
-          max = Math.max(max, d);
+  const [first, second] = [await decodePNG(page, a), await decodePNG(page, b)];
+  try {
+    return await page.evaluate(
+      ({ first, second }) => {
+        const [A, B] = [first.data, second.data];
+        if (A.length !== B.length) return { sameSize: false, mean: Number.NaN, max: Number.NaN, lit: 0 };
+        let sum = 0;
+        let max = 0;
+        let lit = 0;
+        for (let i = 0; i < A.length; i += 4) {
+          for (let c = 0; c < 3; c++) {
+            const d = Math.abs(A[i + c] - B[i + c]);
+            sum += d;
+            max = Math.max(max, d);
+          }
+          if (A[i] > 90) lit++;
         }
-        if (A[i] > 90) lit++;
-      }
-      return { sameSize: true, mean: sum / ((3 * A.length) / 4), max, lit };
-    },
-    [a.toString('base64'), b.toString('base64')],
-  );
+        return { sameSize: true, mean: sum / ((3 * A.length) / 4), max, lit };
+      },
+      { first, second },
+    );
+  } finally {
+    await Promise.all([first.dispose(), second.dispose()]);
+  }
 }

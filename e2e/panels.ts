@@ -1,5 +1,5 @@
 import type { Locator, Page } from '@playwright/test';
-import { BACKGROUND } from './fixtures';
+import { BACKGROUND, measurePNG } from './fixtures';
 
 /** A panel control by its `data-control` name (`AU12L`, `AU12-link`, `preset-happiness`, `light-keyAzimuth`, ...). */
 export function control(page: Page, name: string): Locator {
@@ -60,21 +60,17 @@ export interface FaceCrop {
 export async function faceCrop(page: Page, rect?: FaceCrop['rect'], panelLeft = 700): Promise<FaceCrop> {
   await page.waitForTimeout(400);
   const png = await page.screenshot();
-  return page.evaluate(
-    async ({ data, rect, panelLeft, background }) => {
-      const img = new Image();
-      img.src = `data:image/png;base64,${data}`;
-      await img.decode();
-      const c = new OffscreenCanvas(img.width, img.height);
-      const ctx = c.getContext('2d')!;
-      ctx.drawImage(img, 0, 0);
-      const w = Math.min(panelLeft, img.width);
-      const h = img.height - 60; // above the status bar
-      const d = ctx.getImageData(0, 0, w, h).data;
+  return measurePNG(
+    page,
+    png,
+    ({ pixels, rect, panelLeft, background }) => {
+      const { data: d, width } = pixels;
+      const w = Math.min(panelLeft, width);
+      const h = pixels.height - 60; // above the status bar
       let [x0, y0, x1, y1] = [w, h, 0, 0];
       for (let y = 0; y < h; y++) {
         for (let x = 0; x < w; x++) {
-          const i = 4 * (y * w + x);
+          const i = 4 * (y * width + x);
           if (Math.abs(d[i] - background[0]) + Math.abs(d[i + 1] - background[1]) + Math.abs(d[i + 2] - background[2]) > 30) {
             x0 = Math.min(x0, x);
             x1 = Math.max(x1, x);
@@ -98,7 +94,7 @@ export async function faceCrop(page: Page, rect?: FaceCrop['rect'], panelLeft = 
       const grey: number[] = [];
       for (let y = top; y < bottom; y++) {
         for (let x = left; x < right; x++) {
-          const i = 4 * (y * w + x);
+          const i = 4 * (y * width + x);
           const g = (d[i] + d[i + 1] + d[i + 2]) / 3;
           grey.push(g);
           sums.all += g;
@@ -121,7 +117,7 @@ export async function faceCrop(page: Page, rect?: FaceCrop['rect'], panelLeft = 
         rect: [left, top, right, bottom] as [number, number, number, number],
       };
     },
-    { data: png.toString('base64'), rect, panelLeft, background: BACKGROUND },
+    { rect, panelLeft, background: BACKGROUND },
   );
 }
 

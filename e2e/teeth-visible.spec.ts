@@ -1,6 +1,6 @@
 import type { Page } from '@playwright/test';
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, measurePNG, test } from './fixtures';
 
 interface Box {
   x: number;
@@ -43,14 +43,8 @@ async function mouthBox(page: Page): Promise<Box> {
 async function toothPixels(page: Page, box: Box): Promise<{ count: number; total: number }> {
   await page.waitForTimeout(300);
   const png = await page.screenshot({ clip: box });
-  return page.evaluate(async (data) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${data}`;
-    await img.decode();
-    const c = new OffscreenCanvas(img.width, img.height);
-    const ctx = c.getContext('2d')!;
-    ctx.drawImage(img, 0, 0);
-    const d = ctx.getImageData(0, 0, img.width, img.height).data;
+  return measurePNG(page, png, ({ pixels }) => {
+    const d = pixels.data;
     let count = 0;
     for (let i = 0; i < d.length; i += 4) {
       const [r, g, b] = [d[i], d[i + 1], d[i + 2]];
@@ -58,7 +52,7 @@ async function toothPixels(page: Page, box: Box): Promise<{ count: number; total
       if (g > 150 && r - g < 14 && r - b < 30) count++;
     }
     return { count, total: d.length / 4 };
-  }, png.toString('base64'));
+  }, {});
 }
 
 test('with the jaw open (AU26) the teeth show between the lips; closed at rest, no more than a hairline does', async ({ page }) => {

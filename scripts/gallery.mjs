@@ -13,8 +13,7 @@
 import { spawn, execSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { dirname } from 'node:path';
-import { chromium } from '@playwright/test';
-import { chromiumPath } from './chromium-path.mjs';
+import { launchBrowser, openApp } from './browser.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -46,24 +45,11 @@ const SETTLE_MS = 60_000;
 
 if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
 const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
-const browser = await chromium.launch({
-  executablePath: chromiumPath(),
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--no-first-run'],
-});
+const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: 640, height: 640 }, deviceScaleFactor: region.scale });
-  for (let i = 0; ; i++) {
-    try {
-      await page.goto(`http://127.0.0.1:${PORT}/?resolution=${resolution}`);
-      break;
-    } catch (error) {
-      if (i > 50) throw error;
-      await new Promise((r) => setTimeout(r, 200));
-    }
-  }
-  // The app sets window.face once its face is up (or marks the page as failed).
-  await page.waitForFunction(() => document.documentElement.dataset.state !== undefined, null, { timeout: 120_000 });
-  await page.evaluate(() => window.face.ready);
+  // Tried again while the server starts.
+  await openApp(page, `http://127.0.0.1:${PORT}/?resolution=${resolution}`, { timeout: 120_000, retries: 51, retryMs: 200 });
   // The page's panel column (280 px on the right) would cover part of the face in this 640 px window.
   await page.addStyleTag({ content: '.softface-panels, #status { display: none !important; }' });
   const items =

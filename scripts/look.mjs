@@ -6,8 +6,7 @@
  *   --bench  prints `face.measureRender(100)` three times: main-thread ms per `renderer.render` and `renderer.info`.
  */
 import { execSync, spawn } from 'node:child_process';
-import { chromium } from '@playwright/test';
-import { chromiumPath } from './chromium-path.mjs';
+import { launchBrowser, openApp } from './browser.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -21,27 +20,14 @@ const CLOSEUP = { x: 256, y: 150, width: 512, height: 384 };
 
 if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
 const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
-const browser = await chromium.launch({
-  executablePath: chromiumPath(),
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--no-first-run'],
-});
+const browser = await launchBrowser();
 
 /** Opens the page (retrying while the server starts) and waits for the head. */
 async function open(deviceScaleFactor) {
   const page = await browser.newPage({ viewport: VIEWPORT, deviceScaleFactor });
   page.on('pageerror', (e) => console.error(`page error: ${e.message}`));
   page.on('console', (m) => m.type() === 'error' && console.error(`console error: ${m.text()}`));
-  for (let i = 0; ; i++) {
-    try {
-      await page.goto(`http://127.0.0.1:${PORT}/?resolution=medium`);
-      break;
-    } catch (error) {
-      if (i > 50) throw error;
-      await new Promise((r) => setTimeout(r, 300));
-    }
-  }
-  await page.waitForFunction(() => document.documentElement.dataset.state, null, { timeout: 60_000 });
-  await page.evaluate(() => window.face.ready);
+  await openApp(page, `http://127.0.0.1:${PORT}/?resolution=medium`, { retries: 51, retryMs: 300 });
   // The panels would cover part of the face in close-ups; pictures show the head alone.
   await page.addStyleTag({ content: '.lil-gui { display: none !important; }' });
   return page;

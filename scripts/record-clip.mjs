@@ -5,8 +5,7 @@
  * that turns into raised brows. The page's canvas is the clip's size, so the clip frames the head as the page does.
  */
 import { readFileSync, writeFileSync } from 'node:fs';
-import { chromium } from '@playwright/test';
-import { chromiumPath } from './chromium-path.mjs';
+import { launchBrowser, openApp } from './browser.mjs';
 
 const argv = process.argv.slice(2);
 const timelineIndex = argv.indexOf('--timeline');
@@ -32,17 +31,11 @@ const timeline = timelineFile
       ],
     };
 
-const browser = await chromium.launch({
-  executablePath: chromiumPath(),
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--no-first-run'],
-});
+const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: Number(width), height: Number(height) } });
   page.on('pageerror', (e) => console.error(`page error: ${e.message}`));
-  await page.goto(url);
-  await page.waitForFunction(() => document.documentElement.dataset.state, null, { timeout: 60_000 });
-  const state = await page.evaluate(() => document.documentElement.dataset.state);
-  if (state !== 'ready') throw new Error(`the page reports "${state}": ${await page.locator('#status').innerText()}`);
+  await openApp(page, url);
   const bytes = await page.evaluate(
     async ({ timeline, width, height, fps }) => {
       const blob = await window.face.recordVideo({ timeline, width, height, fps });

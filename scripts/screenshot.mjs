@@ -6,8 +6,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
-import { chromium } from '@playwright/test';
-import { chromiumPath } from './chromium-path.mjs';
+import { launchBrowser, openApp } from './browser.mjs';
 
 const argv = process.argv.slice(2);
 const headIndex = argv.indexOf('--head');
@@ -17,17 +16,11 @@ if (!url || !out) {
   console.error('usage: node scripts/screenshot.mjs <url> <out.png> [width] [height]');
   process.exit(1);
 }
-const browser = await chromium.launch({
-  executablePath: chromiumPath(),
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--no-first-run'],
-});
+const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: Number(width), height: Number(height) } });
   page.on('pageerror', (e) => console.error(`page error: ${e.message}`));
-  await page.goto(url);
-  await page.waitForFunction(() => document.documentElement.dataset.state, null, { timeout: 60_000 });
-  const state = await page.evaluate(() => document.documentElement.dataset.state);
-  if (state !== 'ready') throw new Error(`the page reports "${state}": ${await page.locator('#status').innerText()}`);
+  await openApp(page, url);
   if (headFile) {
     const bytes = [...readFileSync(headFile)];
     await page.evaluate(async ({ name, bytes }) => window.face.loadHead(new File([new Uint8Array(bytes)], name)), { name: basename(headFile), bytes });

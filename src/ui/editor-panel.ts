@@ -3,8 +3,10 @@ import type { Controller } from 'lil-gui';
 import { typingInto } from '../embed/face-editor';
 import type { EditorState, FaceChange, FaceHandle, GizmoMode } from '../embed/face-handle';
 import { downloadBlob } from './download';
+import { FileImport } from './file-import';
 import { isHeadDrop } from './head-panel';
 import { MusclePanel } from './muscle-panel';
+import { note } from './note';
 
 /** The keys, as the panel's hint shows them. */
 export const EDITOR_HINT =
@@ -48,11 +50,11 @@ export class EditorPanel {
   private readonly redoButton: Controller;
   private readonly revertButton: Controller;
   private readonly status: HTMLDivElement;
-  private readonly message: HTMLDivElement;
-  private readonly fileInput: HTMLInputElement;
+  /** Rig files picked or dropped, and the message line. */
+  private readonly files: FileImport;
 
   /** `dropTarget` takes rig files dropped on it (the face's element). */
-  constructor(parent: GUI, private readonly face: FaceHandle, private readonly dropTarget?: HTMLElement) {
+  constructor(parent: GUI, private readonly face: FaceHandle, dropTarget?: HTMLElement) {
     const editor = face.describeEditor();
     this.state = {
       editor: editor.on,
@@ -60,13 +62,13 @@ export class EditorPanel {
       mirror: editor.mirror,
       undo: () => face.undo(),
       redo: () => face.redo(),
-      revert: () => this.attempt(() => face.revertRig()),
+      revert: () => this.files.attempt(() => face.revertRig()),
       exportRig: () => this.exportRig(),
-      importRig: () => this.fileInput.click(),
+      importRig: () => this.files.pick(),
       newType: 'linear',
-      add: () => this.attempt(() => face.createMuscle(this.state.newType)),
-      mirrorLeft: () => this.attempt(() => face.mirrorSide('left')),
-      mirrorRight: () => this.attempt(() => face.mirrorSide('right')),
+      add: () => this.files.attempt(() => face.createMuscle(this.state.newType)),
+      mirrorLeft: () => this.files.attempt(() => face.mirrorSide('left')),
+      mirrorRight: () => this.files.attempt(() => face.mirrorSide('right')),
     };
     this.folder = parent.addFolder('Editor');
     const s = this.state;
@@ -90,26 +92,20 @@ export class EditorPanel {
     this.add(this.revertButton, 'revert-rig');
     this.add(this.folder.add(s, 'exportRig').name('export rig'), 'export-rig');
     this.add(this.folder.add(s, 'importRig').name('import rig (or drop a .json file)'), 'import-rig');
-    this.fileInput = document.createElement('input');
-    Object.assign(this.fileInput, { type: 'file', accept: '.json,application/json', hidden: true });
-    this.fileInput.dataset.control = 'import-file';
-    this.fileInput.addEventListener('change', this.onFile);
-    this.folder.$children.append(this.fileInput);
-    this.message = note('editor-message', { color: '#ff8a80', whiteSpace: 'pre-wrap' });
-    this.folder.$children.append(this.message);
+    // A head (.glb, .gltf, .obj) dropped on the face is the Head folder's to load.
+    this.files = new FileImport(this.folder, 'import-file', 'editor-message', { color: '#ff8a80' })
+      .accept('.json,application/json')
+      .onText((text, file) => face.setRig(text, file.name), (file) => `imported ${file.name}`)
+      .dropOn(dropTarget, (files) => files.length > 0 && !isHeadDrop(files));
     this.muscle = new MusclePanel(this.folder, face);
     this.refresh();
     this.unsubscribe = face.onChange((change) => this.changed(change));
     window.addEventListener('keydown', this.onKey);
-    dropTarget?.addEventListener('dragover', this.onDragOver);
-    dropTarget?.addEventListener('drop', this.onDrop);
   }
 
   dispose(): void {
     window.removeEventListener('keydown', this.onKey);
-    this.dropTarget?.removeEventListener('dragover', this.onDragOver);
-    this.dropTarget?.removeEventListener('drop', this.onDrop);
-    this.fileInput.removeEventListener('change', this.onFile);
+    this.files.destroy();
     this.unsubscribe();
     this.muscle.dispose();
     this.folder.destroy();
@@ -137,43 +133,6 @@ export class EditorPanel {
     downloadBlob(new Blob([this.face.exportRig()], { type: 'application/json' }), `${e.rigName}.rig.json`);
   }
 
-  /** Reads a rig file and makes it the rig; a refusal is shown in the folder (opened) and changes nothing. */
-  private async importFile(file: File): Promise<void> {
-    const text = await file.text();
-    if (this.attempt(() => this.face.setRig(text, file.name))) this.message.textContent = `imported ${file.name}`;
-  }
-
-  /** Runs an edit; a refusal's message is shown. Returns whether it went through. */
-  private attempt(edit: () => void): boolean {
-    try {
-      edit();
-      this.message.textContent = '';
-      return true;
-    } catch (error) {
-      this.message.textContent = (error as Error).message;
-      this.folder.open();
-      return false;
-    }
-  }
-
-  private readonly onFile = (): void => {
-    const file = this.fileInput.files?.[0];
-    this.fileInput.value = '';
-    if (file) void this.importFile(file);
-  };
-
-  private readonly onDragOver = (event: DragEvent): void => {
-    if (event.dataTransfer?.types.includes('Files')) event.preventDefault();
-  };
-
-  private readonly onDrop = (event: DragEvent): void => {
-    const file = event.dataTransfer?.files[0];
-    // A head (.glb, .gltf, .obj) is the Head folder's to load.
-    if (!file || isHeadDrop(event.dataTransfer.files)) return;
-    event.preventDefault();
-    void this.importFile(file);
-  };
-
   private add(controller: Controller, name: string): void {
     controller.domElement.dataset.control = name;
     this.controllers.push(controller);
@@ -197,12 +156,4 @@ export class EditorPanel {
     if (!on) this.face.setEditor(true);
     else if (this.face.getSelectedMuscle() === null) this.face.setEditor(false);
   };
-}
-
-/** A line of text in a folder, found by its `data-control` name. */
-function note(name: string, style: Partial<CSSStyleDeclaration>): HTMLDivElement {
-  const div = document.createElement('div');
-  div.dataset.control = name;
-  Object.assign(div.style, { padding: '2px 8px 4px', fontSize: '11px', lineHeight: '1.35' }, style);
-  return div;
 }

@@ -2,6 +2,7 @@ import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { FaceHandle } from '../embed/face-handle';
 import { downloadBlob } from './download';
+import { note } from './note';
 
 /** The file the export downloads as. */
 export const GLTF_FILE_NAME = 'softface.glb';
@@ -28,9 +29,7 @@ export class ExportPanel {
     mark(this.folder.add(s, 'timeline').name('timeline animation'), 'gltf-timeline');
     mark(this.folder.add(s, 'fps', 1, 60, 1).name('animation fps'), 'gltf-fps');
     this.button = mark(this.folder.add(s, 'run').name(`export ${GLTF_FILE_NAME}`), 'gltf-export');
-    this.message = document.createElement('div');
-    this.message.dataset.control = 'gltf-message';
-    Object.assign(this.message.style, { padding: '2px 8px 4px', fontSize: '11px', lineHeight: '1.35', whiteSpace: 'pre-wrap' });
+    this.message = note('gltf-message', { whiteSpace: 'pre-wrap' });
     this.folder.$children.append(this.message);
   }
 

@@ -1,6 +1,8 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import { FileImport } from './file-import';
+import { note } from './note';
 
 /** Files that make a head (or come with a `.gltf`): what the picker offers and what a drop is taken as. */
 const HEAD_FILE = /\.(glb|gltf|obj|bin|png|jpe?g|webp|ktx2)$/i;
@@ -20,14 +22,15 @@ export function isHeadDrop(files: ArrayLike<File>): boolean {
 export class HeadPanel {
   readonly folder: GUI;
   private readonly state = {
-    load: (): void => this.fileInput.click(),
+    load: (): void => this.files.pick(),
     revert: (): void => void this.run('default head', () => this.face.revertHead()),
     guide: (): void => this.guide(),
     cancel: (): void => this.face.cancelLandmarkGuide(),
   };
   private readonly status: HTMLDivElement;
+  /** Head files picked or dropped, and the message line. */
+  private readonly files: FileImport;
   private readonly message: HTMLDivElement;
-  private readonly fileInput: HTMLInputElement;
   private readonly revertButton: Controller;
   private readonly guideButton: Controller;
   private readonly cancelButton: Controller;
@@ -35,7 +38,7 @@ export class HeadPanel {
   private unplaced: File[] | undefined;
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle, private readonly dropTarget?: HTMLElement) {
+  constructor(parent: GUI, private readonly face: FaceHandle, dropTarget?: HTMLElement) {
     this.folder = parent.addFolder('Head');
     this.status = note('head-status', { opacity: '0.85' });
     this.folder.$children.append(this.status);
@@ -46,23 +49,20 @@ export class HeadPanel {
     this.guideButton.domElement.dataset.control = 'guide-landmarks';
     this.cancelButton = this.folder.add(this.state, 'cancel').name('cancel placing landmarks');
     this.cancelButton.domElement.dataset.control = 'cancel-landmarks';
-    this.fileInput = document.createElement('input');
-    Object.assign(this.fileInput, { type: 'file', accept: '.glb,.gltf,.obj,.bin,image/*', multiple: true, hidden: true });
-    this.fileInput.dataset.control = 'head-file';
-    this.fileInput.addEventListener('change', this.onFile);
-    this.folder.$children.append(this.fileInput);
-    this.message = note('head-message', { whiteSpace: 'pre-wrap' });
-    this.folder.$children.append(this.message);
+    this.files = new FileImport(this.folder, 'head-file', 'head-message')
+      .accept('.glb,.gltf,.obj,.bin,image/*', HEAD_FILE)
+      .multiple()
+      .onFiles((files) => this.load(files))
+      .dropOn(dropTarget, isHeadDrop);
+    this.message = this.files.message;
     this.refresh();
     this.unsubscribe = face.onChange((change: FaceChange) => {
       if (change === 'head' || change === 'landmarks') this.refresh();
     });
-    dropTarget?.addEventListener('drop', this.onDrop);
   }
 
   dispose(): void {
-    this.dropTarget?.removeEventListener('drop', this.onDrop);
-    this.fileInput.removeEventListener('change', this.onFile);
+    this.files.destroy();
     this.unsubscribe();
     this.folder.destroy();
   }
@@ -119,30 +119,8 @@ export class HeadPanel {
       if (this.message.textContent === `${what}…`) this.message.textContent = '';
     } catch (error) {
       this.message.style.color = '#ff8a80';
-      this.message.textContent = (error as Error).message;
-      this.folder.open();
+      this.files.refused(error);
     }
     this.refresh();
   }
-
-  private readonly onFile = (): void => {
-    const files = Array.from(this.fileInput.files ?? []).filter((f) => HEAD_FILE.test(f.name));
-    this.fileInput.value = '';
-    if (files.length > 0) this.load(files);
-  };
-
-  private readonly onDrop = (event: DragEvent): void => {
-    const files = event.dataTransfer?.files;
-    if (!files || !isHeadDrop(files)) return;
-    event.preventDefault();
-    this.load(Array.from(files));
-  };
-}
-
-/** A line of text in a folder, found by its `data-control` name. */
-function note(name: string, style: Partial<CSSStyleDeclaration>): HTMLDivElement {
-  const div = document.createElement('div');
-  div.dataset.control = name;
-  Object.assign(div.style, { padding: '2px 8px 4px', fontSize: '11px', lineHeight: '1.35' }, style);
-  return div;
 }

@@ -3,6 +3,8 @@ import type { Controller } from 'lil-gui';
 import { emptyTimeline, PRESET_TARGET_PREFIX, type Timeline } from '../core/timeline';
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
 import { downloadBlob } from './download';
+import { FileImport } from './file-import';
+import { note } from './note';
 
 /** Where the panel's edits and imports say they came from in a refusal's message. */
 const PANEL_SOURCE = 'Timeline panel';
@@ -33,13 +35,13 @@ export class TimelinePanel {
   private playLabel = 'play';
   private readonly timeSlider: Controller;
   private readonly list: HTMLDivElement;
-  private readonly message: HTMLDivElement;
-  private readonly fileInput: HTMLInputElement;
+  /** Timeline files picked, and the message line. */
+  private readonly files: FileImport;
   private readonly unsubscribe: () => void;
 
   constructor(parent: GUI, private readonly face: FaceHandle) {
     this.state = {
-      play: () => this.attempt(() => (face.timelineState().playing ? face.pause() : face.play())),
+      play: () => this.files.attempt(() => (face.timelineState().playing ? face.pause() : face.play())),
       time: 0,
       loop: false,
       target: 'AU12',
@@ -48,9 +50,9 @@ export class TimelinePanel {
       apex: 1,
       offset: 0.8,
       add: () => this.addAction(),
-      clear: () => this.attempt(() => face.clearTimeline()),
+      clear: () => this.files.attempt(() => face.clearTimeline()),
       exportTimeline: () => this.exportTimeline(),
-      importTimeline: () => this.fileInput.click(),
+      importTimeline: () => this.files.pick(),
     };
     const s = this.state;
     this.folder = parent.addFolder('Timeline');
@@ -59,7 +61,7 @@ export class TimelinePanel {
       this.folder
         .add(s, 'time', 0, 1, 0.01)
         .name('time (s)')
-        .onChange((t: number) => this.attempt(() => face.timelineState().loaded && face.seek(t))),
+        .onChange((t: number) => this.files.attempt(() => face.timelineState().loaded && face.seek(t))),
       'timeline-time',
     );
     this.add(this.folder.add(s, 'loop').onChange((on: boolean) => this.edit((t) => (t.loop = on))), 'timeline-loop');
@@ -78,20 +80,16 @@ export class TimelinePanel {
     this.add(this.folder.add(s, 'clear').name('clear timeline'), 'timeline-clear');
     this.add(this.folder.add(s, 'exportTimeline').name('export timeline'), 'timeline-export');
     this.add(this.folder.add(s, 'importTimeline').name('import timeline'), 'timeline-import');
-    this.fileInput = document.createElement('input');
-    Object.assign(this.fileInput, { type: 'file', accept: '.json,application/json', hidden: true });
-    this.fileInput.dataset.control = 'timeline-file';
-    this.fileInput.addEventListener('change', this.onFile);
-    this.folder.$children.append(this.fileInput);
-    this.message = note('timeline-message', { color: '#ff8a80', whiteSpace: 'pre-wrap' });
-    this.folder.$children.append(this.message);
+    this.files = new FileImport(this.folder, 'timeline-file', 'timeline-message', { color: '#ff8a80' })
+      .accept('.json,application/json')
+      .onText((text, file) => face.setTimeline(text, file.name), (file) => `imported ${file.name}`);
     this.refresh(true);
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }
 
   /** Removes the folder and stops following the face. */
   dispose(): void {
-    this.fileInput.removeEventListener('change', this.onFile);
+    this.files.destroy();
     this.unsubscribe();
     this.folder.destroy();
   }
@@ -130,7 +128,7 @@ export class TimelinePanel {
 
   /** Changes a copy of the timeline (an empty one if none is loaded) and loads it, keeping its clock and playing. */
   private edit(change: (t: Timeline) => void): void {
-    this.attempt(() => {
+    this.files.attempt(() => {
       const before = this.face.timelineState();
       const t = this.face.getTimeline() ?? emptyTimeline();
       change(t);
@@ -144,36 +142,11 @@ export class TimelinePanel {
   private exportTimeline(): void {
     const t = this.face.getTimeline();
     if (!t) {
-      this.message.textContent = 'no timeline to export: add an action or import one';
+      this.files.message.textContent = 'no timeline to export: add an action or import one';
       return;
     }
     downloadBlob(new Blob([JSON.stringify(t, null, 2)], { type: 'application/json' }), 'timeline.json');
   }
-
-  /** Reads a timeline file and loads it; a refusal is shown in the folder (opened) and changes nothing. */
-  private async importFile(file: File): Promise<void> {
-    const text = await file.text();
-    if (this.attempt(() => this.face.setTimeline(text, file.name))) this.message.textContent = `imported ${file.name}`;
-  }
-
-  /** Runs a change; a refusal's message is shown. Returns whether it went through. */
-  private attempt(change: () => void): boolean {
-    try {
-      change();
-      this.message.textContent = '';
-      return true;
-    } catch (error) {
-      this.message.textContent = (error as Error).message;
-      this.folder.open();
-      return false;
-    }
-  }
-
-  private readonly onFile = (): void => {
-    const file = this.fileInput.files?.[0];
-    this.fileInput.value = '';
-    if (file) void this.importFile(file);
-  };
 
   private add(controller: Controller, name: string): Controller {
     controller.domElement.dataset.control = name;
@@ -202,11 +175,4 @@ function seconds(x: number): string {
 
 function round(x: number): number {
   return Math.round(x * 1000) / 1000;
-}
-
-function note(name: string, style: Partial<CSSStyleDeclaration>): HTMLDivElement {
-  const div = document.createElement('div');
-  div.dataset.control = name;
-  Object.assign(div.style, { padding: '2px 8px 4px', fontSize: '11px', lineHeight: '1.35' }, style);
-  return div;
 }

@@ -3,6 +3,7 @@ import type { Controller } from 'lil-gui';
 import type { FaceHandle } from '../embed/face-handle';
 import { VIDEO_DEFAULTS, type VideoFormat } from '../embed/video-options';
 import { downloadBlob, fileTimestamp } from './download';
+import { note } from './note';
 
 /** The sizes offered, as `width x height`. */
 const SIZES = ['320 x 240', '640 x 480', '1280 x 720', '1920 x 1080', '1080 x 1080'];
@@ -54,9 +55,7 @@ export class VideoPanel {
     Object.assign(this.progress.style, { display: 'block', width: 'calc(100% - 16px)', margin: '2px 8px 4px' });
     this.folder.$children.append(this.progress);
     this.cancelButton = mark(this.folder.add(s, 'cancel'), 'video-cancel').disable();
-    this.message = document.createElement('div');
-    this.message.dataset.control = 'video-message';
-    Object.assign(this.message.style, { padding: '2px 8px 4px', fontSize: '11px', lineHeight: '1.35', whiteSpace: 'pre-wrap' });
+    this.message = note('video-message', { whiteSpace: 'pre-wrap' });
     this.folder.$children.append(this.message);
   }
 
