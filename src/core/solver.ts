@@ -182,6 +182,8 @@ export class SkinSolver {
   private readonly bendStiffness: Float32Array;
   /** Bending projections of each vertex per outer iteration, and the most any vertex takes (see setParameters). */
   private readonly bendPasses: Uint8Array;
+  /** Per vertex, the bending constraint's value at rest (see projectBending), so the frames need not read rest. */
+  private readonly bendRest: Float64Array;
   private maxBendPasses = 1;
   /** The region's vertices with more than one bending pass, ascending (the later passes walk only these). */
   private readonly multiPass: Uint32Array;
@@ -268,6 +270,7 @@ export class SkinSolver {
     this.shadedTriangles = createTriangleLists(topology);
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
     this.neighbourOffsets = neighbourOffsets(topology);
+    this.bendRest = bendingAtRest(topology, this.neighbourOffsets);
     this.blocks = vertexBlocks(topology);
     this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory);
     this.colliders = options.colliders ?? [];
@@ -796,7 +799,7 @@ export class SkinSolver {
   private projectBending(): void {
     if (this.params.wrinkleSpacing <= 0) return;
     const x = this.buffers.positions;
-    const X = this.topology.rest;
+    const atRest = this.bendRest;
     const N = this.topology.restNormals;
     const start = this.topology.neighbourStart;
     const nb = this.neighbourOffsets;
@@ -819,15 +822,14 @@ export class SkinSolver {
         const nx = N[i];
         const ny = N[i + 1];
         const nz = N[i + 2];
-        // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal.
+        // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal: the
+        // neighbours' mean height above the vertex now, less the same at rest.
         let mean = 0;
         for (let j = j0; j < j1; j++) {
           const k = nb[j];
-          mean += (x[k] - X[k]) * nx + (x[k + 1] - X[k + 1]) * ny + (x[k + 2] - X[k + 2]) * nz;
+          mean += x[k] * nx + x[k + 1] * ny + x[k + 2] * nz;
         }
-        mean /= degree;
-        const own = (x[i] - X[i]) * nx + (x[i + 1] - X[i + 1]) * ny + (x[i + 2] - X[i + 2]) * nz;
-        const C = mean - own;
+        const C = mean / degree - (x[i] * nx + x[i + 1] * ny + x[i + 2] * nz) - atRest[v];
         // Gradient: -n at the vertex, n / degree at each neighbour; squared norm 1 + 1 / degree.
         const lambda = (s * C) / (1 + 1 / degree);
         x[i] += lambda * nx;
@@ -1000,6 +1002,29 @@ export const MIN_PROJECTED_AREA = 0.25;
 const ORIENTATION_PASSES = 6;
 
 /** Each triangle's rest unit normal and twice its least projected area (MIN_PROJECTED_AREA of the rest), xyzA. */
+/**
+ * The neighbours' mean height above each vertex at rest, along the vertex's rest normal: what the bending constraint
+ * takes away from the same height now, so that a frame reads only the current positions.
+ */
+function bendingAtRest(topology: SkinTopology, offsets: Uint32Array): Float64Array {
+  const X = topology.rest;
+  const N = topology.restNormals;
+  const start = topology.neighbourStart;
+  const out = new Float64Array(X.length / 3);
+  for (let v = 0; v < out.length; v++) {
+    const degree = start[v + 1] - start[v];
+    if (degree === 0) continue;
+    const i = 3 * v;
+    let mean = 0;
+    for (let j = start[v]; j < start[v + 1]; j++) {
+      const k = offsets[j];
+      mean += X[k] * N[i] + X[k + 1] * N[i + 1] + X[k + 2] * N[i + 2];
+    }
+    out[v] = mean / degree - (X[i] * N[i] + X[i + 1] * N[i + 1] + X[i + 2] * N[i + 2]);
+  }
+  return out;
+}
+
 function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Array {
   const count = triangles.length / 3;
   const out = new Float32Array(4 * count);
