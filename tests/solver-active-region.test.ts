@@ -23,6 +23,12 @@ function settle(solver: { step(): boolean }, maxFrames = 1500): void {
 /** Vertex v's xyz in `a` equal those in `b` bit for bit. */
 const sameAt = (a: Float32Array, b: Float32Array, v: number): boolean => a[3 * v] === b[3 * v] && a[3 * v + 1] === b[3 * v + 1] && a[3 * v + 2] === b[3 * v + 2];
 
+/**
+ * How near the region's solve keeps to the whole-mesh one, times the mesh size: the region leaves out skin the
+ * whole-mesh solve moves by less than ACTIVE_GROW (5e-5), and the two differ by a few times that at most.
+ */
+const MATCH = 1e-4;
+
 function largestDistance(a: Float32Array, b: Float32Array): number {
   let worst = 0;
   for (let i = 0; i < a.length; i += 3) worst = Math.max(worst, Math.hypot(a[i] - b[i], a[i + 1] - b[i + 1], a[i + 2] - b[i + 2]));
@@ -47,11 +53,11 @@ describe('the active region on the head', () => {
     }
   });
 
-  it('gives the shape of the whole-mesh solve, within 1e-5 of the mesh size, solving part of the skin', () => {
+  it('gives the shape of the whole-mesh solve, within 1e-4 of the mesh size, solving part of the skin', () => {
     const t = region.host.topology;
     const x = region.host.solver.buffers.positions;
     expect(largestDistance(whole.host.solver.buffers.positions, t.rest)).toBeGreaterThan(1e-3 * t.size); // it did move
-    expect(largestDistance(x, whole.host.solver.buffers.positions)).toBeLessThan(1e-5 * t.size);
+    expect(largestDistance(x, whole.host.solver.buffers.positions)).toBeLessThan(MATCH * t.size);
     expect(region.host.solver.activeVertexCount).toBeGreaterThan(0);
     expect(region.host.solver.activeVertexCount).toBeLessThan(0.6 * t.vertexCount);
     // The skin it did not solve is exactly at rest, positions and normals.
@@ -105,7 +111,7 @@ describe('the active region on a sheet', () => {
       s.setMuscleTargets(vertices, targets, 1, 0);
       solve(s, 300);
     }
-    expect(largestDistance(region.buffers.positions, whole.buffers.positions)).toBeLessThan(1e-5 * t.size);
+    expect(largestDistance(region.buffers.positions, whole.buffers.positions)).toBeLessThan(MATCH * t.size);
     let far = 0;
     for (let v = 0; v < t.vertexCount; v++) {
       if (t.rest[3 * v] < 0.04) continue; // 14 cm and more from the patch's centre
@@ -130,7 +136,7 @@ describe('the active region and colliders that move', () => {
       }
       const t = region.host.topology;
       expect(largestDistance(whole.host.solver.buffers.positions, t.rest)).toBeGreaterThan(1e-2 * t.size);
-      expect(largestDistance(region.host.solver.buffers.positions, whole.host.solver.buffers.positions)).toBeLessThan(1e-5 * t.size);
+      expect(largestDistance(region.host.solver.buffers.positions, whole.host.solver.buffers.positions)).toBeLessThan(MATCH * t.size);
     }
   });
 
@@ -162,6 +168,6 @@ describe('the active region and colliders that move', () => {
     let lifted = 0;
     for (let v = 0; v < t.vertexCount; v++) lifted = Math.max(lifted, whole.buffers.positions[3 * v + 2] - t.rest[3 * v + 2]);
     expect(lifted).toBeGreaterThan(0.002);
-    expect(largestDistance(region.buffers.positions, whole.buffers.positions)).toBeLessThan(1e-5 * t.size);
+    expect(largestDistance(region.buffers.positions, whole.buffers.positions)).toBeLessThan(MATCH * t.size);
   });
 });
