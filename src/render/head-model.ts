@@ -2,7 +2,7 @@ import { Box3, BufferAttribute, Mesh, Object3D, Texture, Vector3, type Material 
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { HEAD_NODES } from '../core/head-nodes';
 import { createHeadMaterials } from './materials';
-import { skinTint } from './skin-tint';
+import { mouthLight, SKIN_TINT_DEFAULTS, skinTint } from './skin-tint';
 
 /** What the model file's scene extras say about it (written by scripts/build-head-model.ts). */
 export interface HeadModelInfo {
@@ -64,7 +64,17 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
   materials.teeth.vertexColors = true;
   materials.gums.vertexColors = true;
   const tongue = root.getObjectByName(HEAD_NODES.tongue);
-  if (tongue) forEachMesh(tongue, (m) => replaceMaterial(m, materials.tongue));
+  if (tongue) {
+    forEachMesh(tongue, (m) => {
+      replaceMaterial(m, materials.tongue);
+      // Darker toward the throat, as the inner mouth (its positions are in the head's frame, see HEAD_NODES).
+      const position = m.geometry.getAttribute('position');
+      const light = new Float32Array(3 * position.count);
+      for (let i = 0; i < position.count; i++) light.fill(mouthLight(position.getZ(i), SKIN_TINT_DEFAULTS.mouth[2]), 3 * i, 3 * i + 3);
+      m.geometry.setAttribute('color', new BufferAttribute(light, 3));
+    });
+  }
+  materials.tongue.vertexColors = true;
 
   const eyes = HEAD_NODES.eyes.map((n) => root.getObjectByName(n)).filter((o): o is Object3D => !!o);
   const byName: Partial<Record<string, Material>> = { sclera: materials.sclera, iris: materials.iris, cornea: materials.cornea };

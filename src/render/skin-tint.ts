@@ -25,7 +25,7 @@ export const SKIN_TINT_DEFAULTS: Readonly<Required<SkinTintOptions>> = Object.fr
   lipHalfWidth: 0.026,
   upperLip: 0.0115,
   lowerLip: 0.011,
-  innerMouthUv: [0.74, 0.94, 0.095] as const,
+  innerMouthUv: [0.74, 0.94, 0.14] as const,
   lipTint: [0.86, 0.6, 0.62] as const,
   innerMouthTint: [0.72, 0.36, 0.4] as const,
   cheekTint: [1, 0.9, 0.9] as const,
@@ -62,10 +62,25 @@ export function skinTint(positions: ArrayLike<number>, uvs: ArrayLike<number>, o
       const lip = (1 - smoothstep(0.75, 1.05, Math.abs(y) / Math.max(h, 1e-6))) * (1 - smoothstep(0.8, 1, across));
       for (let k = 0; k < 3; k++) tint[k] *= 1 + lip * (o.lipTint[k] - 1);
     }
-    if (u > o.innerMouthUv[0] && u < o.innerMouthUv[1] && v < o.innerMouthUv[2]) for (let k = 0; k < 3; k++) tint[k] = o.innerMouthTint[k];
+    if (u > o.innerMouthUv[0] && u < o.innerMouthUv[1] && v < o.innerMouthUv[2]) {
+      const light = mouthLight(z, mz);
+      for (let k = 0; k < 3; k++) tint[k] = o.innerMouthTint[k] * light;
+    }
     out.set(tint, 3 * i);
   }
   return out;
+}
+
+/** Light left 5 cm or more inside the mouth: what comes in through the lips is mostly absorbed by then. */
+export const DEEP_MOUTH_LIGHT = 0.2;
+
+/**
+ * How much of the room's light reaches the mouth's inside at depth `z` (metres, +z toward the face's front), with the
+ * mouth slit's front at `front`: all of it just behind the lips, falling smoothly to DEEP_MOUTH_LIGHT 5 cm in. A
+ * multiplier of the inner mouth's and the tongue's albedo, as the teeth have their occlusion baked.
+ */
+export function mouthLight(z: number, front: number): number {
+  return DEEP_MOUTH_LIGHT + (1 - DEEP_MOUTH_LIGHT) * smoothstep(front - 0.05, front - 0.005, z);
 }
 
 function smoothstep(a: number, b: number, x: number): number {
