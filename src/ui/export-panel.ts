@@ -3,6 +3,7 @@ import type { Controller } from 'lil-gui';
 import type { FaceHandle } from '../embed/face-handle';
 import { downloadBlob } from './download';
 import { note } from './note';
+import { named } from './named';
 
 /** The file the export downloads as. */
 export const GLTF_FILE_NAME = 'softface.glb';
@@ -24,11 +25,11 @@ export class ExportPanel {
   constructor(parent: GUI, private readonly face: FaceHandle) {
     this.folder = parent.addFolder('Export');
     const s = this.state;
-    mark(this.folder.add(s, 'actionUnits').name('action units'), 'gltf-action-units').domElement.title = 'Action Unit ids, comma-separated (AU12, AU12L, AU17)';
-    mark(this.folder.add(s, 'presets').name('presets'), 'gltf-presets').domElement.title = `preset names, comma-separated (${face.listPresets().map((p) => p.name).join(', ')})`;
-    mark(this.folder.add(s, 'timeline').name('timeline animation'), 'gltf-timeline');
-    mark(this.folder.add(s, 'fps', 1, 60, 1).name('animation fps'), 'gltf-fps');
-    this.button = mark(this.folder.add(s, 'run').name(`export ${GLTF_FILE_NAME}`), 'gltf-export');
+    named(this.folder.add(s, 'actionUnits').name('action units'), 'gltf-action-units').domElement.title = 'Action Unit ids, comma-separated (AU12, AU12L, AU17)';
+    named(this.folder.add(s, 'presets').name('presets'), 'gltf-presets').domElement.title = `preset names, comma-separated (${face.listPresets().map((p) => p.name).join(', ')})`;
+    named(this.folder.add(s, 'timeline').name('timeline animation'), 'gltf-timeline');
+    named(this.folder.add(s, 'fps', 1, 60, 1).name('animation fps'), 'gltf-fps');
+    this.button = named(this.folder.add(s, 'run').name(`export ${GLTF_FILE_NAME}`), 'gltf-export');
     this.message = note('gltf-message', { whiteSpace: 'pre-wrap' });
     this.folder.$children.append(this.message);
   }
@@ -85,9 +86,4 @@ function list(text: string): string[] {
     .split(',')
     .map((x) => x.trim())
     .filter((x) => x !== '');
-}
-
-function mark(controller: Controller, name: string): Controller {
-  controller.domElement.dataset.control = name;
-  return controller;
 }

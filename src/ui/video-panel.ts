@@ -4,6 +4,7 @@ import type { FaceHandle } from '../embed/face-handle';
 import { VIDEO_DEFAULTS, type VideoFormat } from '../embed/video-options';
 import { downloadBlob, fileTimestamp } from './download';
 import { note } from './note';
+import { named } from './named';
 
 /** The sizes offered, as `width x height`. */
 const SIZES = ['320 x 240', '640 x 480', '1280 x 720', '1920 x 1080', '1080 x 1080'];
@@ -43,18 +44,18 @@ export class VideoPanel {
     };
     const s = this.state;
     this.folder = parent.addFolder('Video');
-    mark(this.folder.add(s, 'fps', RATES), 'video-fps');
-    mark(this.folder.add(s, 'size', SIZES), 'video-size');
-    mark(this.folder.add(s, 'seconds', 0, 60, 0.1).name('seconds (0: timeline)'), 'video-seconds');
-    mark(this.folder.add(s, 'format', FORMATS), 'video-format');
-    this.recordButton = mark(this.folder.add(s, 'record'), 'video-record');
+    named(this.folder.add(s, 'fps', RATES), 'video-fps');
+    named(this.folder.add(s, 'size', SIZES), 'video-size');
+    named(this.folder.add(s, 'seconds', 0, 60, 0.1).name('seconds (0: timeline)'), 'video-seconds');
+    named(this.folder.add(s, 'format', FORMATS), 'video-format');
+    this.recordButton = named(this.folder.add(s, 'record'), 'video-record');
     this.progress = document.createElement('progress');
     this.progress.dataset.control = 'video-progress';
     this.progress.max = 1;
     this.progress.value = 0;
     Object.assign(this.progress.style, { display: 'block', width: 'calc(100% - 16px)', margin: '2px 8px 4px' });
     this.folder.$children.append(this.progress);
-    this.cancelButton = mark(this.folder.add(s, 'cancel'), 'video-cancel').disable();
+    this.cancelButton = named(this.folder.add(s, 'cancel'), 'video-cancel').disable();
     this.message = note('video-message', { whiteSpace: 'pre-wrap' });
     this.folder.$children.append(this.message);
   }
@@ -100,9 +101,4 @@ export class VideoPanel {
       }
     }
   }
-}
-
-function mark(controller: Controller, name: string): Controller {
-  controller.domElement.dataset.control = name;
-  return controller;
 }
