@@ -59,7 +59,11 @@ export interface SkinParameters {
    * it is zero, so released skin returns exactly to rest.
    */
   bulge: number;
-  /** The solver sleeps once no vertex moves more than this in a frame, relative to the mesh size. */
+  /**
+   * The solver sleeps once no vertex moves more than this in a frame, relative to the mesh size. The default, 2e-6
+   * (0.8 um a frame on the default head), stops within 33 um of where 1e-6 stops on the medium head's expressions,
+   * 7 to 30 % sooner (happiness 100 frames against 132, AU26 64 against 91).
+   */
   sleepTolerance: number;
   /**
    * Share of its last frame's move each vertex starts the next frame with (heavy-ball acceleration). The frame's
@@ -78,7 +82,7 @@ export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
   wrinkleSpacing: 0.012,
   inwardResistance: 3,
   bulge: 0.2,
-  sleepTolerance: 1e-6,
+  sleepTolerance: 2e-6,
   momentum: 0.5,
 };
 
