@@ -1,8 +1,7 @@
 /**
  * Mirroring muscles across the face's midplane x = 0 (the subject's left is +x): points get x negated, Euler angles
  * (R = Rz Ry Rx) get y and z negated, brush spheres move with the points, and `-l` / `-r` names and left / right sides
- * swap. This is how the default rig's
- * right side is made from its left. Pure: no DOM, no three.js.
+ * swap. This is how the default rig's right side is made from its left. Pure: no DOM, no three.js.
  */
 import type { BrushSphere, Muscle, MuscleSide, Vec3 } from './rig-types';
 

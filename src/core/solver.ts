@@ -1005,7 +1005,6 @@ export const MIN_PROJECTED_AREA = 0.25;
 /** At most this many orientation passes end a frame (they stop once a pass corrects nothing). */
 const ORIENTATION_PASSES = 6;
 
-/** Each triangle's rest unit normal and twice its least projected area (MIN_PROJECTED_AREA of the rest), xyzA. */
 /**
  * The neighbours' mean height above each vertex at rest, along the vertex's rest normal: what the bending constraint
  * takes away from the same height now, so that a frame reads only the current positions.
@@ -1029,6 +1028,7 @@ function bendingAtRest(topology: SkinTopology, offsets: Uint32Array): Float64Arr
   return out;
 }
 
+/** Each triangle's rest unit normal and twice its least projected area (MIN_PROJECTED_AREA of the rest), xyzA. */
 function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Array {
   const count = triangles.length / 3;
   const out = new Float32Array(4 * count);
