@@ -1,5 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { ACTION_UNITS } from '../src/core/facs';
+import { LATE_MOTION } from '../src/core/solver';
 import { ACTION_UNIT_MEASURES, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES, returnToRest, settleExpression } from './fixtures/head-simulation';
 
@@ -18,6 +19,8 @@ describe('every Action Unit at full intensity on the medium head', () => {
     (id) => {
       const r = settleExpression(sim, id, MAX_SETTLE_FRAMES);
       expect(r).toMatchObject({ sleeping: true, nonFinite: 0, inverted: 0 });
+      // Converged, not stopped by the safety net.
+      expect(r.frames).toBeLessThan(LATE_MOTION);
       // Its FACS amount (README, "How far each Action Unit moves the face"); a unit may have more than one measure
       // (AU4: down, and toward the midline).
       const rest = sim.host.topology.rest;

@@ -181,6 +181,12 @@ export class SkinSolver {
   private readonly calm: Uint8Array;
   /** Frames solved since the last input or parameter change. */
   private motionFrames = 0;
+  /** Each vertex's way (the sum of its moves) since the loop window began (see breakLoops). */
+  private readonly path: Float32Array;
+  /** Scratch marks of the vertices breakLoops slows. */
+  private readonly looping: Uint8Array;
+  /** The longest way a vertex went in the last loop window. */
+  private lastLongest = 0;
   private readonly held: Uint32Array;
   private heldCount = 0;
   private readonly bendStiffness: Float32Array;
@@ -259,6 +265,8 @@ export class SkinSolver {
     this.relaxation = new Float32Array(n).fill(1);
     this.restart = new Uint8Array(n);
     this.calm = new Uint8Array(n).fill(255);
+    this.path = new Float32Array(n);
+    this.looping = new Uint8Array(n);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
     this.bendPasses = new Uint8Array(n);
@@ -392,6 +400,8 @@ export class SkinSolver {
     this.motionFrames = 0;
     this.relaxation.fill(1);
     this.calm.fill(255);
+    this.path.fill(0);
+    this.lastLongest = 0;
     this.lastStep.fill(0);
     this.wake();
   }
@@ -504,6 +514,7 @@ export class SkinSolver {
     time.orientation += now() - untangle;
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.recordSteps();
+    if (this.motionFrames % LOOP_WINDOW === 0) this.breakLoops();
     this.frames++;
     this.restRegionRing();
     const beforeNormals = now();
@@ -561,6 +572,7 @@ export class SkinSolver {
         if (inside[v]) continue;
         const i = 3 * v;
         restart[v] = 0;
+        this.path[v] = 0;
         last[i] = last[i + 1] = last[i + 2] = 0;
         prev[i] = X[i];
         prev[i + 1] = X[i + 1];
@@ -677,6 +689,50 @@ export class SkinSolver {
   }
 
   /**
+   * Every LOOP_WINDOW frames: if the longest way a vertex went in the window is not clearly shorter than in the one
+   * before, the skin has stalled: it circles (a smooth loop of a few dozen frames a turn, where no move turns back on
+   * the one before, so `relax` does not see it) or chatters at its least share where the hard constraints take turns.
+   * The vertices that went far (over STALL_PART of the longest way) and their neighbours (the loop is a mode of the
+   * patch: slowing one vertex moves the loop next to it) take half their moves from then on. An under-relaxed step has
+   * the same fixed points, so where the constraints have one the skin converges to it; where they only chatter, the
+   * patch slows until it sleeps, long before the safety net (see LATE_MOTION). Skin that converges, however slowly,
+   * shortens its way by more than a tenth a window and is left alone.
+   */
+  private breakLoops(): void {
+    const path = this.path;
+    const mark = this.looping;
+    const share = this.relaxation;
+    const V = this.region.vertices;
+    const count = this.region.count;
+    let longest = 0;
+    for (let k = 0; k < count; k++) if (path[V[k]] > longest) longest = path[V[k]];
+    // Skin going less than the sleep tolerance a frame is about to sleep.
+    const least = LOOP_WINDOW * this.params.sleepTolerance * this.topology.size;
+    const stalled = this.motionFrames > LOOP_WINDOW && longest > least && longest > STALL * this.lastLongest;
+    this.lastLongest = longest;
+    const far = Math.max(least, STALL_PART * longest);
+    const start = this.topology.neighbourStart;
+    const nb = this.topology.neighbours;
+    let marked = 0;
+    for (let k = 0; k < count; k++) {
+      const v = V[k];
+      if (stalled && path[v] > far) {
+        mark[v] = 1;
+        for (let j = start[v]; j < start[v + 1]; j++) mark[nb[j]] = 1;
+        marked++;
+      }
+      path[v] = 0;
+    }
+    if (marked === 0) return;
+    // Only the region's shares change: a marked neighbour outside it is at rest and joins, if ever, with a whole share.
+    for (let k = 0; k < count; k++) {
+      const v = V[k];
+      if (mark[v] === 1 && share[v] > LOOP_LEAST_SHARE) share[v] *= 0.5;
+    }
+    mark.fill(0);
+  }
+
+  /**
    * Heavy-ball acceleration (Polyak): each region vertex first takes `beta` times its last move, then the frame's
    * projections. The soft position constraint lets a displaced sheet fade by only a few per cent an iteration; the
    * carried move makes the slow modes fade about as the square root of that factor per frame. A carried move that
@@ -710,6 +766,7 @@ export class SkinSolver {
     const last = this.lastStep;
     const V = this.region.vertices;
     const count = this.region.count;
+    const path = this.path;
     let largest2 = 0;
     // Skin outside the region does not move; its steps are zeroed when it leaves (see refreshLists).
     for (let k = 0; k < count; k++) {
@@ -719,6 +776,7 @@ export class SkinSolver {
       const dz = (last[i + 2] = x[i + 2] - prev[i + 2]);
       const d2 = dx * dx + dy * dy + dz * dz;
       if (d2 > largest2) largest2 = d2;
+      path[V[k]] += Math.sqrt(d2);
     }
     return Math.sqrt(largest2);
   }
@@ -992,6 +1050,15 @@ const LATE_SLOWING = 0.98;
  * a cycle repeats, while one turn is often a single bounce (a lip on a tooth as the skin starts moving).
  */
 const CYCLE_TURNS_WITHIN = 2;
+
+/** Frames over which the skin's ways are weighed against the window before (see SkinSolver.breakLoops). */
+const LOOP_WINDOW = 32;
+/** Skin whose longest way in a window is more than this share of the last window's has stalled. */
+const STALL = 0.9;
+/** In stalled skin, the vertices that went more than this share of the longest way are slowed, with their neighbours. */
+const STALL_PART = 0.25;
+/** The least share breakLoops leaves a vertex (a thousandth: its moves are then far below the sleep tolerance). */
+const LOOP_LEAST_SHARE = 1 / 1024;
 
 /** The least share of its solved move a vertex that keeps turning back takes in a frame (see SkinSolver.relax). */
 export const MIN_RELAXATION = 1 / 16;
