@@ -212,6 +212,54 @@ export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, f
   return parts[PARTS];
 }
 
+/**
+ * The bending constraints, one per vertex (the vertex and its ring of neighbours), part by part as the triangles
+ * (see vertexBlocks), ascending within a part: first for a frame's first pass (the whole region), then for its later
+ * passes (the region's vertices with more than one; see SkinSolver.setParameters).
+ */
+export interface BendingLists {
+  vertices: Uint32Array;
+  /** Part p of the first pass is `vertices[runs[p]..runs[p + 1]]`; of the later passes, at `PARTS + 1 + p`. */
+  runs: Uint32Array;
+}
+
+export function createBendingLists(vertexCount: number, memory: Memory = 'local'): BendingLists {
+  return { vertices: allocate(Uint32Array, 2 * vertexCount, memory), runs: allocate(Uint32Array, 2 * (PARTS + 1), memory) };
+}
+
+/** Each vertex's bending part: the part of its ring (the vertex and its neighbours; see vertexBlocks). */
+export function ringParts(topology: SkinTopology, blocks: Uint32Array): Uint8Array {
+  const start = topology.neighbourStart;
+  const nb = topology.neighbours;
+  const out = new Uint8Array(topology.vertexCount);
+  for (let v = 0; v < out.length; v++) {
+    let lo = v;
+    let hi = v;
+    for (let j = start[v]; j < start[v + 1]; j++) {
+      if (nb[j] < lo) lo = nb[j];
+      if (nb[j] > hi) hi = nb[j];
+    }
+    out[v] = partOf(lo, hi, blocks);
+  }
+  return out;
+}
+
+/** Lists the region's vertices `V[0..count]` for bending, part by part (`part` from ringParts), as BendingLists says. */
+export function fillBendingLists(into: BendingLists, V: Uint32Array, count: number, passes: Uint8Array, part: Uint8Array): void {
+  let o = 0;
+  for (let later = 0; later < 2; later++) {
+    const base = later * (PARTS + 1);
+    for (let p = 0; p < PARTS; p++) {
+      into.runs[base + p] = o;
+      for (let k = 0; k < count; k++) {
+        const v = V[k];
+        if (part[v] === p && (later === 0 || passes[v] > 1)) into.vertices[o++] = v;
+      }
+    }
+    into.runs[base + PARTS] = o;
+  }
+}
+
 /** The topology's neighbour lists with each neighbour stored as 3 * its vertex (same CSR starts). */
 export function neighbourOffsets(topology: SkinTopology): Uint32Array {
   return Uint32Array.from(topology.neighbours, (v) => 3 * v);

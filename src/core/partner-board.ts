@@ -29,6 +29,8 @@ export const JOB_ORIENTATION = 2;
 export const JOB_POSITIONS = 3;
 export const JOB_COLLISIONS = 4;
 export const JOB_STOP = 5;
+/** A part of a bending pass: the board's part is the part plus PARTS times the pass. */
+export const JOB_BENDING = 6;
 
 /** Board checks before sleeping: about 20 to 50 microseconds of spinning, longer than a part's projection. */
 const SPIN_LIMIT = 2000;

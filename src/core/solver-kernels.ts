@@ -3,7 +3,7 @@
  * thread's SkinSolver and the partner thread's SolverPartner run the same code on the same shared arrays.
  */
 import { COLLIDER_SHAPE, shapeDistance, type Collider } from './colliders';
-import type { EdgeLists, TriangleLists } from './constraint-lists';
+import { PARTS, type BendingLists, type EdgeLists, type TriangleLists } from './constraint-lists';
 import { meet } from './partner-board';
 
 /** What the part loops read and write: the solver's lists and positions, and the topology's fixed arrays. */
@@ -20,6 +20,11 @@ export interface PartArrays {
   vertexTriangles: Uint32Array;
   edges: EdgeLists;
   triangles: TriangleLists;
+  bending: BendingLists;
+  /** Per vertex: the bending constraint's value at rest, its share per pass and its passes (see SkinSolver). */
+  bendRest: Float64Array;
+  bendStiffness: Float32Array;
+  bendPasses: Uint8Array;
   /**
    * For orientation passes that follow one another (see projectOrientationPart): 1 for each listed triangle with a
    * corner moved since it was last checked; and each triangle's place in the list (-1 if not listed).
@@ -201,9 +206,10 @@ function projectHeldEdges(x: Float32Array, lists: EdgeLists, stiffness: number, 
  *
  * `again` says that nothing but the previous orientation pass moved the skin since: a triangle found within its
  * bound then, none of whose corners moved since, still is and is skipped, with the same result as checking it.
- * Returns whether a triangle was more than a hair under its bound.
+ * `floor` scales the bound (see ORIENTATION_SHOWN_FLOOR in solver.ts). Returns whether a triangle was more than a hair
+ * under its bound.
  */
-export function projectOrientationPart(a: PartArrays, part: number, again: boolean): boolean {
+export function projectOrientationPart(a: PartArrays, part: number, again: boolean, floor = 1): boolean {
   const x = a.positions;
   const T = a.triangles.corners;
   const F = a.triangles.frames;
@@ -234,7 +240,7 @@ export function projectOrientationPart(a: PartArrays, part: number, again: boole
     const nx = F[4 * t];
     const ny = F[4 * t + 1];
     const nz = F[4 * t + 2];
-    const least = F[4 * t + 3];
+    const least = floor * F[4 * t + 3];
     // Twice the area along n: n . (u x v).
     const C = nx * (uy * vz - uz * vy) + ny * (uz * vx - ux * vz) + nz * (ux * vy - uy * vx) - least;
     if (C >= 0) continue;
@@ -285,5 +291,55 @@ function markMoved(a: PartArrays, i: number): void {
   for (let j = start[v]; j < start[v + 1]; j++) {
     const t = listed[triangles[j]];
     if (t >= 0) a.unchecked[t] = 1;
+  }
+}
+
+/**
+ * Bending (see SkinSolver.projectBending) of one part of the region's vertices in pass `pass` of a frame: keeps the
+ * Laplacian of the normal displacement near its rest value. Each constraint moves a vertex and its ring, so the parts
+ * that go at once (see constraint-lists.ts) share no vertex.
+ */
+export function projectBendingPart(a: PartArrays, pass: number, part: number): void {
+  const x = a.positions;
+  const N = a.restNormals;
+  const start = a.neighbourStart;
+  const nb = a.neighbourOffsets;
+  const atRest = a.bendRest;
+  const stiffness = a.bendStiffness;
+  const passes = a.bendPasses;
+  const list = a.bending.vertices;
+  const run = (pass === 0 ? 0 : PARTS + 1) + part;
+  const r1 = a.bending.runs[run + 1];
+  for (let r = a.bending.runs[run]; r < r1; r++) {
+    const v = list[r];
+    const s = stiffness[v];
+    const j0 = start[v];
+    const j1 = start[v + 1];
+    const degree = j1 - j0;
+    if (passes[v] <= pass || s === 0 || degree === 0) continue;
+    const i = 3 * v;
+    const nx = N[i];
+    const ny = N[i + 1];
+    const nz = N[i + 2];
+    // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal: the
+    // neighbours' mean height above the vertex now, less the same at rest.
+    let mean = 0;
+    for (let j = j0; j < j1; j++) {
+      const k = nb[j];
+      mean += x[k] * nx + x[k + 1] * ny + x[k + 2] * nz;
+    }
+    const C = mean / degree - (x[i] * nx + x[i + 1] * ny + x[i + 2] * nz) - atRest[v];
+    // Gradient: -n at the vertex, n / degree at each neighbour; squared norm 1 + 1 / degree.
+    const lambda = (s * C) / (1 + 1 / degree);
+    x[i] += lambda * nx;
+    x[i + 1] += lambda * ny;
+    x[i + 2] += lambda * nz;
+    const q = lambda / degree;
+    for (let j = j0; j < j1; j++) {
+      const k = nb[j];
+      x[k] -= q * nx;
+      x[k + 1] -= q * ny;
+      x[k + 2] -= q * nz;
+    }
   }
 }

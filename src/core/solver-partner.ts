@@ -4,6 +4,7 @@ import {
   BOARD_PART,
   BOARD_RESULT,
   BOARD_SEQUENCE,
+  JOB_BENDING,
   JOB_COLLISIONS,
   JOB_LENGTHS,
   JOB_ORIENTATION,
@@ -12,12 +13,13 @@ import {
   waitWhile,
   type Board,
 } from './partner-board';
-import { projectCollisions, projectLengths, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
+import { PARTS } from './constraint-lists';
+import { projectBendingPart, projectCollisions, projectLengths, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
 
 /**
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
  * projects the second half of each colour of a length pass, of the region's position constraints or of each
- * collider's candidates, or the odd part of an orientation pass (see constraint-lists.ts), while the leader projects
+ * collider's candidates, or the odd part of an orientation or bending pass (see constraint-lists.ts), while the leader projects
  * the rest. The arrays are the leader's own, on shared memory (SkinSolver.partArrays).
  */
 export class SolverPartner {
@@ -41,9 +43,10 @@ export class SolverPartner {
       if (job === JOB_STOP) return;
       let result = 0;
       if (job === JOB_LENGTHS) for (let pass = 0; pass < part; pass++) projectLengths(this.arrays, args[0], args[1], words, 1);
-      else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0] !== 0) ? 1 : 0;
+      else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0] !== 0, args[1]) ? 1 : 0;
       else if (job === JOB_POSITIONS) projectPositions(this.arrays, args[0], args[1], part >> 1, part);
       else if (job === JOB_COLLISIONS) projectCollisions(this.arrays, 1, 2, this.direction);
+      else if (job === JOB_BENDING) projectBendingPart(this.arrays, Math.floor(part / PARTS), part % PARTS);
       Atomics.store(words, BOARD_RESULT, result);
       done = sequence;
       Atomics.store(words, BOARD_DONE, done);

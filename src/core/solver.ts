@@ -8,8 +8,10 @@
 import { ACTIVE_GROW, ActiveRegion } from './active-region';
 import { COLLIDER_SHAPE, colliderDistance, slabSide, writeColliderShape, type Collider } from './colliders';
 import {
+  createBendingLists,
   createEdgeLists,
   createTriangleLists,
+  fillBendingLists,
   fillEdgeLists,
   fillTriangleLists,
   neighbourOffsets,
@@ -17,14 +19,17 @@ import {
   PART_EVEN_SEAM,
   PART_ODD,
   PART_ODD_SEAM,
+  PARTS,
+  ringParts,
   vertexBlocks,
   type EdgeLists,
   type TriangleLists,
 } from './constraint-lists';
 import { allocate, type Memory } from './memory';
-import { JOB_COLLISIONS, JOB_LENGTHS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
+import { JOB_BENDING, JOB_COLLISIONS, JOB_LENGTHS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import {
+  projectBendingPart,
   projectCollisions,
   projectLengths,
   projectOrientationPart,
@@ -195,9 +200,8 @@ export class SkinSolver {
   /** Per vertex, the bending constraint's value at rest (see projectBending), so the frames need not read rest. */
   private readonly bendRest: Float64Array;
   private maxBendPasses = 1;
-  /** The region's vertices with more than one bending pass, ascending (the later passes walk only these). */
-  private readonly multiPass: Uint32Array;
-  private multiPassCount = 0;
+  /** Each vertex's bending part (see ringParts). */
+  private readonly bendParts: Uint8Array;
   /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
   private readonly triangleFrames: Float32Array;
   /** The lists the per-frame loops walk (see constraint-lists.ts), part by part. */
@@ -268,9 +272,8 @@ export class SkinSolver {
     this.path = new Float32Array(n);
     this.looping = new Uint8Array(n);
     this.held = new Uint32Array(n);
-    this.bendStiffness = new Float32Array(n);
-    this.bendPasses = new Uint8Array(n);
-    this.multiPass = new Uint32Array(n);
+    this.bendStiffness = allocate(Float32Array, n, memory);
+    this.bendPasses = allocate(Uint8Array, n, memory);
     // A fixed, deterministic per-vertex value in [-0.25, 0.75): breaks the symmetry of a flat compressed patch so it
     // buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than sink. A larger
     // mean lifts the whole patch in one bulge instead of folding it.
@@ -284,6 +287,7 @@ export class SkinSolver {
     this.neighbourOffsets = neighbourOffsets(topology);
     this.bendRest = bendingAtRest(topology, this.neighbourOffsets);
     this.blocks = vertexBlocks(topology);
+    this.bendParts = ringParts(topology, this.blocks);
     this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory);
     this.colliders = options.colliders ?? [];
     const c = this.collisionCandidates(this.colliders);
@@ -309,6 +313,10 @@ export class SkinSolver {
       vertexTriangles: topology.vertexTriangles,
       edges: this.edgeLists,
       triangles: this.triangleLists,
+      bending: createBendingLists(n, memory),
+      bendRest: this.bendRest,
+      bendStiffness: this.bendStiffness,
+      bendPasses: this.bendPasses,
       unchecked,
       uncheckedWords: new Uint32Array(unchecked.buffer),
       listedTriangle: allocate(Int32Array, triangleCount, memory),
@@ -360,7 +368,7 @@ export class SkinSolver {
     }
     this.maxBendPasses = 1;
     for (let v = 0; v < n; v++) if (this.bendPasses[v] > this.maxBendPasses) this.maxBendPasses = this.bendPasses[v];
-    this.listMultiPass();
+    this.listBending();
     // New parameters start a new motion, as new muscle inputs do.
     this.restartMotion();
   }
@@ -436,7 +444,7 @@ export class SkinSolver {
   }
 
   /**
-   * Hands half of each position, length, orientation and collision pass to a partner thread from the next pass on (null:
+   * Hands half of each position, length, orientation, bending and collision pass to a partner thread from the next pass on (null:
    * this thread solves alone again). The shape is the same either way: the parts share no vertex.
    */
   attachPartner(link: PartnerLink | null): void {
@@ -502,15 +510,17 @@ export class SkinSolver {
       this.projectCollisions();
       time.collisions += now() - t0;
     }
-    // Shown frames have no triangle turned over: dense fans (the mouth's corners) need a few passes to untangle; and
-    // again after the relaxation, which blends two shapes and so could turn a sliver over.
+    // Dense fans (the mouth's corners) need a few passes to untangle. After the relaxation, which blends two shapes
+    // and so could turn a sliver over, the passes hold only half the bound: whole-bound passes there undid the
+    // relaxation in the fans, where the corrections then took turns with the other constraints until the safety net
+    // (AU43 ran 1,249 frames, 247 with half; see ORIENTATION_SHOWN_FLOOR).
     let untangle = now();
     for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0); k++);
     time.orientation += now() - untangle;
     this.settleRegion();
     this.relax();
     untangle = now();
-    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0); k++);
+    for (let k = 0; k < ORIENTATION_SHOWN_PASSES && this.projectOrientation(k > 0, ORIENTATION_SHOWN_FLOOR); k++);
     time.orientation += now() - untangle;
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.recordSteps();
@@ -555,7 +565,7 @@ export class SkinSolver {
     const included = this.region.enabled ? this.region.inside : null;
     const r = this.region;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
-    this.listMultiPass();
+    this.listBending();
     fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, this.parts.listedTriangle, this.blocks);
     if (r.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, r.shaded, this.shadedPlaces, null);
     this.listedRevision = this.region.revision;
@@ -582,13 +592,9 @@ export class SkinSolver {
     this.listCandidates();
   }
 
-  /** Lists the region's vertices with more than one bending pass (see projectBending). */
-  private listMultiPass(): void {
-    const V = this.region.vertices;
-    const passes = this.bendPasses;
-    let count = 0;
-    for (let k = 0; k < this.region.count; k++) if (passes[V[k]] > 1) this.multiPass[count++] = V[k];
-    this.multiPassCount = count;
+  /** Lists the region's vertices for bending, part by part (see projectBending). */
+  private listBending(): void {
+    fillBendingLists(this.parts.bending, this.region.vertices, this.region.count, this.bendPasses, this.bendParts);
   }
 
   /** Lists the collision candidates a frame checks: those in or next to the region (all of them without it). */
@@ -837,75 +843,41 @@ export class SkinSolver {
    * Orientation constraints (see projectOrientationPart), part by part as the lengths; returns whether a triangle was
    * more than a hair under its bound.
    */
-  private projectOrientation(again = false): boolean {
-    const blocks = this.orientationPair(PART_EVEN, PART_ODD, again);
-    return this.orientationPair(PART_EVEN_SEAM, PART_ODD_SEAM, again) || blocks;
+  private projectOrientation(again = false, floor = 1): boolean {
+    const blocks = this.orientationPair(PART_EVEN, PART_ODD, again, floor);
+    return this.orientationPair(PART_EVEN_SEAM, PART_ODD_SEAM, again, floor) || blocks;
   }
 
-  private orientationPair(mine: number, theirs: number, again: boolean): boolean {
+  private orientationPair(mine: number, theirs: number, again: boolean, floor: number): boolean {
     const partner = this.partner;
-    partner?.start(JOB_ORIENTATION, theirs, again ? 1 : 0);
-    const corrected = projectOrientationPart(this.parts, mine, again);
+    partner?.start(JOB_ORIENTATION, theirs, again ? 1 : 0, floor);
+    const corrected = projectOrientationPart(this.parts, mine, again, floor);
     if (partner) return partner.finish() !== 0 || corrected;
-    return projectOrientationPart(this.parts, theirs, again) || corrected;
+    return projectOrientationPart(this.parts, theirs, again, floor) || corrected;
   }
 
   /**
    * Bending: keeps the Laplacian of the normal displacement near zero (the rest curvature), scaled per vertex by the
    * local mesh spacing so that its balance against the position constraints gives folds of `wrinkleSpacing` at every
    * mesh resolution (thesis 3.1.2 wishes for such a skin parameter). A vertex whose share exceeds MAX_BENDING_SHARE
-   * is projected in several passes, one after another over the region, each of an equal part of it. Each pass is one
-   * sweep in vertex order, on this thread: the order sets which folds form (a sweep colour by colour, which two
-   * threads could share, made finer folds on the finer meshes), so it stays as the wrinkle spacing was calibrated with.
+   * is projected in several passes, one after another over the region, each of an equal part of it. Each pass goes
+   * part by part as the orientation passes (see projectBendingPart): the even blocks with the odd ones, then the even
+   * seams with the odd ones, each part in vertex order, so that two threads share it and one gives the same shape.
    */
   private projectBending(): void {
     if (this.params.wrinkleSpacing <= 0) return;
-    const x = this.buffers.positions;
-    const atRest = this.bendRest;
-    const N = this.topology.restNormals;
-    const start = this.topology.neighbourStart;
-    const nb = this.neighbourOffsets;
-    const stiffness = this.bendStiffness;
-    const passes = this.bendPasses;
-    const V = this.region.vertices;
-    const count = this.region.count;
     for (let pass = 0; pass < this.maxBendPasses; pass++) {
-      // The first pass walks the region, the later ones only its vertices with more passes (the same order).
-      const list = pass === 0 ? V : this.multiPass;
-      const listed = pass === 0 ? count : this.multiPassCount;
-      for (let r = 0; r < listed; r++) {
-        const v = list[r];
-        const s = stiffness[v];
-        const j0 = start[v];
-        const j1 = start[v + 1];
-        const degree = j1 - j0;
-        if (passes[v] <= pass || s === 0 || degree === 0) continue;
-        const i = 3 * v;
-        const nx = N[i];
-        const ny = N[i + 1];
-        const nz = N[i + 2];
-        // Mean normal displacement of the neighbours minus the vertex's own, along this vertex's rest normal: the
-        // neighbours' mean height above the vertex now, less the same at rest.
-        let mean = 0;
-        for (let j = j0; j < j1; j++) {
-          const k = nb[j];
-          mean += x[k] * nx + x[k + 1] * ny + x[k + 2] * nz;
-        }
-        const C = mean / degree - (x[i] * nx + x[i + 1] * ny + x[i + 2] * nz) - atRest[v];
-        // Gradient: -n at the vertex, n / degree at each neighbour; squared norm 1 + 1 / degree.
-        const lambda = (s * C) / (1 + 1 / degree);
-        x[i] += lambda * nx;
-        x[i + 1] += lambda * ny;
-        x[i + 2] += lambda * nz;
-        const q = lambda / degree;
-        for (let j = j0; j < j1; j++) {
-          const k = nb[j];
-          x[k] -= q * nx;
-          x[k + 1] -= q * ny;
-          x[k + 2] -= q * nz;
-        }
-      }
+      this.bendingPair(PART_EVEN, PART_ODD, pass);
+      this.bendingPair(PART_EVEN_SEAM, PART_ODD_SEAM, pass);
     }
+  }
+
+  private bendingPair(mine: number, theirs: number, pass: number): void {
+    const partner = this.partner;
+    partner?.start(JOB_BENDING, theirs + PARTS * pass);
+    projectBendingPart(this.parts, pass, mine);
+    if (partner) partner.finish();
+    else projectBendingPart(this.parts, pass, theirs);
   }
 
   /**
@@ -1069,8 +1041,17 @@ export const MIN_RELAXATION = 1 / 16;
  * still passes, one flattened to a sliver or turned over does not.
  */
 export const MIN_PROJECTED_AREA = 0.25;
-/** At most this many orientation passes end a frame (they stop once a pass corrects nothing). */
-const ORIENTATION_PASSES = 6;
+/** At most this many orientation passes end a frame's iterations, before the relaxation (they stop once a pass corrects nothing). */
+const ORIENTATION_PASSES = 12;
+/** After the relaxation at most this many passes follow, at ORIENTATION_SHOWN_FLOOR of the bound. */
+const ORIENTATION_SHOWN_PASSES = 6;
+/**
+ * The share of the orientation bound the passes after the relaxation hold. A blend of two untangled shapes seldom
+ * turns a triangle over but often leaves one a little under the bound; lifting it all the way back moved the fans'
+ * skin by more than the relaxation let it, every frame. Half the bound: 33 expressions took 4,823 frames to sleep
+ * with the whole bound, 3,042 with half, with fewer frames showing a triangle turned over (109 against 200).
+ */
+const ORIENTATION_SHOWN_FLOOR = 0.5;
 
 /**
  * The neighbours' mean height above each vertex at rest, along the vertex's rest normal: what the bending constraint
