@@ -22,7 +22,7 @@ export const BOARD_ARGUMENTS = 2;
 
 /**
  * Jobs: length passes (each thread projects half of each colour, and they meet after each colour), a part of the
- * orientation constraints, the second half of the position or collision constraints; or leave the job loop.
+ * orientation or bending constraints, the second half of the position or collision constraints; or leave the job loop.
  */
 export const JOB_LENGTHS = 1;
 export const JOB_ORIENTATION = 2;

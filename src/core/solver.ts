@@ -701,8 +701,9 @@ export class SkinSolver {
    * The vertices that went far (over STALL_PART of the longest way) and their neighbours (the loop is a mode of the
    * patch: slowing one vertex moves the loop next to it) take half their moves from then on. An under-relaxed step has
    * the same fixed points, so where the constraints have one the skin converges to it; where they only chatter, the
-   * patch slows until it sleeps, long before the safety net (see LATE_MOTION). Skin that converges, however slowly,
-   * shortens its way by more than a tenth a window and is left alone.
+   * patch slows until it sleeps, long before the safety net (see LATE_MOTION). Skin that converges shortens its way
+   * by more than a tenth a window (a third of a per cent a frame) and is left alone: at 0.9 and at 0.95 the rig's 33
+   * expressions on the medium head took the same frames, but for the stalled ones.
    */
   private breakLoops(): void {
     const path = this.path;

@@ -1,7 +1,7 @@
 /**
  * The skin solver's partner worker (`shared` mode with two workers): started by the skin worker, it projects the
- * second half of each position, length, orientation and collision pass while the skin worker projects the first
- * (see SolverPartner). It says `running` once it waits for jobs; the skin worker hands it work only from then on.
+ * second half of each position, length, orientation, bending and collision pass while the skin worker projects the
+ * first (see SolverPartner). It says `running` once it waits for jobs; the skin worker hands it work only from then on.
  */
 import { boardViews } from '../core/partner-board';
 import type { PartArrays } from '../core/solver-kernels';
