@@ -702,8 +702,8 @@ export class SkinSolver {
    * patch: slowing one vertex moves the loop next to it) take half their moves from then on. An under-relaxed step has
    * the same fixed points, so where the constraints have one the skin converges to it; where they only chatter, the
    * patch slows until it sleeps, long before the safety net (see LATE_MOTION). Skin that converges shortens its way
-   * by more than a tenth a window (a third of a per cent a frame) and is left alone: at 0.9 and at 0.95 the rig's 33
-   * expressions on the medium head took the same frames, but for the stalled ones.
+   * by more than a tenth a window (a third of a per cent a frame) and is left alone: eight of the rig's slowest
+   * expressions on the medium head took the same frames with the threshold at 0.9 and at 0.95.
    */
   private breakLoops(): void {
     const path = this.path;
