@@ -3,8 +3,8 @@ import { LATE_MOTION } from '../src/core/solver';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 // Anger's skin has no stable resting shape the frame's map reaches by itself: without the stall test (see
-// SkinSolver.breakLoops) a patch at the eye kept going round, each move turning a little from the last so that the
-// relaxation's turn test never fired, until the late-motion safety net at 1,000 frames (1,252 frames to sleep).
+// SkinSolver.breakLoops) a patch kept moving, never turning back on itself enough for the relaxation's turn test,
+// until the late-motion safety net at 1,000 frames (1,252 frames to sleep).
 describe('skin that stalls instead of converging', () => {
   it('comes to rest well before the safety net, near where it was going round', async () => {
     const sim = await loadHeadSimulation('medium');

@@ -68,12 +68,8 @@ export function vertexBlocks(topology: SkinTopology): Uint32Array {
   const reach = new Int32Array(n + 1).fill(-1);
   const back = new Int32Array(n + 1).fill(n);
   for (let v = 0; v < n; v++) {
-    let lo = v;
-    let hi = v;
-    for (let j = start[v]; j < start[v + 1]; j++) {
-      if (nb[j] < lo) lo = nb[j];
-      if (nb[j] > hi) hi = nb[j];
-    }
+    const lo = ringLow(v, start, nb);
+    const hi = ringHigh(v, start, nb);
     if (hi > reach[lo + 1]) reach[lo + 1] = hi;
     if (lo < back[hi]) back[hi] = lo;
   }
@@ -232,16 +228,22 @@ export function ringParts(topology: SkinTopology, blocks: Uint32Array): Uint8Arr
   const start = topology.neighbourStart;
   const nb = topology.neighbours;
   const out = new Uint8Array(topology.vertexCount);
-  for (let v = 0; v < out.length; v++) {
-    let lo = v;
-    let hi = v;
-    for (let j = start[v]; j < start[v + 1]; j++) {
-      if (nb[j] < lo) lo = nb[j];
-      if (nb[j] > hi) hi = nb[j];
-    }
-    out[v] = partOf(lo, hi, blocks);
-  }
+  for (let v = 0; v < out.length; v++) out[v] = partOf(ringLow(v, start, nb), ringHigh(v, start, nb), blocks);
   return out;
+}
+
+/** The lowest vertex of vertex v's ring (v and its neighbours, CSR `start` / `nb`). */
+function ringLow(v: number, start: Uint32Array, nb: Uint32Array): number {
+  let lo = v;
+  for (let j = start[v]; j < start[v + 1]; j++) if (nb[j] < lo) lo = nb[j];
+  return lo;
+}
+
+/** The highest vertex of vertex v's ring. */
+function ringHigh(v: number, start: Uint32Array, nb: Uint32Array): number {
+  let hi = v;
+  for (let j = start[v]; j < start[v + 1]; j++) if (nb[j] > hi) hi = nb[j];
+  return hi;
 }
 
 /** Lists the region's vertices `V[0..count]` for bending, part by part (`part` from ringParts), as BendingLists says. */

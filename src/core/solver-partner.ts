@@ -19,8 +19,8 @@ import { projectBendingPart, projectCollisions, projectLengths, projectOrientati
 /**
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
  * projects the second half of each colour of a length pass, of the region's position constraints or of each
- * collider's candidates, or the odd part of an orientation or bending pass (see constraint-lists.ts), while the leader projects
- * the rest. The arrays are the leader's own, on shared memory (SkinSolver.partArrays).
+ * collider's candidates, or the odd part of an orientation or bending pass (see constraint-lists.ts), while the
+ * leader projects the rest. The arrays are the leader's own, on shared memory (SkinSolver.partArrays).
  */
 export class SolverPartner {
   private readonly direction = new Float32Array(3);

@@ -444,8 +444,8 @@ export class SkinSolver {
   }
 
   /**
-   * Hands half of each position, length, orientation, bending and collision pass to a partner thread from the next pass on (null:
-   * this thread solves alone again). The shape is the same either way: the parts share no vertex.
+   * Hands half of each position, length, orientation, bending and collision pass to a partner thread from the next
+   * pass on (null: this thread solves alone again). The shape is the same either way: the parts share no vertex.
    */
   attachPartner(link: PartnerLink | null): void {
     if (link && this.memory !== 'shared') throw new Error('only a solver on shared memory can have a partner thread');
@@ -1042,7 +1042,10 @@ export const MIN_RELAXATION = 1 / 16;
  * still passes, one flattened to a sliver or turned over does not.
  */
 export const MIN_PROJECTED_AREA = 0.25;
-/** At most this many orientation passes end a frame's iterations, before the relaxation (they stop once a pass corrects nothing). */
+/**
+ * At most this many orientation passes end a frame's iterations, before the relaxation (they stop once one corrects
+ * nothing).
+ */
 const ORIENTATION_PASSES = 12;
 /** After the relaxation at most this many passes follow, at ORIENTATION_SHOWN_FLOOR of the bound. */
 const ORIENTATION_SHOWN_PASSES = 6;
