@@ -28,6 +28,8 @@ const channel = new MessageChannel();
 let scheduled = false;
 /** `stepped` clock: the worker solves only the frames `run` messages ask for (see ClockMessage). */
 let stepped = false;
+/** The host's warm-up (see SolverHost.warmUp): a piece a turn while the skin sleeps, dropped once it solves for real. */
+let warming: Iterator<void> | null = null;
 /** The partner worker, while one takes half of the passes. */
 let partnerWorker: Worker | undefined;
 channel.port1.onmessage = tick;
@@ -62,6 +64,7 @@ function init(m: InitMessage): void {
   const base = { type: 'ready', vertexCount: topology.vertexCount, edgeCount: topology.restLength.length, rest, triangles } as const;
   const layout = slotLayout(m.renderPositions.length / 3, topology.vertexCount);
   host = h;
+  warming = h.warmUp();
   if (m.mode === 'shared') {
     const cLayout = controlLayout(topology.vertexCount, contractionCapacity(m.muscles.length));
     const control = new SharedArrayBuffer(cLayout.byteLength);
@@ -102,7 +105,7 @@ function schedule(): void {
   channel.port2.postMessage(null);
 }
 
-/** One turn: apply new inputs, solve a frame if awake and publish it, else wait for inputs. */
+/** One turn: apply new inputs, solve a frame if awake and publish it, else warm up or wait for inputs. */
 function tick(): void {
   scheduled = false;
   // A stepped clock solves in `run` alone; inputs wait there too, so that they land before the frames that follow.
@@ -110,8 +113,12 @@ function tick(): void {
   try {
     reader?.poll();
     if (host.step()) {
+      warming = null;
       sharedOutput?.publish(host);
       transferOutput?.publish();
+      schedule();
+    } else if (warming && !reader?.hasPending()) {
+      if (warming.next().done) warming = null;
       schedule();
     } else {
       // `transfer` mode: the next inputs message schedules the next turn.
