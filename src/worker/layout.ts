@@ -41,6 +41,7 @@ export const PARAMETER_INDEX: Readonly<Record<keyof SkinParameters, number>> = {
   bulge: 7,
   sleepTolerance: 8,
   momentum: 9,
+  foldMomentum: 10,
 };
 const PARAMETER_NAMES = Object.keys(PARAMETER_INDEX) as (keyof SkinParameters)[];
 export const PARAMETER_COUNT = PARAMETER_NAMES.length;
