@@ -750,9 +750,10 @@ export class SkinSolver {
 
   /**
    * Heavy-ball acceleration (Polyak): each region vertex first takes `beta` times its last move along the surface and
-   * `foldBeta` times its last move along its rest normal, then the frame's projections. The soft position constraint lets a displaced sheet fade by only a few per cent an iteration; the
-   * carried move makes the slow modes fade about as the square root of that factor per frame. A carried move that
-   * overshoots turns back, and the relaxation treats that as any cycle.
+   * `foldBeta` times its last move along its rest normal, then the frame's projections. The soft position constraint
+   * lets a displaced sheet fade by only a few per cent an iteration; the carried move makes the slow modes fade about
+   * as the square root of that factor per frame. A carried move that overshoots turns back, and the relaxation treats
+   * that as any cycle.
    */
   private carryMomentum(beta: number, foldBeta: number): void {
     if (beta === 0 && foldBeta === 0) return;
