@@ -34,6 +34,9 @@ import {
   projectLengths,
   projectOrientationPart,
   projectPositions,
+  ORIENT_AGAIN,
+  ORIENT_FULL,
+  ORIENT_WATCHED,
   type PartArrays,
 } from './solver-kernels';
 import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
@@ -226,6 +229,8 @@ export class SkinSolver {
   private readonly shadedTriangles: TriangleLists;
   private shadedTriangleCount = 0;
   private readonly shadedPlaces: Int32Array;
+  /** Scratch: each triangle's watched flag while the lists are refilled (see refreshLists). */
+  private readonly watchedTriangles: Uint8Array;
   /** The topology's neighbours as xyz offsets (3 * vertex). */
   private readonly neighbourOffsets: Uint32Array;
   /** The skin a frame solves (see active-region.ts); the lists above hold its constraints as of `listedRevision`. */
@@ -293,6 +298,7 @@ export class SkinSolver {
     this.triangleLists = createTriangleLists(topology, memory);
     this.shadedTriangles = createTriangleLists(topology);
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
+    this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
     this.neighbourOffsets = neighbourOffsets(topology);
     this.bendRest = bendingAtRest(topology, this.neighbourOffsets);
     this.blocks = vertexBlocks(topology);
@@ -312,6 +318,7 @@ export class SkinSolver {
     const triangleCount = topology.triangles.length / 3;
     // Rounded up to whole words (see PartArrays.uncheckedWords); the flags past the last triangle stay 0.
     const unchecked = allocate(Uint8Array, 4 * Math.ceil(triangleCount / 4), memory);
+    const watched = allocate(Uint8Array, unchecked.length, memory);
     this.parts = {
       positions: this.buffers.positions,
       rest: topology.rest,
@@ -328,6 +335,8 @@ export class SkinSolver {
       bendPasses: this.bendPasses,
       unchecked,
       uncheckedWords: new Uint32Array(unchecked.buffer),
+      watched,
+      watchedWords: new Uint32Array(watched.buffer),
       listedTriangle: allocate(Int32Array, triangleCount, memory),
       regionVertices: this.region.vertices,
       colliders: this.colliders,
@@ -420,6 +429,8 @@ export class SkinSolver {
     this.path.fill(0);
     this.lastLongest = 0;
     this.lastStep.fill(0);
+    // The first frame's passes check every triangle and watch anew (see ORIENT_WATCH).
+    this.parts.watched.fill(0);
     this.wake();
   }
 
@@ -509,7 +520,8 @@ export class SkinSolver {
       this.projectLengths(p.lengthIterations);
       t1 = now();
       time.lengths += t1 - t0;
-      this.projectOrientation();
+      // A motion's first frame checks every triangle and so starts the watched set (see ORIENT_WATCH).
+      this.projectOrientation(this.motionFrames === 0 ? ORIENT_FULL : ORIENT_WATCHED);
       t0 = now();
       time.orientation += t0 - t1;
       t1 = t0;
@@ -524,12 +536,12 @@ export class SkinSolver {
     // relaxation in the fans, where the corrections then took turns with the other constraints until the safety net
     // (AU43 ran 1,249 frames, 247 with half; see ORIENTATION_SHOWN_FLOOR).
     let untangle = now();
-    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0); k++);
+    for (let k = 0; k < ORIENTATION_PASSES && this.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL); k++);
     time.orientation += now() - untangle;
     this.settleRegion();
     this.relax();
     untangle = now();
-    for (let k = 0; k < ORIENTATION_SHOWN_PASSES && this.projectOrientation(k > 0, ORIENTATION_SHOWN_FLOOR); k++);
+    for (let k = 0; k < ORIENTATION_SHOWN_PASSES && this.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL, ORIENTATION_SHOWN_FLOOR); k++);
     time.orientation += now() - untangle;
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.recordSteps();
@@ -575,7 +587,14 @@ export class SkinSolver {
     const r = this.region;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
     this.listBending();
-    fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, this.parts.listedTriangle, this.blocks);
+    // The watched flags follow their triangles to their new places.
+    const places = this.parts.listedTriangle;
+    const watched = this.parts.watched;
+    const kept = this.watchedTriangles;
+    for (let t = 0; t < places.length; t++) kept[t] = places[t] >= 0 ? watched[places[t]] : 0;
+    fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, places, this.blocks);
+    watched.fill(0);
+    for (let t = 0; t < places.length; t++) if (places[t] >= 0) watched[places[t]] = kept[t];
     if (r.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, r.shaded, this.shadedPlaces, null);
     this.listedRevision = this.region.revision;
     if (this.region.enabled) {
@@ -857,17 +876,17 @@ export class SkinSolver {
    * Orientation constraints (see projectOrientationPart), part by part as the lengths; returns whether a triangle was
    * more than a hair under its bound.
    */
-  private projectOrientation(again = false, floor = 1): boolean {
-    const blocks = this.orientationPair(PART_EVEN, PART_ODD, again, floor);
-    return this.orientationPair(PART_EVEN_SEAM, PART_ODD_SEAM, again, floor) || blocks;
+  private projectOrientation(mode: number, floor = 1): boolean {
+    const blocks = this.orientationPair(PART_EVEN, PART_ODD, mode, floor);
+    return this.orientationPair(PART_EVEN_SEAM, PART_ODD_SEAM, mode, floor) || blocks;
   }
 
-  private orientationPair(mine: number, theirs: number, again: boolean, floor: number): boolean {
+  private orientationPair(mine: number, theirs: number, mode: number, floor: number): boolean {
     const partner = this.partner;
-    partner?.start(JOB_ORIENTATION, theirs, again ? 1 : 0, floor);
-    const corrected = projectOrientationPart(this.parts, mine, again, floor);
+    partner?.start(JOB_ORIENTATION, theirs, mode, floor);
+    const corrected = projectOrientationPart(this.parts, mine, mode, floor);
     if (partner) return partner.finish() !== 0 || corrected;
-    return projectOrientationPart(this.parts, theirs, again, floor) || corrected;
+    return projectOrientationPart(this.parts, theirs, mode, floor) || corrected;
   }
 
   /**
