@@ -10,11 +10,12 @@ export class PartnerLink {
     private readonly timeoutMs = PARTNER_TIMEOUT_MS,
   ) {}
 
-  /** Posts a job on one part of the lists, with up to two arguments; the partner starts at once. */
-  start(job: number, part = 0, a = 0, b = 0): void {
+  /** Posts a job on one part of the lists, with up to three arguments; the partner starts at once. */
+  start(job: number, part = 0, a = 0, b = 0, c = 0): void {
     const { words, args } = this.board;
     args[0] = a;
     args[1] = b;
+    args[2] = c;
     Atomics.store(words, BOARD_JOB, job);
     Atomics.store(words, BOARD_PART, part);
     // The sequence number's store publishes the job and its arguments.

@@ -12,6 +12,10 @@ export interface PartArrays {
   positions: Float32Array;
   rest: Float32Array;
   restNormals: Float32Array;
+  /** The muscle inputs (see SolverBuffers). */
+  targets: Float32Array;
+  weights: Float32Array;
+  normalWeights: Float32Array;
   /** The topology's neighbours (CSR), as xyz offsets (3 * vertex). */
   neighbourStart: Uint32Array;
   neighbourOffsets: Uint32Array;
@@ -54,27 +58,50 @@ export interface PartArrays {
 }
 
 /**
- * Position constraints (thesis 4.3.2) of the region's vertices `k0..k1`: pull each back toward rest by `stiffness`.
- * The thesis adds the unit vector from rest to the vertex times the distance, which pushes it away; the stable form
- * moves a fraction of the way back. Sinking below rest along the normal is resisted harder (by `extra` more), so
- * folds bulge out rather than in.
+ * Position and muscle constraints of the region's vertices `k0..k1`, each vertex's in turn (both move only their own
+ * vertex, so this is the order of all positions, then all muscles).
+ *
+ * Position (thesis 4.3.2): pull each vertex back toward rest by `stiffness`. The thesis adds the unit vector from rest
+ * to the vertex times the distance, which pushes it away; the stable form moves a fraction of the way back. Sinking
+ * below rest along the normal is resisted harder (by `extra` more), so folds bulge out rather than in.
+ *
+ * Muscle (thesis 4.3.4): move a held vertex toward its target by `muscleStiffness` times its weights, along the surface
+ * and along the rest normal. The thesis scales the step by the squared distance, a force cubic in distance that
+ * overshoots and explodes for far targets; a fixed fraction of the remaining distance converges for any target.
  */
-export function projectPositions(a: PartArrays, stiffness: number, extra: number, k0: number, k1: number): void {
+export function projectPositions(a: PartArrays, stiffness: number, extra: number, muscleStiffness: number, k0: number, k1: number): void {
   const x = a.positions;
   const X = a.rest;
   const N = a.restNormals;
+  const T = a.targets;
+  const W = a.weights;
+  const WN = a.normalWeights;
   const V = a.regionVertices;
   for (let j = k0; j < k1; j++) {
-    const i = 3 * V[j];
+    const v = V[j];
+    const i = 3 * v;
+    const nx = N[i], ny = N[i + 1], nz = N[i + 2];
     const ux = X[i] - x[i];
     const uy = X[i + 1] - x[i + 1];
     const uz = X[i + 2] - x[i + 2];
     // Depth below rest along the normal (positive when sunk in).
-    const depth = ux * N[i] + uy * N[i + 1] + uz * N[i + 2];
+    const depth = ux * nx + uy * ny + uz * nz;
     const k = depth > 0 ? extra * depth : 0;
-    x[i] += stiffness * ux + k * N[i];
-    x[i + 1] += stiffness * uy + k * N[i + 1];
-    x[i + 2] += stiffness * uz + k * N[i + 2];
+    x[i] += stiffness * ux + k * nx;
+    x[i + 1] += stiffness * uy + k * ny;
+    x[i + 2] += stiffness * uz + k * nz;
+    const w = W[v];
+    const wn = WN[v];
+    if (w === 0 && wn === 0) continue;
+    const m = muscleStiffness * w;
+    const dx = T[i] - x[i];
+    const dy = T[i + 1] - x[i + 1];
+    const dz = T[i + 2] - x[i + 2];
+    // The pull's part along the rest normal gets its own weight.
+    const along = (muscleStiffness * wn - m) * (dx * nx + dy * ny + dz * nz);
+    x[i] += m * dx + along * nx;
+    x[i + 1] += m * dy + along * ny;
+    x[i + 2] += m * dz + along * nz;
   }
 }
 

@@ -44,7 +44,7 @@ export class SolverPartner {
       let result = 0;
       if (job === JOB_LENGTHS) for (let pass = 0; pass < part; pass++) projectLengths(this.arrays, args[0], args[1], words, 1);
       else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0], args[1]) ? 1 : 0;
-      else if (job === JOB_POSITIONS) projectPositions(this.arrays, args[0], args[1], part >> 1, part);
+      else if (job === JOB_POSITIONS) projectPositions(this.arrays, args[0], args[1], args[2], part >> 1, part);
       else if (job === JOB_COLLISIONS) projectCollisions(this.arrays, 1, 2, this.direction);
       else if (job === JOB_BENDING) projectBendingPart(this.arrays, Math.floor(part / PARTS), part % PARTS);
       Atomics.store(words, BOARD_RESULT, result);

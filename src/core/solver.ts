@@ -163,8 +163,8 @@ export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'lo
 
 /** Milliseconds spent in each phase of the last solved frame. */
 export interface FrameTimings {
+  /** Position and muscle constraints. */
   positions: number;
-  muscles: number;
   lengths: number;
   bending: number;
   collisions: number;
@@ -262,7 +262,7 @@ export class SkinSolver {
   /** Frames solved since creation. */
   frames = 0;
   /** Where the last frame's time went (reused, never reallocated). */
-  readonly timings: FrameTimings = { positions: 0, muscles: 0, lengths: 0, bending: 0, collisions: 0, orientation: 0, normals: 0, total: 0 };
+  readonly timings: FrameTimings = { positions: 0, lengths: 0, bending: 0, collisions: 0, orientation: 0, normals: 0, total: 0 };
 
   /**
    * `activeRegion` (default true) solves only the skin that moves (see active-region.ts); false solves the whole mesh
@@ -276,7 +276,10 @@ export class SkinSolver {
     const n = topology.vertexCount;
     const memory = (this.memory = options.memory ?? 'local');
     this.buffers = options.buffers ?? createSolverBuffers(topology, memory);
-    if (memory === 'shared' && !(this.buffers.positions.buffer instanceof SharedArrayBuffer)) throw new Error('a solver on shared memory needs its positions on shared memory');
+    if (memory === 'shared' && !Object.values(this.buffers).every((b: Float32Array) => b.buffer instanceof SharedArrayBuffer)) {
+      // The partner thread reads the positions and the muscle inputs.
+      throw new Error('a solver on shared memory needs its buffers on shared memory');
+    }
     // Outside the active region `previous` is only written when the region changes, and stays at rest.
     this.previous = Float32Array.from(topology.rest);
     this.lastStep = new Float32Array(3 * n);
@@ -323,6 +326,9 @@ export class SkinSolver {
       positions: this.buffers.positions,
       rest: topology.rest,
       restNormals: topology.restNormals,
+      targets: this.buffers.targets,
+      weights: this.buffers.weights,
+      normalWeights: this.buffers.normalWeights,
       neighbourStart: topology.neighbourStart,
       neighbourOffsets: this.neighbourOffsets,
       vertexTriangleStart: topology.vertexTriangleStart,
@@ -494,7 +500,7 @@ export class SkinSolver {
     const x = this.buffers.positions;
     const time = this.timings;
     const start = now();
-    time.positions = time.muscles = time.lengths = time.bending = time.collisions = time.orientation = 0;
+    time.positions = time.lengths = time.bending = time.collisions = time.orientation = 0;
     const r = this.region;
     if (r.enabled) {
       // Skin outside the region stays at rest, and so does `previous` there (see refreshLists).
@@ -514,9 +520,7 @@ export class SkinSolver {
       this.projectPositions();
       let t1 = now();
       time.positions += t1 - t0;
-      this.projectMuscles();
-      t0 = now();
-      time.muscles += t0 - t1;
+      t0 = t1;
       this.projectLengths(p.lengthIterations);
       t1 = now();
       time.lengths += t1 - t0;
@@ -820,43 +824,20 @@ export class SkinSolver {
     return Math.sqrt(largest2);
   }
 
-  /** Position constraints (thesis 4.3.2; see projectPositions in solver-kernels.ts), half on the partner if any. */
+  /**
+   * Position and muscle constraints (thesis 4.3.2 and 4.3.4; see projectPositions in solver-kernels.ts), half on the
+   * partner if any.
+   */
   private projectPositions(): void {
     const s = this.params.positionStiffness;
     const extra = s * (this.params.inwardResistance - 1);
+    const m = this.params.muscleStiffness;
     const count = this.region.count;
     const partner = this.partner;
-    if (!partner) return projectPositions(this.parts, s, extra, 0, count);
-    partner.start(JOB_POSITIONS, count, s, extra);
-    projectPositions(this.parts, s, extra, 0, count >> 1);
+    if (!partner) return projectPositions(this.parts, s, extra, m, 0, count);
+    partner.start(JOB_POSITIONS, count, s, extra, m);
+    projectPositions(this.parts, s, extra, m, 0, count >> 1);
     partner.finish();
-  }
-
-  /**
-   * Muscle constraints (thesis 4.3.4): move held vertices toward their targets. The thesis scales the step by the
-   * squared distance, a force cubic in distance that overshoots and explodes for far targets; a fixed fraction of the
-   * remaining distance converges for any target.
-   */
-  private projectMuscles(): void {
-    const x = this.buffers.positions;
-    const T = this.buffers.targets;
-    const W = this.buffers.weights;
-    const WN = this.buffers.normalWeights;
-    const N = this.topology.restNormals;
-    const s = this.params.muscleStiffness;
-    for (let h = 0; h < this.heldCount; h++) {
-      const v = this.held[h];
-      const i = 3 * v;
-      const k = s * W[v];
-      const dx = T[i] - x[i];
-      const dy = T[i + 1] - x[i + 1];
-      const dz = T[i + 2] - x[i + 2];
-      // Split the pull into its part along the rest normal and the part along the surface.
-      const along = (s * WN[v] - k) * (dx * N[i] + dy * N[i + 1] + dz * N[i + 2]);
-      x[i] += k * dx + along * N[i];
-      x[i + 1] += k * dy + along * N[i + 1];
-      x[i + 2] += k * dz + along * N[i + 2];
-    }
   }
 
   /**
