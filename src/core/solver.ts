@@ -497,24 +497,11 @@ export class SkinSolver {
   /** Solves one frame unless asleep; returns whether it solved. Allocates nothing. */
   step(): boolean {
     if (this.asleep) return false;
-    const x = this.buffers.positions;
     const time = this.timings;
     const start = now();
     time.positions = time.lengths = time.bending = time.collisions = time.orientation = 0;
-    const r = this.region;
-    if (r.enabled) {
-      // Skin outside the region stays at rest, and so does `previous` there (see refreshLists).
-      const prev = this.previous;
-      const V = r.vertices;
-      for (let k = 0; k < r.count; k++) {
-        const i = 3 * V[k];
-        prev[i] = x[i];
-        prev[i + 1] = x[i + 1];
-        prev[i + 2] = x[i + 2];
-      }
-    } else this.previous.set(x);
     const p = this.params;
-    this.carryMomentum(p.momentum, p.foldMomentum);
+    this.startFrame(p.momentum, p.foldMomentum);
     for (let it = 0; it < p.positionIterations; it++) {
       let t0 = now();
       this.projectPositions();
@@ -772,17 +759,19 @@ export class SkinSolver {
   }
 
   /**
-   * Heavy-ball acceleration (Polyak): each region vertex first takes `beta` times its last move along the surface and
-   * `foldBeta` times its last move along its rest normal, then the frame's projections. The soft position constraint
-   * lets a displaced sheet fade by only a few per cent an iteration; the carried move makes the slow modes fade about
-   * as the square root of that factor per frame. A carried move that overshoots turns back, and the relaxation treats
-   * that as any cycle.
+   * Stores where each region vertex starts the frame (skin outside the region stays at rest, and so does `previous`
+   * there; see refreshLists), then carries its momentum. Heavy-ball acceleration (Polyak): each region vertex first
+   * takes `beta` times its last move along the surface and `foldBeta` times its last move along its rest normal, then
+   * the frame's projections. The soft position constraint lets a displaced sheet fade by only a few per cent an
+   * iteration; the carried move makes the slow modes fade about as the square root of that factor per frame. A
+   * carried move that overshoots turns back, and the relaxation treats that as any cycle.
    */
-  private carryMomentum(beta: number, foldBeta: number): void {
-    if (beta === 0 && foldBeta === 0) return;
+  private startFrame(beta: number, foldBeta: number): void {
     const x = this.buffers.positions;
+    const prev = this.previous;
     const N = this.topology.restNormals;
     const extra = foldBeta - beta;
+    const carry = beta !== 0 || foldBeta !== 0;
     const last = this.lastStep;
     const restart = this.restart;
     const share = this.relaxation;
@@ -790,11 +779,15 @@ export class SkinSolver {
     const count = this.region.count;
     for (let k = 0; k < count; k++) {
       const v = V[k];
+      const i = 3 * v;
+      prev[i] = x[i];
+      prev[i + 1] = x[i + 1];
+      prev[i + 2] = x[i + 2];
+      if (!carry) continue;
       if (restart[v] === 1 || share[v] < 1) {
         restart[v] = 0;
         continue;
       }
-      const i = 3 * v;
       const along = extra * (last[i] * N[i] + last[i + 1] * N[i + 1] + last[i + 2] * N[i + 2]);
       x[i] += beta * last[i] + along * N[i];
       x[i + 1] += beta * last[i + 1] + along * N[i + 1];
