@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { buildTopology, computeNormals, computeSomeNormals, describeTopology } from '../src/core/topology';
+import { buildTopology, computeNormals, describeTopology } from '../src/core/topology';
 import { triangleGrid } from './fixtures/grids';
 
 /** A 3 x 3 grid split into two UV islands along its middle column: the seam vertices appear twice. */
@@ -134,35 +134,6 @@ describe('vertex normals', () => {
       worst = Math.max(worst, 1 - dot);
     }
     expect(worst).toBeLessThan(1e-3);
-  });
-
-  it('of some vertices only, from their triangles, equal those of the whole mesh bit for bit', () => {
-    const { positions, indices } = icosphere(3);
-    const t = buildTopology(positions, indices);
-    const n = t.vertexCount;
-    const x = Float32Array.from(t.rest, (p, i) => p * (1 + 0.1 * Math.sin(7 * i)));
-    const whole = new Float32Array(3 * n);
-    computeNormals(x, t.triangles, whole);
-    // Some vertices (the cap z > 0.5), the triangles touching them, and those triangles' other corners.
-    const chosen = Uint8Array.from({ length: n }, (_, v) => (t.rest[3 * v + 2] > 0.5 ? 1 : 0));
-    const corners: number[] = [];
-    const others = new Set<number>();
-    for (let k = 0; k < t.triangles.length; k += 3) {
-      const tri = [...t.triangles.subarray(k, k + 3)];
-      if (!tri.some((v) => chosen[v])) continue;
-      corners.push(...tri.map((v) => 3 * v));
-      for (const v of tri) if (!chosen[v]) others.add(v);
-    }
-    const vertices = Uint32Array.from({ length: n }, (_, v) => v).filter((v) => chosen[v]);
-    const out = new Float32Array(3 * n).fill(7);
-    computeSomeNormals(x, Uint32Array.from(corners), corners.length / 3, vertices, vertices.length, Uint32Array.from(others), others.size, t.restNormals, out);
-    expect(vertices.length).toBeGreaterThan(10);
-    for (let v = 0; v < n; v++) {
-      const got = [...out.subarray(3 * v, 3 * v + 3)];
-      if (chosen[v]) expect(got).toEqual([...whole.subarray(3 * v, 3 * v + 3)]);
-      else if (others.has(v)) expect(got).toEqual([...t.restNormals.subarray(3 * v, 3 * v + 3)]);
-      else expect(got).toEqual([7, 7, 7]);
-    }
   });
 });
 

@@ -79,7 +79,7 @@ export class ActiveRegion {
     this.border = new Uint32Array(n);
     this.onRing = new Uint8Array(n);
     this.shaded = new Uint8Array(n);
-    this.shadedVertices = new Uint32Array(n);
+    this.shadedVertices = allocate(Uint32Array, n, memory);
     this.outer = new Uint32Array(n);
     this.onOuter = new Uint8Array(n);
     this.scratch = new Uint32Array(n);

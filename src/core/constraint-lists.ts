@@ -90,8 +90,7 @@ export function vertexBlocks(topology: SkinTopology): Uint32Array {
 }
 
 /** The part of a constraint whose smallest and largest vertex are `lo` and `hi` (see vertexBlocks). */
-function partOf(lo: number, hi: number, blocks: Uint32Array | null): number {
-  if (blocks === null) return PART_EVEN;
+function partOf(lo: number, hi: number, blocks: Uint32Array): number {
   const a = blocks[lo];
   const b = blocks[hi];
   return a === b ? (a & 1 ? PART_ODD : PART_EVEN) : b & 1 ? PART_ODD_SEAM : PART_EVEN_SEAM;
@@ -164,11 +163,11 @@ export function createTriangleLists(topology: SkinTopology, memory: Memory = 'lo
 }
 
 /**
- * Lists the triangles with at least one corner `included` (all when null), part by part (`blocks` from vertexBlocks;
- * null puts all in the first part), in mesh order within a part; writes each triangle's place in the list into `places` (-1 if not
- * listed) and returns how many are listed.
+ * Lists the triangles with at least one corner `included` (all when null), part by part (`blocks` from vertexBlocks),
+ * in mesh order within a part; writes each triangle's place in the list into `places` (-1 if not listed) and returns
+ * how many are listed.
  */
-export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, frames: Float32Array, included: Uint8Array | null, places: Int32Array, blocks: Uint32Array | null): number {
+export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, frames: Float32Array, included: Uint8Array | null, places: Int32Array, blocks: Uint32Array): number {
   const count = triangles.length / 3;
   const C = into.corners;
   const F = into.frames;

@@ -22,7 +22,8 @@ export const BOARD_ARGUMENTS = 3;
 
 /**
  * Jobs: length passes (each thread projects half of each colour, and they meet after each colour), a part of the
- * orientation or bending constraints, the second half of the position or collision constraints; or leave the job loop.
+ * orientation or bending constraints, the second half of the position or collision constraints or of the normals; or
+ * leave the job loop.
  */
 export const JOB_LENGTHS = 1;
 export const JOB_ORIENTATION = 2;
@@ -31,6 +32,8 @@ export const JOB_COLLISIONS = 4;
 export const JOB_STOP = 5;
 /** A part of a bending pass: the board's part is the part plus PARTS times the pass. */
 export const JOB_BENDING = 6;
+/** Half of the normals (see projectNormals): the board's part is the shaded vertices' count. */
+export const JOB_NORMALS = 7;
 
 /** Board checks before sleeping: about 20 to 50 microseconds of spinning, longer than a part's projection. */
 const SPIN_LIMIT = 2000;

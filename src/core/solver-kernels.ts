@@ -3,8 +3,9 @@
  * thread's SkinSolver and the partner thread's SolverPartner run the same code on the same shared arrays.
  */
 import { COLLIDER_SHAPE, shapeDistance, type Collider } from './colliders';
-import { PARTS, type BendingLists, type EdgeLists, type TriangleLists } from './constraint-lists';
+import { PART_EVEN, PART_EVEN_SEAM, PARTS, type BendingLists, type EdgeLists, type TriangleLists } from './constraint-lists';
 import { meet } from './partner-board';
+import { addFaceNormals, normalize } from './topology';
 
 /** What the part loops read and write: the solver's lists and positions, and the topology's fixed arrays. */
 export interface PartArrays {
@@ -16,6 +17,10 @@ export interface PartArrays {
   targets: Float32Array;
   weights: Float32Array;
   normalWeights: Float32Array;
+  /** Current unit normals. */
+  normals: Float32Array;
+  /** The triangles with a corner in `shadedVertices`, part by part as the orientation's. */
+  shadedTriangles: TriangleLists;
   /** The topology's neighbours (CSR), as xyz offsets (3 * vertex). */
   neighbourStart: Uint32Array;
   neighbourOffsets: Uint32Array;
@@ -42,6 +47,8 @@ export interface PartArrays {
   listedTriangle: Int32Array;
   /** The active region's vertices, ascending (see ActiveRegion). */
   regionVertices: Uint32Array;
+  /** The vertices whose normals a frame computes: the region and its ring (see ActiveRegion.shadedVertices). */
+  shadedVertices: Uint32Array;
   /**
    * The colliders, and their current shapes (`COLLIDER_SHAPE` values each), which the leader updates when an input
    * moves one; the collision loop reads only the shapes, so the partner's copies of the colliders need not follow.
@@ -103,6 +110,29 @@ export function projectPositions(a: PartArrays, stiffness: number, extra: number
     x[i + 1] += m * dy + along * ny;
     x[i + 2] += m * dz + along * nz;
   }
+}
+
+/**
+ * Area-weighted normals of the first `count` shaded vertices, whose normals and those of the other corners of their
+ * triangles the caller has zeroed: the triangles' normals are added part by part (the even blocks with the odd ones,
+ * then the even seams with the odd ones, as the orientation passes go), then the vertices' sums scaled to unit length.
+ * With a `board`, this thread takes half `half` (0 or 1) of it and meets the other at each step; without, it takes
+ * all. Each vertex gets the same sums in the same order either way.
+ */
+export function projectNormals(a: PartArrays, count: number, board: Int32Array | null, half: number): void {
+  const x = a.positions;
+  const out = a.normals;
+  const { corners, parts } = a.shadedTriangles;
+  if (board) {
+    addFaceNormals(x, corners, parts[PART_EVEN + half], parts[PART_EVEN + half + 1], 1, out);
+    meet(board);
+    addFaceNormals(x, corners, parts[PART_EVEN_SEAM + half], parts[PART_EVEN_SEAM + half + 1], 1, out);
+    meet(board);
+  } else addFaceNormals(x, corners, 0, parts[PARTS], 1, out);
+  const V = a.shadedVertices;
+  const k0 = board && half === 1 ? count >> 1 : 0;
+  const k1 = board && half === 0 ? count >> 1 : count;
+  for (let k = k0; k < k1; k++) normalize(out, 3 * V[k]);
 }
 
 /**

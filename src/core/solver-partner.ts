@@ -7,6 +7,7 @@ import {
   JOB_BENDING,
   JOB_COLLISIONS,
   JOB_LENGTHS,
+  JOB_NORMALS,
   JOB_ORIENTATION,
   JOB_POSITIONS,
   JOB_STOP,
@@ -14,7 +15,7 @@ import {
   type Board,
 } from './partner-board';
 import { PARTS } from './constraint-lists';
-import { projectBendingPart, projectCollisions, projectLengths, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
+import { projectBendingPart, projectCollisions, projectLengths, projectNormals, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
 
 /**
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
@@ -47,6 +48,7 @@ export class SolverPartner {
       else if (job === JOB_POSITIONS) projectPositions(this.arrays, args[0], args[1], args[2], part >> 1, part);
       else if (job === JOB_COLLISIONS) projectCollisions(this.arrays, 1, 2, this.direction);
       else if (job === JOB_BENDING) projectBendingPart(this.arrays, Math.floor(part / PARTS), part % PARTS);
+      else if (job === JOB_NORMALS) projectNormals(this.arrays, part, words, 1);
       Atomics.store(words, BOARD_RESULT, result);
       done = sequence;
       Atomics.store(words, BOARD_DONE, done);

@@ -26,12 +26,13 @@ import {
   type TriangleLists,
 } from './constraint-lists';
 import { allocate, type Memory } from './memory';
-import { JOB_BENDING, JOB_COLLISIONS, JOB_LENGTHS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
+import { JOB_BENDING, JOB_COLLISIONS, JOB_LENGTHS, JOB_NORMALS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import {
   projectBendingPart,
   projectCollisions,
   projectLengths,
+  projectNormals,
   projectOrientationPart,
   projectPositions,
   ORIENT_AGAIN,
@@ -39,7 +40,7 @@ import {
   ORIENT_WATCHED,
   type PartArrays,
 } from './solver-kernels';
-import { computeNormals, computeSomeNormals, type SkinTopology } from './topology';
+import { computeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
 export interface SkinParameters {
@@ -225,9 +226,7 @@ export class SkinSolver {
   private readonly memory: Memory;
   /** Each vertex's block, which sets the triangles' parts (see constraint-lists.ts). */
   private readonly blocks: Uint32Array;
-  /** Triangles with a corner whose normal is computed (in or next to the active region). */
-  private readonly shadedTriangles: TriangleLists;
-  private shadedTriangleCount = 0;
+  /** Scratch: each triangle's place in `parts.shadedTriangles`. */
   private readonly shadedPlaces: Int32Array;
   /** Scratch: each triangle's watched flag while the lists are refilled (see refreshLists). */
   private readonly watchedTriangles: Uint8Array;
@@ -299,9 +298,8 @@ export class SkinSolver {
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.edgeLists = createEdgeLists(topology, memory);
     this.triangleLists = createTriangleLists(topology, memory);
-    this.shadedTriangles = createTriangleLists(topology);
-    this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
     this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
+    this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
     this.neighbourOffsets = neighbourOffsets(topology);
     this.bendRest = bendingAtRest(topology, this.neighbourOffsets);
     this.blocks = vertexBlocks(topology);
@@ -329,6 +327,8 @@ export class SkinSolver {
       targets: this.buffers.targets,
       weights: this.buffers.weights,
       normalWeights: this.buffers.normalWeights,
+      normals: this.buffers.normals,
+      shadedTriangles: createTriangleLists(topology, memory),
       neighbourStart: topology.neighbourStart,
       neighbourOffsets: this.neighbourOffsets,
       vertexTriangleStart: topology.vertexTriangleStart,
@@ -345,6 +345,7 @@ export class SkinSolver {
       watchedWords: new Uint32Array(watched.buffer),
       listedTriangle: allocate(Int32Array, triangleCount, memory),
       regionVertices: this.region.vertices,
+      shadedVertices: this.region.shadedVertices,
       colliders: this.colliders,
       colliderShapes: this.colliderShapes,
       colliderVertices: c.vertices,
@@ -575,7 +576,6 @@ export class SkinSolver {
   /** Rebuilds the constraint lists for the current region and muscle weights. */
   private refreshLists(): void {
     const included = this.region.enabled ? this.region.inside : null;
-    const r = this.region;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
     this.listBending();
     // The watched flags follow their triangles to their new places.
@@ -584,9 +584,9 @@ export class SkinSolver {
     const kept = this.watchedTriangles;
     for (let t = 0; t < places.length; t++) kept[t] = places[t] >= 0 ? watched[places[t]] : 0;
     fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, places, this.blocks);
+    if (this.region.enabled) fillTriangleLists(this.parts.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded, this.shadedPlaces, this.blocks);
     watched.fill(0);
     for (let t = 0; t < places.length; t++) if (places[t] >= 0) watched[places[t]] = kept[t];
-    if (r.enabled) this.shadedTriangleCount = fillTriangleLists(this.shadedTriangles, this.topology.triangles, this.triangleFrames, r.shaded, this.shadedPlaces, null);
     this.listedRevision = this.region.revision;
     if (this.region.enabled) {
       // Skin outside the region is at rest and does not move: its last step is zero, its previous place rest and it
@@ -657,13 +657,28 @@ export class SkinSolver {
     r.join(this.reached, count);
   }
 
-  /** Normals of the skin that may have moved: the region and its ring (all of it without the active region). */
+  /**
+   * Normals of the skin that may have moved: the region and its ring (all of it without the active region), half on
+   * the partner if any. The ring's outer neighbours, which the ring's triangles touch, keep their rest normals.
+   */
   private computeNormals(): void {
-    const x = this.buffers.positions;
     const r = this.region;
-    if (!r.enabled) return computeNormals(x, this.topology.triangles, this.buffers.normals);
-    const T = this.shadedTriangles.corners;
-    computeSomeNormals(x, T, this.shadedTriangleCount, r.shadedVertices, r.shadedCount, r.outer, r.outerCount, this.topology.restNormals, this.buffers.normals);
+    const out = this.buffers.normals;
+    if (!r.enabled) return computeNormals(this.buffers.positions, this.topology.triangles, out);
+    const count = r.shadedCount;
+    zeroAt(out, r.shadedVertices, count);
+    zeroAt(out, r.outer, r.outerCount);
+    const partner = this.partner;
+    partner?.start(JOB_NORMALS, count);
+    projectNormals(this.parts, count, partner ? partner.board.words : null, 0);
+    partner?.finish();
+    const N = this.topology.restNormals;
+    for (let k = 0; k < r.outerCount; k++) {
+      const i = 3 * r.outer[k];
+      out[i] = N[i];
+      out[i + 1] = N[i + 1];
+      out[i + 2] = N[i + 2];
+    }
   }
 
   /**
@@ -1106,6 +1121,14 @@ function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Arra
     out[4 * t + 3] = MIN_PROJECTED_AREA * twiceArea;
   }
   return out;
+}
+
+/** Zeroes the xyz of the first `count` listed vertices. */
+function zeroAt(out: Float32Array, vertices: Uint32Array, count: number): void {
+  for (let k = 0; k < count; k++) {
+    const i = 3 * vertices[k];
+    out[i] = out[i + 1] = out[i + 2] = 0;
+  }
 }
 
 /** A fixed hash of an integer to [0, 1). */

@@ -230,18 +230,18 @@ export function finestSpacing(rest: Float32Array, normals: Float32Array, start: 
  */
 export function computeNormals(positions: Float32Array, triangles: Uint32Array, out: Float32Array): void {
   out.fill(0);
-  addFaceNormals(positions, triangles, triangles.length / 3, 3, out);
+  addFaceNormals(positions, triangles, 0, triangles.length / 3, 3, out);
   // An isolated vertex gets +z: any unit vector keeps the shading finite.
   for (let i = 0; i < out.length; i += 3) normalize(out, i);
 }
 
 /**
- * Adds each of `count` triangles' area-weighted normal (its cross product, twice its area long) to its corners in
- * `out`. A corner's offset into the xyz arrays is `scale` times its entry in `corners` (3 for vertex indices, 1 for
+ * Adds each of the triangles `t0..t1`'s area-weighted normal (its cross product, twice its area long) to its corners
+ * in `out`. A corner's offset into the xyz arrays is `scale` times its entry in `corners` (3 for vertex indices, 1 for
  * corners listed as 3 * vertex).
  */
-function addFaceNormals(positions: Float32Array, corners: Uint32Array, count: number, scale: number, out: Float32Array): void {
-  for (let t = 0; t < 3 * count; t += 3) {
+export function addFaceNormals(positions: Float32Array, corners: Uint32Array, t0: number, t1: number, scale: number, out: Float32Array): void {
+  for (let t = 3 * t0; t < 3 * t1; t += 3) {
     const a = scale * corners[t];
     const b = scale * corners[t + 1];
     const c = scale * corners[t + 2];
@@ -266,47 +266,8 @@ function addFaceNormals(positions: Float32Array, corners: Uint32Array, count: nu
   }
 }
 
-/**
- * Area-weighted normals, as computeNormals (the same sums in the same order, so the same result), of some vertices
- * only: `vertices[0..vertexCount]`, from the `count` triangles listed in `corners` (each corner as 3 * its vertex),
- * which must include every triangle of those vertices. The triangles' other corners, `others[0..otherCount]`, get
- * `restNormals`; the rest of `out` is left as it is. Allocates nothing.
- */
-export function computeSomeNormals(
-  positions: Float32Array,
-  corners: Uint32Array,
-  count: number,
-  vertices: Uint32Array,
-  vertexCount: number,
-  others: Uint32Array,
-  otherCount: number,
-  restNormals: Float32Array,
-  out: Float32Array,
-): void {
-  for (let k = 0; k < vertexCount; k++) {
-    const i = 3 * vertices[k];
-    out[i] = 0;
-    out[i + 1] = 0;
-    out[i + 2] = 0;
-  }
-  for (let k = 0; k < otherCount; k++) {
-    const i = 3 * others[k];
-    out[i] = 0;
-    out[i + 1] = 0;
-    out[i + 2] = 0;
-  }
-  addFaceNormals(positions, corners, count, 1, out);
-  for (let k = 0; k < vertexCount; k++) normalize(out, 3 * vertices[k]);
-  for (let k = 0; k < otherCount; k++) {
-    const i = 3 * others[k];
-    out[i] = restNormals[i];
-    out[i + 1] = restNormals[i + 1];
-    out[i + 2] = restNormals[i + 2];
-  }
-}
-
 /** Scales xyz at `i` to unit length, as computeNormals does (an isolated vertex's zero normal becomes +z). */
-function normalize(out: Float32Array, i: number): void {
+export function normalize(out: Float32Array, i: number): void {
   const len = Math.sqrt(out[i] * out[i] + out[i + 1] * out[i + 1] + out[i + 2] * out[i + 2]);
   if (len > 0) {
     out[i] /= len;
