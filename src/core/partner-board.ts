@@ -34,6 +34,11 @@ export const JOB_STOP = 5;
 export const JOB_BENDING = 6;
 /** Half of the normals (see projectNormals): the board's part is the shaded vertices' count. */
 export const JOB_NORMALS = 7;
+/** The second half of the region's frame start, relaxation or move record: the board's part is the region's count. */
+export const JOB_START_FRAME = 8;
+export const JOB_RELAX = 9;
+/** The move record's result, the largest squared move of the partner's half, goes to the board's value. */
+export const JOB_STEPS = 10;
 
 /** Board checks before sleeping: about 20 to 50 microseconds of spinning, longer than a part's projection. */
 const SPIN_LIMIT = 2000;
@@ -53,20 +58,26 @@ export class PartnerTimeoutError extends Error {
   }
 }
 
-/** The board's two views. */
+/** The board's views: its words, the job's arguments, and a value the partner hands back. */
 export interface Board {
   words: Int32Array;
   args: Float64Array;
+  value: Float64Array;
 }
 
 /** A new, zeroed board. */
 export function createBoard(): Board {
-  return boardViews(new SharedArrayBuffer(4 * BOARD_WORDS + 8 * BOARD_ARGUMENTS));
+  return boardViews(new SharedArrayBuffer(4 * BOARD_WORDS + 8 * (BOARD_ARGUMENTS + 1)));
 }
 
 /** The views of a board's buffer (as received by the partner thread). */
 export function boardViews(buffer: SharedArrayBuffer): Board {
-  return { words: new Int32Array(buffer, 0, BOARD_WORDS), args: new Float64Array(buffer, 4 * BOARD_WORDS, BOARD_ARGUMENTS) };
+  const floats = 4 * BOARD_WORDS;
+  return {
+    words: new Int32Array(buffer, 0, BOARD_WORDS),
+    args: new Float64Array(buffer, floats, BOARD_ARGUMENTS),
+    value: new Float64Array(buffer, floats + 8 * BOARD_ARGUMENTS, 1),
+  };
 }
 
 /**

@@ -10,12 +10,26 @@ import {
   JOB_NORMALS,
   JOB_ORIENTATION,
   JOB_POSITIONS,
+  JOB_RELAX,
+  JOB_START_FRAME,
+  JOB_STEPS,
   JOB_STOP,
   waitWhile,
   type Board,
 } from './partner-board';
 import { PARTS } from './constraint-lists';
-import { projectBendingPart, projectCollisions, projectLengths, projectNormals, projectOrientationPart, projectPositions, type PartArrays } from './solver-kernels';
+import {
+  projectBendingPart,
+  projectCollisions,
+  projectLengths,
+  projectNormals,
+  projectOrientationPart,
+  projectPositions,
+  recordStepsPart,
+  relaxPart,
+  startFramePart,
+  type PartArrays,
+} from './solver-kernels';
 
 /**
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
@@ -49,6 +63,9 @@ export class SolverPartner {
       else if (job === JOB_COLLISIONS) projectCollisions(this.arrays, 1, 2, this.direction);
       else if (job === JOB_BENDING) projectBendingPart(this.arrays, Math.floor(part / PARTS), part % PARTS);
       else if (job === JOB_NORMALS) projectNormals(this.arrays, part, words, 1);
+      else if (job === JOB_START_FRAME) startFramePart(this.arrays, args[0], args[1], part >> 1, part);
+      else if (job === JOB_RELAX) relaxPart(this.arrays, args[0], part >> 1, part);
+      else if (job === JOB_STEPS) this.board.value[0] = recordStepsPart(this.arrays, part >> 1, part);
       Atomics.store(words, BOARD_RESULT, result);
       done = sequence;
       Atomics.store(words, BOARD_DONE, done);

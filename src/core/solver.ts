@@ -26,7 +26,7 @@ import {
   type TriangleLists,
 } from './constraint-lists';
 import { allocate, type Memory } from './memory';
-import { JOB_BENDING, JOB_COLLISIONS, JOB_LENGTHS, JOB_NORMALS, JOB_ORIENTATION, JOB_POSITIONS } from './partner-board';
+import { JOB_BENDING, JOB_COLLISIONS, JOB_LENGTHS, JOB_NORMALS, JOB_ORIENTATION, JOB_POSITIONS, JOB_RELAX, JOB_START_FRAME, JOB_STEPS } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import {
   projectBendingPart,
@@ -35,6 +35,9 @@ import {
   projectNormals,
   projectOrientationPart,
   projectPositions,
+  recordStepsPart,
+  relaxPart,
+  startFramePart,
   ORIENT_AGAIN,
   ORIENT_FULL,
   ORIENT_WATCHED,
@@ -280,12 +283,13 @@ export class SkinSolver {
       throw new Error('a solver on shared memory needs its buffers on shared memory');
     }
     // Outside the active region `previous` is only written when the region changes, and stays at rest.
-    this.previous = Float32Array.from(topology.rest);
-    this.lastStep = new Float32Array(3 * n);
-    this.relaxation = new Float32Array(n).fill(1);
-    this.restart = new Uint8Array(n);
-    this.calm = new Uint8Array(n).fill(255);
-    this.path = new Float32Array(n);
+    this.previous = allocate(Float32Array, 3 * n, memory);
+    this.previous.set(topology.rest);
+    this.lastStep = allocate(Float32Array, 3 * n, memory);
+    this.relaxation = allocate(Float32Array, n, memory).fill(1);
+    this.restart = allocate(Uint8Array, n, memory);
+    this.calm = allocate(Uint8Array, n, memory).fill(255);
+    this.path = allocate(Float32Array, n, memory);
     this.looping = new Uint8Array(n);
     this.held = new Uint32Array(n);
     this.bendStiffness = allocate(Float32Array, n, memory);
@@ -346,6 +350,12 @@ export class SkinSolver {
       listedTriangle: allocate(Int32Array, triangleCount, memory),
       regionVertices: this.region.vertices,
       shadedVertices: this.region.shadedVertices,
+      previous: this.previous,
+      lastStep: this.lastStep,
+      relaxation: this.relaxation,
+      restart: this.restart,
+      calm: this.calm,
+      path: this.path,
       colliders: this.colliders,
       colliderShapes: this.colliderShapes,
       colliderVertices: c.vertices,
@@ -696,36 +706,14 @@ export class SkinSolver {
    * 2 of the default rig's 33 expressions, by micrometres a frame): from then on every share shrinks each frame.
    */
   private relax(): void {
-    const x = this.buffers.positions;
-    const prev = this.previous;
-    const last = this.lastStep;
-    const share = this.relaxation;
-    const calm = this.calm;
     const late = this.motionFrames++ - LATE_MOTION;
     const cap = late > 0 ? LATE_SLOWING ** late : 1;
-    const V = this.region.vertices;
     const count = this.region.count;
-    for (let k = 0; k < count; k++) {
-      const v = V[k];
-      const i = 3 * v;
-      const dx = x[i] - prev[i];
-      const dy = x[i + 1] - prev[i + 1];
-      const dz = x[i + 2] - prev[i + 2];
-      const lx = last[i], ly = last[i + 1], lz = last[i + 2];
-      const turn = dx * lx + dy * ly + dz * lz;
-      if (turn < 0) this.restart[v] = 1;
-      let w = share[v];
-      // Turned back by more than 120 degrees: a cycle, not a curve.
-      if (turn < 0 && 4 * turn * turn > (dx * dx + dy * dy + dz * dz) * (lx * lx + ly * ly + lz * lz)) {
-        if (w > MIN_RELAXATION && calm[v] < CYCLE_TURNS_WITHIN) w = share[v] = w * 0.5;
-        calm[v] = 0;
-      } else if (calm[v] < 255) calm[v]++;
-      if (w > cap) w = cap;
-      if (w === 1) continue;
-      x[i] = prev[i] + w * dx;
-      x[i + 1] = prev[i + 1] + w * dy;
-      x[i + 2] = prev[i + 2] + w * dz;
-    }
+    const partner = this.partner;
+    if (!partner) return relaxPart(this.parts, cap, 0, count);
+    partner.start(JOB_RELAX, count, cap);
+    relaxPart(this.parts, cap, 0, count >> 1);
+    partner.finish();
   }
 
   /**
@@ -782,54 +770,23 @@ export class SkinSolver {
    * carried move that overshoots turns back, and the relaxation treats that as any cycle.
    */
   private startFrame(beta: number, foldBeta: number): void {
-    const x = this.buffers.positions;
-    const prev = this.previous;
-    const N = this.topology.restNormals;
-    const extra = foldBeta - beta;
-    const carry = beta !== 0 || foldBeta !== 0;
-    const last = this.lastStep;
-    const restart = this.restart;
-    const share = this.relaxation;
-    const V = this.region.vertices;
     const count = this.region.count;
-    for (let k = 0; k < count; k++) {
-      const v = V[k];
-      const i = 3 * v;
-      prev[i] = x[i];
-      prev[i + 1] = x[i + 1];
-      prev[i + 2] = x[i + 2];
-      if (!carry) continue;
-      if (restart[v] === 1 || share[v] < 1) {
-        restart[v] = 0;
-        continue;
-      }
-      const along = extra * (last[i] * N[i] + last[i + 1] * N[i + 1] + last[i + 2] * N[i + 2]);
-      x[i] += beta * last[i] + along * N[i];
-      x[i + 1] += beta * last[i + 1] + along * N[i + 1];
-      x[i + 2] += beta * last[i + 2] + along * N[i + 2];
-    }
+    const partner = this.partner;
+    if (!partner) return startFramePart(this.parts, beta, foldBeta, 0, count);
+    partner.start(JOB_START_FRAME, count, beta, foldBeta);
+    startFramePart(this.parts, beta, foldBeta, 0, count >> 1);
+    partner.finish();
   }
 
   /** Stores each vertex's move of this frame and returns the largest. */
   private recordSteps(): number {
-    const x = this.buffers.positions;
-    const prev = this.previous;
-    const last = this.lastStep;
-    const V = this.region.vertices;
     const count = this.region.count;
-    const path = this.path;
-    let largest2 = 0;
-    // Skin outside the region does not move; its steps are zeroed when it leaves (see refreshLists).
-    for (let k = 0; k < count; k++) {
-      const i = 3 * V[k];
-      const dx = (last[i] = x[i] - prev[i]);
-      const dy = (last[i + 1] = x[i + 1] - prev[i + 1]);
-      const dz = (last[i + 2] = x[i + 2] - prev[i + 2]);
-      const d2 = dx * dx + dy * dy + dz * dz;
-      if (d2 > largest2) largest2 = d2;
-      path[V[k]] += Math.sqrt(d2);
-    }
-    return Math.sqrt(largest2);
+    const partner = this.partner;
+    if (!partner) return Math.sqrt(recordStepsPart(this.parts, 0, count));
+    partner.start(JOB_STEPS, count);
+    const mine = recordStepsPart(this.parts, 0, count >> 1);
+    partner.finish();
+    return Math.sqrt(Math.max(mine, partner.board.value[0]));
   }
 
   /**
@@ -1040,12 +997,6 @@ export const LATE_MOTION = 1000;
 /** Per frame after LATE_MOTION, the cap on every vertex's share shrinks by this factor. */
 const LATE_SLOWING = 0.98;
 
-/**
- * A vertex's share is halved when it turns back again within this many frames of its last turn (see SkinSolver.relax):
- * a cycle repeats, while one turn is often a single bounce (a lip on a tooth as the skin starts moving).
- */
-const CYCLE_TURNS_WITHIN = 2;
-
 /** Frames over which the skin's ways are weighed against the window before (see SkinSolver.breakLoops). */
 const LOOP_WINDOW = 32;
 /** Skin whose longest way in a window is more than this share of the last window's has stalled. */
@@ -1054,9 +1005,6 @@ const STALL = 0.9;
 const STALL_PART = 0.25;
 /** The least share breakLoops leaves a vertex (a thousandth: its moves are then far below the sleep tolerance). */
 const LOOP_LEAST_SHARE = 1 / 1024;
-
-/** The least share of its solved move a vertex that keeps turning back takes in a frame (see SkinSolver.relax). */
-export const MIN_RELAXATION = 1 / 16;
 
 
 /**
