@@ -17,7 +17,7 @@ export const BOARD_RESULT = 4;
 const BARRIER_COUNT = 5;
 const BARRIER_GENERATION = 6;
 const BOARD_WORDS = 8;
-/** Float64 arguments after the words. */
+/** Float64 arguments after the words; after them one Float64 the partner hands back (see Board.value). */
 export const BOARD_ARGUMENTS = 3;
 
 /**
