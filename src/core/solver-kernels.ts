@@ -3,7 +3,7 @@
  * thread's SkinSolver and the partner thread's SolverPartner run the same code on the same shared arrays.
  */
 import { COLLIDER_SHAPE, shapeDistance, type Collider } from './colliders';
-import { PART_EVEN, PART_EVEN_SEAM, PARTS, type BendingLists, type EdgeLists, type TriangleLists } from './constraint-lists';
+import { EDGE_RECORD, PART_EVEN, PART_EVEN_SEAM, PARTS, type BendingLists, type EdgeLists, type TriangleLists } from './constraint-lists';
 import { meet } from './partner-board';
 import { addFaceNormals, normalize } from './topology';
 
@@ -28,6 +28,11 @@ export interface PartArrays {
   vertexTriangleStart: Uint32Array;
   vertexTriangles: Uint32Array;
   edges: EdgeLists;
+  /**
+   * Per vertex, at its xyz offset: the way a compressed held edge pushes it per unit of compression and of muscle
+   * weight, its rest normal times its bulge seed (see SkinSolver).
+   */
+  bulgeDirections: Float32Array;
   triangles: TriangleLists;
   bending: BendingLists;
   /** Per vertex: the bending constraint's value at rest, its share per pass and its passes (see SkinSolver). */
@@ -201,7 +206,7 @@ export function projectLengths(a: PartArrays, stiffness: number, bulge: number, 
       else (f0 = f), (h0 = h);
     }
     projectFreeEdges(x, ends, rest, stiffness, f0, f1);
-    projectHeldEdges(x, a.edges, stiffness, bulge, h0, h1);
+    projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, h0, h1);
     if (board) meet(board);
   }
 }
@@ -212,7 +217,11 @@ export function projectLengths(a: PartArrays, stiffness: number, bulge: number, 
  */
 function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
   const s = 0.5 * stiffness;
-  for (let j = 3 * e0; j < 3 * e1; j += 3) {
+  // The record size read once into a local: an imported binding in the loop's test slowed the partner thread's
+  // copy of this loop threefold under Node's module loader.
+  const r = EDGE_RECORD;
+  const j1 = r * e1;
+  for (let j = r * e0; j < j1; j += r) {
     const ia = ends[j];
     const ib = ends[j + 1];
     const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
@@ -232,15 +241,18 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
 }
 
 /**
- * Length projections of held edges `e0..e1`: as projectFreeEdges, and a compressed edge nudges its ends out along
- * their rest normals by `bulge` times its compression times each end's push (see EdgeLists.held).
+ * Length projections of held edges `e0..e1`: as projectFreeEdges, and a compressed edge pushes each end along its
+ * bulge direction (`directions`) by `bulge` times its compression times the edge's muscle weight.
  */
-function projectHeldEdges(x: Float32Array, lists: EdgeLists, stiffness: number, bulge: number, e0: number, e1: number): void {
-  const { ends, rest, held } = lists;
+function projectHeldEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, directions: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
   const s = 0.5 * stiffness;
-  for (let e = e0; e < e1; e++) {
-    const ia = ends[3 * e];
-    const ib = ends[3 * e + 1];
+  // The record size read once into a local: an imported binding in the loop's test slowed the partner thread's
+  // copy of this loop threefold under Node's module loader.
+  const r = EDGE_RECORD;
+  const j1 = r * e1;
+  for (let j = r * e0; j < j1; j += r) {
+    const ia = ends[j];
+    const ib = ends[j + 1];
     const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
     const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
     const dx = bx - ax;
@@ -248,24 +260,17 @@ function projectHeldEdges(x: Float32Array, lists: EdgeLists, stiffness: number, 
     const dz = bz - az;
     const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
     if (len === 0) continue;
-    const error = len - rest[3 * e + 2];
+    const error = len - rest[j + 2];
     const k = (s * error) / len;
-    x[ia] = ax + k * dx;
-    x[ia + 1] = ay + k * dy;
-    x[ia + 2] = az + k * dz;
-    x[ib] = bx - k * dx;
-    x[ib + 1] = by - k * dy;
-    x[ib + 2] = bz - k * dz;
-    if (error < 0) {
-      const push = -bulge * error;
-      const j = 6 * e;
-      x[ia] += push * held[j];
-      x[ia + 1] += push * held[j + 1];
-      x[ia + 2] += push * held[j + 2];
-      x[ib] += push * held[j + 3];
-      x[ib + 1] += push * held[j + 4];
-      x[ib + 2] += push * held[j + 5];
-    }
+    // bulge * weight * max(0, -error), without a branch that half the edges take (compressed or stretched at random):
+    // (|error| - error) / 2 is exactly -error or 0.
+    const push = bulge * rest[j + 3] * ((Math.abs(error) - error) * 0.5);
+    x[ia] = ax + k * dx + push * directions[ia];
+    x[ia + 1] = ay + k * dy + push * directions[ia + 1];
+    x[ia + 2] = az + k * dz + push * directions[ia + 2];
+    x[ib] = bx - k * dx + push * directions[ib];
+    x[ib + 1] = by - k * dy + push * directions[ib + 1];
+    x[ib + 2] = bz - k * dz + push * directions[ib + 2];
   }
 }
 

@@ -238,7 +238,8 @@ export class SkinSolver {
   /** The skin a frame solves (see active-region.ts); the lists above hold its constraints as of `listedRevision`. */
   private readonly region: ActiveRegion;
   private listedRevision = -1;
-  private readonly seed: Float32Array;
+  /** Each vertex's push per unit of compression of a held edge (see PartArrays.bulgeDirections). */
+  private readonly bulgeDirections: Float32Array;
   private readonly colliders: Collider[];
   private readonly colliderStart: Uint32Array;
   private readonly colliderVertices: Uint32Array;
@@ -294,11 +295,14 @@ export class SkinSolver {
     this.held = new Uint32Array(n);
     this.bendStiffness = allocate(Float32Array, n, memory);
     this.bendPasses = allocate(Uint8Array, n, memory);
-    // A fixed, deterministic per-vertex value in [-0.25, 0.75): breaks the symmetry of a flat compressed patch so it
-    // buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than sink. A larger
-    // mean lifts the whole patch in one bulge instead of folding it.
-    this.seed = new Float32Array(n);
-    for (let v = 0; v < n; v++) this.seed[v] = hash01(v) - 0.25;
+    // A fixed, deterministic per-vertex seed in [-0.25, 0.75) along the rest normal: breaks the symmetry of a flat
+    // compressed patch so it buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than
+    // sink. A larger mean lifts the whole patch in one bulge instead of folding it.
+    this.bulgeDirections = allocate(Float32Array, 3 * n, memory);
+    for (let v = 0; v < n; v++) {
+      const seed = hash01(v) - 0.25;
+      for (let k = 3 * v; k < 3 * v + 3; k++) this.bulgeDirections[k] = seed * topology.restNormals[k];
+    }
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.edgeLists = createEdgeLists(topology, memory);
     this.triangleLists = createTriangleLists(topology, memory);
@@ -338,6 +342,7 @@ export class SkinSolver {
       vertexTriangleStart: topology.vertexTriangleStart,
       vertexTriangles: topology.vertexTriangles,
       edges: this.edgeLists,
+      bulgeDirections: this.bulgeDirections,
       triangles: this.triangleLists,
       bending: createBendingLists(n, memory),
       bendRest: this.bendRest,
@@ -586,7 +591,7 @@ export class SkinSolver {
   /** Rebuilds the constraint lists for the current region and muscle weights. */
   private refreshLists(): void {
     const included = this.region.enabled ? this.region.inside : null;
-    fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.seed, included);
+    fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, included);
     this.listBending();
     // The watched flags follow their triangles to their new places.
     const places = this.parts.listedTriangle;
