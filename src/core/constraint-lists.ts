@@ -30,10 +30,9 @@ export const PARTS = 4;
  *
  * Each listed edge is one record of four 32-bit words, so that the loop reads one aligned stream: listed edge e has its
  * ends' xyz offsets (3 * vertex) at `ends[4e]` and `ends[4e + 1]`, its rest length at `rest[4e + 2]` and, if held, the
- * larger muscle weight of its ends at `rest[4e + 3]` (two views of one buffer). Four words read faster than three
- * (10.1 against 12.0 ns an edge on the high head's smile) and leave room for the weight, which with each vertex's
- * bulge direction (see PartArrays.bulgeDirections) replaces six floats an edge of precomputed pushes (held edges
- * 15.6 against 21.3 ns).
+ * larger muscle weight of its ends at `rest[4e + 3]` (two views of one buffer). The weight, with each vertex's bulge
+ * direction (see PartArrays.bulgeDirections), replaces six floats an edge of precomputed pushes, whose reading bound
+ * the held edges' loop (15.6 against 21.3 ns an edge in a loop test on the high head's smile).
  */
 export interface EdgeLists {
   ends: Uint32Array;
