@@ -35,10 +35,14 @@ export interface PartArrays {
   bulgeDirections: Float32Array;
   triangles: TriangleLists;
   bending: BendingLists;
-  /** Per vertex: the bending constraint's value at rest, its share per pass and its passes (see SkinSolver). */
+  /**
+   * Per vertex: the bending constraint's value at rest, its step per unit of the constraint (its share per pass over
+   * the gradient's squared norm, 1 + 1 / degree; 0 for none) and its passes (see SkinSolver), and 1 / its degree.
+   */
   bendRest: Float64Array;
-  bendStiffness: Float32Array;
+  bendGain: Float32Array;
   bendPasses: Uint8Array;
+  inverseDegree: Float32Array;
   /**
    * For orientation passes that follow one another (see projectOrientationPart): 1 for each listed triangle with a
    * corner moved since it was last checked; and each triangle's place in the list (-1 if not listed).
@@ -404,18 +408,18 @@ export function projectBendingPart(a: PartArrays, pass: number, part: number): v
   const start = a.neighbourStart;
   const nb = a.neighbourOffsets;
   const atRest = a.bendRest;
-  const stiffness = a.bendStiffness;
+  const gain = a.bendGain;
+  const inverse = a.inverseDegree;
   const passes = a.bendPasses;
   const list = a.bending.vertices;
   const run = (pass === 0 ? 0 : PARTS + 1) + part;
   const r1 = a.bending.runs[run + 1];
   for (let r = a.bending.runs[run]; r < r1; r++) {
     const v = list[r];
-    const s = stiffness[v];
+    const g = gain[v];
+    if (passes[v] <= pass || g === 0) continue;
     const j0 = start[v];
     const j1 = start[v + 1];
-    const degree = j1 - j0;
-    if (passes[v] <= pass || s === 0 || degree === 0) continue;
     const i = 3 * v;
     const nx = N[i];
     const ny = N[i + 1];
@@ -427,13 +431,14 @@ export function projectBendingPart(a: PartArrays, pass: number, part: number): v
       const k = nb[j];
       mean += x[k] * nx + x[k + 1] * ny + x[k + 2] * nz;
     }
-    const C = mean / degree - (x[i] * nx + x[i + 1] * ny + x[i + 2] * nz) - atRest[v];
-    // Gradient: -n at the vertex, n / degree at each neighbour; squared norm 1 + 1 / degree.
-    const lambda = (s * C) / (1 + 1 / degree);
+    const w = inverse[v];
+    const C = mean * w - (x[i] * nx + x[i + 1] * ny + x[i + 2] * nz) - atRest[v];
+    // Gradient: -n at the vertex, n / degree at each neighbour; the gain holds the division by its squared norm.
+    const lambda = g * C;
     x[i] += lambda * nx;
     x[i + 1] += lambda * ny;
     x[i + 2] += lambda * nz;
-    const q = lambda / degree;
+    const q = lambda * w;
     for (let j = j0; j < j1; j++) {
       const k = nb[j];
       x[k] -= q * nx;

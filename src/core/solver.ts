@@ -210,7 +210,9 @@ export class SkinSolver {
   private lastLongest = 0;
   private readonly held: Uint32Array;
   private heldCount = 0;
+  /** Each vertex's bending share per pass, and its step per unit of the constraint (see PartArrays.bendGain). */
   private readonly bendStiffness: Float32Array;
+  private readonly bendGain: Float32Array;
   /** Bending projections of each vertex per outer iteration, and the most any vertex takes (see setParameters). */
   private readonly bendPasses: Uint8Array;
   /** Per vertex, the bending constraint's value at rest (see projectBending), so the frames need not read rest. */
@@ -293,7 +295,8 @@ export class SkinSolver {
     this.path = allocate(Float32Array, n, memory);
     this.looping = new Uint8Array(n);
     this.held = new Uint32Array(n);
-    this.bendStiffness = allocate(Float32Array, n, memory);
+    this.bendStiffness = new Float32Array(n);
+    this.bendGain = allocate(Float32Array, n, memory);
     this.bendPasses = allocate(Uint8Array, n, memory);
     // A fixed, deterministic per-vertex seed in [-0.25, 0.75) along the rest normal: breaks the symmetry of a flat
     // compressed patch so it buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than
@@ -346,7 +349,8 @@ export class SkinSolver {
       triangles: this.triangleLists,
       bending: createBendingLists(n, memory),
       bendRest: this.bendRest,
-      bendStiffness: this.bendStiffness,
+      bendGain: this.bendGain,
+      inverseDegree: inverseDegrees(topology, memory),
       bendPasses: this.bendPasses,
       unchecked,
       uncheckedWords: new Uint32Array(unchecked.buffer),
@@ -407,7 +411,12 @@ export class SkinSolver {
       for (let k = start[v]; k < start[v + 1]; k++) cap(nb[k]);
     }
     this.maxBendPasses = 1;
-    for (let v = 0; v < n; v++) if (this.bendPasses[v] > this.maxBendPasses) this.maxBendPasses = this.bendPasses[v];
+    for (let v = 0; v < n; v++) {
+      if (this.bendPasses[v] > this.maxBendPasses) this.maxBendPasses = this.bendPasses[v];
+      // The share over the gradient's squared norm, 1 + 1 / degree (see projectBendingPart).
+      const degree = start[v + 1] - start[v];
+      this.bendGain[v] = degree > 0 ? this.bendStiffness[v] / (1 + 1 / degree) : 0;
+    }
     this.listBending();
     // New parameters start a new motion, as new muscle inputs do.
     this.restartMotion();
@@ -1051,6 +1060,17 @@ function bendingAtRest(topology: SkinTopology, offsets: Uint32Array): Float64Arr
       mean += X[k] * N[i] + X[k + 1] * N[i + 1] + X[k + 2] * N[i + 2];
     }
     out[v] = mean / degree - (X[i] * N[i] + X[i + 1] * N[i + 1] + X[i + 2] * N[i + 2]);
+  }
+  return out;
+}
+
+/** 1 / each vertex's degree (0 for none), for the bending step. */
+function inverseDegrees(topology: SkinTopology, memory: Memory): Float32Array {
+  const start = topology.neighbourStart;
+  const out = allocate(Float32Array, topology.vertexCount, memory);
+  for (let v = 0; v < out.length; v++) {
+    const degree = start[v + 1] - start[v];
+    out[v] = degree > 0 ? 1 / degree : 0;
   }
   return out;
 }
