@@ -250,9 +250,7 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
  */
 function projectHeldEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, directions: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
   const s = 0.5 * stiffness;
-  // The record size read once into a local: an imported binding in the loop's test slowed the partner thread's
-  // copy of this loop threefold under Node's module loader.
-  const r = EDGE_RECORD;
+  const r = EDGE_RECORD; // read once, as in projectFreeEdges
   const j1 = r * e1;
   for (let j = r * e0; j < j1; j += r) {
     const ia = ends[j];
