@@ -1,0 +1,152 @@
+/**
+ * The solver's answer in the page: `npm run bench:page [-- options]`. Builds the app, serves it (vite preview, so the
+ * page is cross-origin isolated), and for each expression, from rest, measures how long after the input the skin is
+ * within 2 % of its final shape (every vertex nearer its final place than 2 % of the largest move), when that shape is
+ * first drawn, and when the solver sleeps; `reset` goes back to rest from the expression before it, within 0.01 mm.
+ * Prints a table of medians and writes bench-results/page.json. Software WebGL (SwiftShader) draws on the same cores
+ * as the solver: the drawn column is the display's, the first the skin's.
+ *
+ * Options:
+ *   --resolution low|medium|high   the head (default medium)
+ *   --workers 1|2|auto             solver threads (default: the page's choice, `auto`)
+ *   --items AU12,happiness,AU26,reset   what to time, in this order (default)
+ *   --runs N                       runs of the whole list, each in a fresh page (default 2)
+ *   --wait MS                      quiet time before each input (default 3000)
+ *   --no-build                     serve the last build (dist/) as it is
+ */
+import { spawn, execSync } from 'node:child_process';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { cpus } from 'node:os';
+import { launchBrowser, openApp } from './browser.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const i = args.indexOf(`--${name}`);
+  return i >= 0 && i + 1 < args.length ? args[i + 1] : fallback;
+};
+const resolution = option('resolution', 'medium');
+const workers = option('workers', 'auto');
+const items = option('items', 'AU12,happiness,AU26,reset').split(',').filter(Boolean);
+const runs = Number(option('runs', '2'));
+const waitMs = Number(option('wait', '3000'));
+if (!['low', 'medium', 'high'].includes(resolution)) throw new Error(`--resolution must be low, medium or high, got ${resolution}`);
+if (!['1', '2', 'auto'].includes(workers)) throw new Error(`--workers must be 1, 2 or auto, got ${workers}`);
+if (!Number.isInteger(runs) || runs < 1) throw new Error(`--runs must be a positive integer, got ${option('runs')}`);
+/** Share of the largest move a vertex may still be from its final place; back at rest means within 0.01 mm. */
+const NEAR_FINAL = 0.02;
+const AT_REST = 1e-5;
+const PORT = 4190;
+const SETTLE_MS = 60_000;
+
+/** Times one item in the page: runs in the browser, polls the newest solver frame every 2 ms and samples drawing. */
+async function timeItem(page, item) {
+  return page.evaluate(
+    async ({ item, waitMs, nearFinal, atRest, settleMs }) => {
+      const face = window.face;
+      if (item !== 'reset') {
+        face.reset();
+        await face.settle(settleMs);
+      }
+      await new Promise((r) => setTimeout(r, waitMs));
+      const start = face.getSkin().positions;
+      const firstFrame = face.stats().frames;
+      /** Each new solver frame: when the page first saw it, and its shape. */
+      const frames = [];
+      /** Each animation frame: when, and the newest solver frame then (what it draws). */
+      const draws = [];
+      let sleptAt = null;
+      let polling = true;
+      const t0 = performance.now();
+      const poll = () => {
+        const s = face.stats();
+        const n = s.frames - firstFrame;
+        if (n > 0 && (frames.length === 0 || frames[frames.length - 1].n !== n)) frames.push({ t: performance.now() - t0, n, x: face.getSkin().positions });
+        if (sleptAt === null && n > 0 && s.sleeping) sleptAt = { t: performance.now() - t0, n };
+        if (polling) setTimeout(poll, 2);
+      };
+      const sample = () => {
+        draws.push({ t: performance.now() - t0, n: face.stats().frames - firstFrame });
+        if (polling) requestAnimationFrame(sample);
+      };
+      if (item === 'reset') face.reset();
+      else if (item.startsWith('AU')) face.setActionUnit(item, 1);
+      else face.applyPreset(item, 1);
+      requestAnimationFrame(sample);
+      poll();
+      await face.settle(settleMs);
+      // The draw of the last frames comes a little after the solver sleeps.
+      await new Promise((r) => setTimeout(r, 500));
+      polling = false;
+      const skin = face.getSkin();
+      const final = item === 'reset' ? skin.rest : skin.positions;
+      const farthest = (a, b) => {
+        let worst = 0;
+        for (let i = 0; i < a.length; i += 3) worst = Math.max(worst, (a[i] - b[i]) ** 2 + (a[i + 1] - b[i + 1]) ** 2 + (a[i + 2] - b[i + 2]) ** 2);
+        return Math.sqrt(worst);
+      };
+      const tolerance = item === 'reset' ? atRest : nearFinal * farthest(start, final);
+      const near = frames.find((f) => farthest(f.x, final) <= tolerance) ?? null;
+      const drawn = near ? (draws.find((d) => d.n >= near.n) ?? null) : null;
+      return { item, nearMs: near?.t ?? null, nearFrames: near?.n ?? null, drawnMs: drawn?.t ?? null, sleepMs: sleptAt?.t ?? null, sleepFrames: sleptAt?.n ?? null };
+    },
+    { item, waitMs, nearFinal: NEAR_FINAL, atRest: AT_REST, settleMs: SETTLE_MS },
+  );
+}
+
+if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
+const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
+const browser = await launchBrowser();
+const results = [];
+try {
+  for (let run = 0; run < runs; run++) {
+    const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
+    const query = new URLSearchParams({ resolution, ...(workers === 'auto' ? {} : { workers }) });
+    // Tried again while the server starts.
+    await openApp(page, `http://127.0.0.1:${PORT}/?${query}`, { retries: 50 });
+    const stats = await page.evaluate(() => window.face.stats());
+    for (const item of items) results.push({ run, workers: stats.workers, mode: stats.mode, ...(await timeItem(page, item)) });
+    await page.close();
+  }
+} finally {
+  await browser.close();
+  process.kill(-server.pid);
+}
+
+const median = (xs) => {
+  const s = xs.filter((x) => x !== null).sort((a, b) => a - b);
+  if (s.length === 0) return null;
+  const m = s.length >> 1;
+  return s.length % 2 === 1 ? s[m] : (s[m - 1] + s[m]) / 2;
+};
+const range = (xs) => {
+  const s = xs.filter((x) => x !== null).sort((a, b) => a - b);
+  return s.length === 0 ? '-' : s.length === 1 ? `${Math.round(s[0])}` : `${Math.round(s[0])}-${Math.round(s[s.length - 1])}`;
+};
+const rows = items.map((item) => {
+  const r = results.filter((x) => x.item === item);
+  return {
+    item,
+    medianNearMs: median(r.map((x) => x.nearMs)),
+    nearMs: range(r.map((x) => x.nearMs)),
+    nearFrames: median(r.map((x) => x.nearFrames)),
+    medianDrawnMs: median(r.map((x) => x.drawnMs)),
+    drawnMs: range(r.map((x) => x.drawnMs)),
+    medianSleepMs: median(r.map((x) => x.sleepMs)),
+    sleepMs: range(r.map((x) => x.sleepMs)),
+    sleepFrames: median(r.map((x) => x.sleepFrames)),
+  };
+});
+const fmt = (x) => (x === null ? '-' : String(Math.round(x)));
+const header = '| input | ms to 2 % (median, range) | frames to 2 % | ms until drawn | ms to sleep | frames to sleep |';
+console.log(`The page: ${resolution} head, ${results[0]?.workers ?? '?'} worker(s), ${results[0]?.mode ?? '?'} mode, ${runs} run(s), ${cpus().length} cores\n`);
+console.log(
+  [
+    header,
+    header.replace(/[^|]+/g, ' --- '),
+    ...rows.map((r) => `| ${r.item} | ${fmt(r.medianNearMs)} (${r.nearMs}) | ${fmt(r.nearFrames)} | ${fmt(r.medianDrawnMs)} (${r.drawnMs}) | ${fmt(r.medianSleepMs)} (${r.sleepMs}) | ${fmt(r.sleepFrames)} |`),
+  ].join('\n'),
+);
+mkdirSync('bench-results', { recursive: true });
+const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length };
+writeFileSync('bench-results/page.json', JSON.stringify({ machine, date: new Date().toISOString(), resolution, runs, rows, results }, null, 2) + '\n');
+console.log('\nwrote bench-results/page.json');
