@@ -737,7 +737,7 @@ export class SkinSolver {
    * before, the skin has stalled: it circles (a smooth loop of a few dozen frames a turn, where no move turns back on
    * the one before, so `relax` does not see it) or chatters at its least share where the hard constraints take turns.
    * The vertices that went far (over STALL_PART of the longest way) and their neighbours (the loop is a mode of the
-   * patch: slowing one vertex moves the loop next to it) take half their moves from then on. An under-relaxed step has
+   * patch: slowing one vertex moves the loop next to it) take a quarter of their moves from then on (LOOP_SLOWING). An under-relaxed step has
    * the same fixed points, so where the constraints have one the skin converges to it; where they only chatter, the
    * patch slows until it sleeps, long before the safety net (see LATE_MOTION). Skin that converges shortens its way
    * by more than a tenth a window (a third of a per cent a frame) and is left alone: eight of the rig's slowest
@@ -772,7 +772,7 @@ export class SkinSolver {
     // Only the region's shares change: a marked neighbour outside it is at rest and joins, if ever, with a whole share.
     for (let k = 0; k < count; k++) {
       const v = V[k];
-      if (mark[v] === 1 && share[v] > LOOP_LEAST_SHARE) share[v] *= 0.5;
+      if (mark[v] === 1 && share[v] > LOOP_LEAST_SHARE) share[v] *= LOOP_SLOWING;
     }
     mark.fill(0);
   }
@@ -1032,6 +1032,13 @@ const LOOP_WINDOW = 32;
 const STALL = 0.9;
 /** In stalled skin, the vertices that went more than this share of the longest way are slowed, with their neighbours. */
 const STALL_PART = 0.25;
+/**
+ * The factor on a stalled vertex's share each window (see SkinSolver.breakLoops). With a half, anger's corner loop
+ * (some 80 um a frame) took seven windows to fall below the sleep tolerance: it slept after 321 frames, 3.5 s in the
+ * page. A quarter: 193 frames; over the medium head's 33 expressions, 2,562 frames to sleep against 2,636, the same
+ * frames to 2 % but one (AU43 slept after 329 instead of 293, AU23 161 instead of 143).
+ */
+const LOOP_SLOWING = 0.25;
 /** The least share breakLoops leaves a vertex (a thousandth: its moves are then far below the sleep tolerance). */
 const LOOP_LEAST_SHARE = 1 / 1024;
 
