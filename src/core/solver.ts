@@ -737,11 +737,11 @@ export class SkinSolver {
    * before, the skin has stalled: it circles (a smooth loop of a few dozen frames a turn, where no move turns back on
    * the one before, so `relax` does not see it) or chatters at its least share where the hard constraints take turns.
    * The vertices that went far (over STALL_PART of the longest way) and their neighbours (the loop is a mode of the
-   * patch: slowing one vertex moves the loop next to it) take a quarter of their moves from then on (LOOP_SLOWING). An under-relaxed step has
-   * the same fixed points, so where the constraints have one the skin converges to it; where they only chatter, the
-   * patch slows until it sleeps, long before the safety net (see LATE_MOTION). Skin that converges shortens its way
-   * by more than a tenth a window (a third of a per cent a frame) and is left alone: eight of the rig's slowest
-   * expressions on the medium head took the same frames with the threshold at 0.9 and at 0.95.
+   * patch: slowing one vertex moves the loop next to it) take a quarter of their moves from then on (LOOP_SLOWING).
+   * An under-relaxed step has the same fixed points, so where the constraints have one the skin converges to it;
+   * where they only chatter, the patch slows until it sleeps, long before the safety net (see LATE_MOTION). Skin that
+   * converges shortens its way by more than a tenth a window (a third of a per cent a frame) and is left alone: eight
+   * of the rig's slowest expressions on the medium head took the same frames with the threshold at 0.9 and at 0.95.
    */
   private breakLoops(): void {
     const path = this.path;
@@ -1015,7 +1015,8 @@ export const COLLIDER_BENDING_STIFFNESS = 0.25;
  * the eye in happiness slid one edge over some 30 frames), and the larger share moves them there sooner. The default
  * rig's 33 expressions on the medium head came within 2 % of their shapes after 1,011 frames in all (979 with the
  * length stiffness 1e-4 higher) against 1,135 (1,077) with 0.75 throughout; they sleep later, after 2,636 frames
- * against 2,392 (happiness within 2 % after 38 frames instead of 48, asleep after 135 instead of 93).
+ * against 2,392 (happiness within 2 % after 38 frames instead of 48, asleep after 135 instead of 93), measured before
+ * LOOP_SLOWING was a quarter.
  */
 export const FOLD_CHOICE_MOMENTUM = 0.75;
 /** Frames after an input or parameter change during which FOLD_CHOICE_MOMENTUM caps the fold momentum. */
