@@ -52,12 +52,14 @@ export class ControlReader {
    * so the worker's event loop stays free; where that is missing, it polls.
    */
   waitForInput(then: () => void): void {
-    if (this.hasPending()) {
+    // One load for the check and the wait: with two, a batch published between them was never waited for (the wait
+    // was on its own number), and the skin slept through it until the next input.
+    const words = this.control.words;
+    const seq = Atomics.load(words, CONTROL_INPUT_SEQ);
+    if ((seq & 1) === 0 && seq !== this.appliedSeq) {
       then();
       return;
     }
-    const words = this.control.words;
-    const seq = Atomics.load(words, CONTROL_INPUT_SEQ);
     const waitAsync = (Atomics as unknown as { waitAsync?: WaitAsync }).waitAsync;
     if (!waitAsync) {
       setTimeout(then, POLL_MS);
