@@ -2,9 +2,11 @@
  * The solver's answer in the page: `npm run bench:page [-- options]`. Builds the app, serves it (vite preview, so the
  * page is cross-origin isolated), and for each expression, from rest, measures how long after the input the skin is
  * within 2 % of its final shape (every vertex nearer its final place than 2 % of the largest move), when that shape is
- * first drawn, and when the solver sleeps; `reset` goes back to rest from the expression before it, within 0.01 mm.
- * Prints a table of medians and writes bench-results/page.json. Software WebGL (SwiftShader) draws on the same cores
- * as the solver: the drawn column is the display's, the first the skin's.
+ * first on screen, when the first frame of the answer is, and when the solver sleeps; `reset` goes back to rest from
+ * the expression before it, within 0.01 mm. A frame is on screen once the GPU has done the draw that showed it (a
+ * WebGL fence after the draw). Prints a table of medians and writes bench-results/page.json.
+ * Software WebGL (SwiftShader) draws on the same cores as the solver: the on-screen columns are the display's, the
+ * first the skin's.
  *
  * Copying every frame out of the page costs the page time (a megabyte a frame through `getSkin`, about a tenth of
  * happiness's time to 2 % here), so a first pass copies the frames to find which frame is within 2 %, and the timed
@@ -61,8 +63,12 @@ async function timeItem(page, item, nearFrames = null) {
       const firstFrame = face.stats().frames;
       /** Each new solver frame: when the page first saw it, and its shape. */
       const frames = [];
-      /** Each animation frame: when, and the newest solver frame then (what it draws). */
+      /**
+       * Each animation frame: when, the newest solver frame then (what the view draws in it), and when the GPU had done
+       * its work: a fence after the frame's draw (the view's animation-frame callback runs before this one) signals then.
+       */
       const draws = [];
+      const gl = document.querySelector('canvas')?.getContext('webgl2') ?? null;
       let sleptAt = null;
       let polling = true;
       const t0 = performance.now();
@@ -71,10 +77,16 @@ async function timeItem(page, item, nearFrames = null) {
         const n = s.frames - firstFrame;
         if (n > 0 && (frames.length === 0 || frames[frames.length - 1].n !== n)) frames.push({ t: performance.now() - t0, n, x: nearFrames === null ? face.getSkin().positions : null });
         if (sleptAt === null && n > 0 && s.sleeping) sleptAt = { t: performance.now() - t0, n };
+        for (const d of draws) {
+          if (d.fence === null || gl.getSyncParameter(d.fence, gl.SYNC_STATUS) !== gl.SIGNALED) continue;
+          d.doneMs = performance.now() - t0;
+          gl.deleteSync(d.fence);
+          d.fence = null;
+        }
         if (polling) setTimeout(poll, 2);
       };
       const sample = () => {
-        draws.push({ t: performance.now() - t0, n: face.stats().frames - firstFrame });
+        draws.push({ t: performance.now() - t0, n: face.stats().frames - firstFrame, fence: gl?.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0) ?? null, doneMs: null });
         if (polling) requestAnimationFrame(sample);
       };
       if (item === 'reset') face.reset();
@@ -84,7 +96,7 @@ async function timeItem(page, item, nearFrames = null) {
       poll();
       await face.settle(settleMs);
       // The draw of the last frames comes a little after the solver sleeps.
-      await new Promise((r) => setTimeout(r, 500));
+      await new Promise((r) => setTimeout(r, 1000));
       polling = false;
       const skin = face.getSkin();
       const final = item === 'reset' ? skin.rest : skin.positions;
@@ -95,8 +107,18 @@ async function timeItem(page, item, nearFrames = null) {
       };
       const tolerance = item === 'reset' ? atRest : nearFinal * farthest(start, final);
       const near = nearFrames === null ? (frames.find((f) => farthest(f.x, final) <= tolerance) ?? null) : (frames.find((f) => f.n >= nearFrames) ?? null);
-      const drawn = near ? (draws.find((d) => d.n >= near.n) ?? null) : null;
-      return { item, nearMs: near?.t ?? null, nearFrames: near?.n ?? null, drawnMs: drawn?.t ?? null, sleepMs: sleptAt?.t ?? null, sleepFrames: sleptAt?.n ?? null };
+      /** When the GPU had drawn the first animation frame that saw solver frame `n` or a later one. */
+      const shown = (n) => draws.find((d) => d.n >= n)?.doneMs ?? null;
+      for (const d of draws) if (d.fence !== null) gl.deleteSync(d.fence);
+      return {
+        item,
+        nearMs: near?.t ?? null,
+        nearFrames: near?.n ?? null,
+        firstShownMs: shown(1),
+        drawnMs: near ? shown(near.n) : null,
+        sleepMs: sleptAt?.t ?? null,
+        sleepFrames: sleptAt?.n ?? null,
+      };
     },
     { item, waitMs, nearFinal: NEAR_FINAL, atRest: AT_REST, settleMs: SETTLE_MS, nearFrames },
   );
@@ -151,6 +173,8 @@ const rows = items.map((item) => {
     medianNearMs: median(r.map((x) => x.nearMs)),
     nearMs: range(r.map((x) => x.nearMs)),
     nearFrames: median(r.map((x) => x.nearFrames)),
+    medianFirstShownMs: median(r.map((x) => x.firstShownMs)),
+    firstShownMs: range(r.map((x) => x.firstShownMs)),
     medianDrawnMs: median(r.map((x) => x.drawnMs)),
     drawnMs: range(r.map((x) => x.drawnMs)),
     medianSleepMs: median(r.map((x) => x.sleepMs)),
@@ -159,13 +183,13 @@ const rows = items.map((item) => {
   };
 });
 const fmt = (x) => (x === null ? '-' : String(Math.round(x)));
-const header = '| input | ms to 2 % (median, range) | frames to 2 % | ms until drawn | ms to sleep | frames to sleep |';
+const header = '| input | ms to 2 % (median, range) | frames to 2 % | first frame on screen, ms | 2 % on screen, ms | ms to sleep | frames to sleep |';
 console.log(`The page: ${resolution} head, ${results[0]?.workers ?? '?'} worker(s), ${results[0]?.mode ?? '?'} mode, ${runs} run(s), ${cpus().length} cores\n`);
 console.log(
   [
     header,
     header.replace(/[^|]+/g, ' --- '),
-    ...rows.map((r) => `| ${r.item} | ${fmt(r.medianNearMs)} (${r.nearMs}) | ${fmt(r.nearFrames)} | ${fmt(r.medianDrawnMs)} (${r.drawnMs}) | ${fmt(r.medianSleepMs)} (${r.sleepMs}) | ${fmt(r.sleepFrames)} |`),
+    ...rows.map((r) => `| ${r.item} | ${fmt(r.medianNearMs)} (${r.nearMs}) | ${fmt(r.nearFrames)} | ${fmt(r.medianFirstShownMs)} (${r.firstShownMs}) | ${fmt(r.medianDrawnMs)} (${r.drawnMs}) | ${fmt(r.medianSleepMs)} (${r.sleepMs}) | ${fmt(r.sleepFrames)} |`),
   ].join('\n'),
 );
 mkdirSync('bench-results', { recursive: true });

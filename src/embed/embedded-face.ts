@@ -342,7 +342,8 @@ export class EmbeddedFace {
     skinView.connect(simulation);
     own.push(this.view.onFrame(() => {
       simulation.advance();
-      return skinView.update();
+      if (skinView.update()) return true;
+      return simulation.awaitsAnswer() ? 'hold' : false;
     }));
     // Whatever the handle changes (expression, jaw, glyphs, editor, light, head) is drawn.
     own.push(this.handle.onChange(this.view.invalidate));

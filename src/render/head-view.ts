@@ -45,9 +45,11 @@ export interface HeadViewOptions {
 
 /**
  * Work done at each animation frame while the view is in view; `now` is the frame's timestamp in ms. It returns true
- * when it changed what the frame shows (new skin, turned eyes), so that the view draws it.
+ * when it changed what the frame shows (new skin, turned eyes), so that the view draws it; `hold` when what it shows
+ * is about to change (the skin has not answered an input yet), so that the view puts off drawing until it has: the
+ * hook bounds how long it holds.
  */
-export type FrameHook = (now: number) => boolean | void;
+export type FrameHook = (now: number) => boolean | 'hold' | void;
 
 /** What `measureRender` reports: main-thread time of `renderer.render` and what the last frame drew. */
 export interface RenderTiming {
@@ -115,6 +117,8 @@ export class HeadView {
    */
   private drawUntil = 0;
   private drawFrames = 0;
+  /** A change waits to be drawn (a hook held the frame it came in). */
+  private drawPending = false;
   private readonly resizeObserver: ResizeObserver;
   /**
    * Whether any of the canvas is in view: a view scrolled away or in a hidden element renders nothing (and runs no
@@ -290,11 +294,20 @@ export class HeadView {
     const loop = (now: number): void => {
       this.frame = requestAnimationFrame(loop);
       if (!this.inView || this.capturing) return;
-      let changed = this.drawFrames > 0 || performance.now() < this.drawUntil;
-      for (let i = 0; i < this.frameHooks.length; i++) if (this.frameHooks[i](now) === true) changed = true;
+      let changed = this.drawPending || this.drawFrames > 0 || performance.now() < this.drawUntil;
+      let hold = false;
+      for (let i = 0; i < this.frameHooks.length; i++) {
+        const result = this.frameHooks[i](now);
+        if (result === true) changed = true;
+        else if (result === 'hold') hold = true;
+      }
       // True while the camera moves: a drag, or the damping after one.
       if (this.controls.update()) changed = true;
-      if (!changed) return;
+      // An input's other changes (the jaw's turn, the glyphs) wait for the skin's answer, and are drawn with it: a
+      // draw of the skin as it was costs as much as any (a third of a second in software WebGL, where it also slows
+      // the solver) and shows the teeth ahead of the lips.
+      this.drawPending = changed && hold;
+      if (!changed || hold) return;
       if (this.drawFrames > 0) this.drawFrames--;
       this.renderFrame();
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();

@@ -65,6 +65,12 @@ export const PARTNER_MIN_CORES = 4;
 
 /** Solve time the render loop gives the `main` mode solver per frame, in ms. */
 export const MAIN_THREAD_BUDGET_MS = 8;
+/**
+ * How long after an input `awaitsAnswer` may say the skin has not answered it: a solver's first frame of a new input
+ * comes 20 to 60 ms after it on the medium head in the page (2 cores, software WebGL); a view waits no longer than this
+ * for it.
+ */
+export const ANSWER_WAIT_MS = 150;
 const SETTLE_POLL_MS = 8;
 
 /**
@@ -77,6 +83,8 @@ export class SkinSimulation {
   private readonly staging: InputStaging;
   private readFrames = -1;
   private disposed = false;
+  /** When the newest input batch was published (performance.now()). */
+  private publishedAt = -Infinity;
   /** Rig edits handed to the solver so far. */
   private rigRevision = 0;
   private muscleCount: number;
@@ -93,7 +101,15 @@ export class SkinSimulation {
     muscleCount: number,
   ) {
     this.muscleCount = muscleCount;
-    this.staging = new InputStaging(control, rest, (seq, changed) => backend.publish(seq, changed), muscleCount);
+    this.staging = new InputStaging(
+      control,
+      rest,
+      (seq, changed) => {
+        this.publishedAt = performance.now();
+        backend.publish(seq, changed);
+      },
+      muscleCount,
+    );
   }
 
   /** Builds the skin's topology and solver (in a worker unless `mode` is `main`) and resolves once it is running. */
@@ -269,6 +285,15 @@ export class SkinSimulation {
     readSlotBounds(slot, this.bounds);
     this.readFrames = frames;
     return true;
+  }
+
+  /**
+   * Whether the newest frame is older than the newest input, published less than ANSWER_WAIT_MS ago: the skin is about
+   * to answer it (a view holds its drawing meanwhile, see FrameHook).
+   */
+  awaitsAnswer(): boolean {
+    if (this.disposed || performance.now() - this.publishedAt > ANSWER_WAIT_MS) return false;
+    return slotAppliedInput(this.backend.latest()) < this.staging.publishedSeq();
   }
 
   /** Copies the newest complete frame in simulation-vertex order (the order of `rest`). Allocates nothing. */
