@@ -43,7 +43,11 @@ export class ControlReader {
 
   /** True if a batch was published that is not applied yet. */
   hasPending(): boolean {
-    const seq = Atomics.load(this.control.words, CONTROL_INPUT_SEQ);
+    return this.pendingAt(Atomics.load(this.control.words, CONTROL_INPUT_SEQ));
+  }
+
+  /** True if input sequence number `seq` is a published batch that is not applied yet. */
+  private pendingAt(seq: number): boolean {
     return (seq & 1) === 0 && seq !== this.appliedSeq;
   }
 
@@ -56,7 +60,7 @@ export class ControlReader {
     // was on its own number), and the skin slept through it until the next input.
     const words = this.control.words;
     const seq = Atomics.load(words, CONTROL_INPUT_SEQ);
-    if ((seq & 1) === 0 && seq !== this.appliedSeq) {
+    if (this.pendingAt(seq)) {
       then();
       return;
     }
