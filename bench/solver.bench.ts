@@ -1,5 +1,5 @@
 /**
- * Solver benchmark: `npm run bench`. Prints two tables and writes bench-results/solver.json.
+ * Solver benchmark: `npm run bench`. Prints three tables and writes bench-results/solver.json.
  *
  * 1. The loops: for each head resolution, length-iteration count and thread count, solves frames of a held
  *    expression (brows raised, one mouth corner pulled) over the whole mesh and reports the median and 90th-percentile frame time, the
@@ -8,6 +8,9 @@
  *    tests/fixtures/head-simulation.ts) from rest to a held expression, with the active region: its size, the median
  *    frame time and nanoseconds per edge projection, and the frames and milliseconds until the shape is within 2 % of
  *    its final shape and until the solver sleeps.
+ * 3. A slider dragged: the same head from rest to an expression over DRAG_FRAMES frames, an input before each (as a
+ *    page applies the newest input before each frame while a slider moves): the median time an input takes to apply
+ *    (the rig's targets and the constraint lists) and a frame to solve.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, platform } from 'node:os';
@@ -127,6 +130,16 @@ const RIG_CASES: { resolution: Resolution; expression: string; workers: 1 | 2; m
   { resolution: 'high', expression: 'happiness', workers: 1, maxFrames: 1500 },
   { resolution: 'high', expression: 'happiness', workers: 2, maxFrames: 1500 },
 ];
+/** The dragged sliders: an Action Unit or a preset moved from 0 to full intensity, one input per frame. */
+const DRAG_CASES: { resolution: Resolution; expression: string }[] = [
+  { resolution: 'medium', expression: 'AU12' },
+  { resolution: 'medium', expression: 'happiness' },
+  { resolution: 'medium', expression: 'thesis-laughing' },
+];
+/** Frames (and inputs) a drag takes from 0 to full intensity; the first two drags warm up, the third is timed. */
+const DRAG_FRAMES = 60;
+const DRAG_RUNS = 3;
+
 /** "Within 2 % of the final shape": every vertex nearer its final place than this share of the largest final move. */
 const NEAR_FINAL = 0.02;
 
@@ -218,6 +231,46 @@ for (const { resolution, expression: name, workers, maxFrames } of RIG_CASES) {
   });
 }
 
+/** A slider dragged (see the file's comment): per input, the time to apply it and to solve the frame after it. */
+interface DragRow {
+  resolution: string;
+  expression: string;
+  inputs: number;
+  medianApplyMs: number;
+  medianFrameMs: number;
+  /** Frames a second while the slider moves, if the solver did nothing else: 1000 / (apply + frame). */
+  framesPerSecond: number;
+}
+const dragRows: DragRow[] = [];
+for (const { resolution, expression: name } of DRAG_CASES) {
+  const sim = await loadHeadSimulation(resolution);
+  const contractions = new Float32Array(sim.rig.muscles.length);
+  let seq = 0;
+  const apply: number[] = [];
+  const frame: number[] = [];
+  for (let run = 0; run < DRAG_RUNS; run++) {
+    apply.length = frame.length = 0;
+    for (let f = 1; f <= DRAG_FRAMES; f++) {
+      if (/^AU\d/.test(name)) sim.expression.setActionUnit(name, f / DRAG_FRAMES);
+      else sim.expression.applyPreset(name, f / DRAG_FRAMES);
+      sim.expression.muscleContractions(sim.rig, contractions);
+      const t0 = performance.now();
+      sim.host.apply(++seq, null, null, contractions);
+      const t1 = performance.now();
+      sim.host.step();
+      apply.push(t1 - t0);
+      frame.push(performance.now() - t1);
+    }
+    // Back to rest for the next run.
+    sim.expression.reset();
+    sim.host.apply(++seq, null, null, sim.expression.muscleContractions(sim.rig, contractions));
+    while (sim.host.step());
+  }
+  const medianApplyMs = median(apply);
+  const medianFrameMs = median(frame);
+  dragRows.push({ resolution, expression: name, inputs: DRAG_FRAMES, medianApplyMs, medianFrameMs, framesPerSecond: 1000 / (medianApplyMs + medianFrameMs) });
+}
+
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, platform: platform(), node: process.version };
 const header = '| head | vertices | edges | length iterations | workers | median ms/frame | p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
 const lines = rows.map(
@@ -236,6 +289,12 @@ const rigLines = rigRows.map(
 );
 console.log('\nThe rig (solver host, colliders, default rig, active region), from rest to an expression at full intensity:\n');
 console.log([rigHeader, rigHeader.replace(/[^|]+/g, ' --- '), ...rigLines].join('\n'));
+const dragHeader = '| head | expression | inputs | median ms to apply an input | median ms/frame | frames a second |';
+const dragLines = dragRows.map(
+  (r) => `| ${r.resolution} | ${r.expression} | ${r.inputs} | ${r.medianApplyMs.toFixed(1)} | ${r.medianFrameMs.toFixed(1)} | ${Math.round(r.framesPerSecond)} |`,
+);
+console.log(`\nA slider dragged from 0 to full intensity over ${DRAG_FRAMES} frames, an input before each:\n`);
+console.log([dragHeader, dragHeader.replace(/[^|]+/g, ' --- '), ...dragLines].join('\n'));
 mkdirSync('bench-results', { recursive: true });
-writeFileSync('bench-results/solver.json', JSON.stringify({ machine, date: new Date().toISOString(), rows, rigRows }, null, 2) + '\n');
+writeFileSync('bench-results/solver.json', JSON.stringify({ machine, date: new Date().toISOString(), rows, rigRows, dragRows }, null, 2) + '\n');
 console.log('\nwrote bench-results/solver.json');
