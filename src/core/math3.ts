@@ -55,12 +55,32 @@ export function rotationOffset(
   out: Float64Array | number[],
   offset = 0,
 ): void {
+  const h = Math.sin(0.5 * angle);
+  rotationOffsetBy(x, y, z, px, py, pz, ux, uy, uz, Math.sin(angle), 2 * h * h, out, offset);
+}
+
+/**
+ * rotationOffset with the turn given as its sine and versine (1 - cos, computed as 2 sin^2(angle / 2)): a turn that
+ * moves many points, or one point many times, takes its sines once.
+ */
+export function rotationOffsetBy(
+  x: number,
+  y: number,
+  z: number,
+  px: number,
+  py: number,
+  pz: number,
+  ux: number,
+  uy: number,
+  uz: number,
+  s: number,
+  versine: number,
+  out: Float64Array | number[],
+  offset = 0,
+): void {
   const wx = x - px;
   const wy = y - py;
   const wz = z - pz;
-  const s = Math.sin(angle);
-  const h = Math.sin(0.5 * angle);
-  const versine = 2 * h * h;
   const along = (ux * wx + uy * wy + uz * wz) * versine;
   out[offset] = (uy * wz - uz * wy) * s + ux * along - wx * versine;
   out[offset + 1] = (uz * wx - ux * wz) * s + uy * along - wy * versine;

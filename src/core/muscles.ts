@@ -6,7 +6,7 @@
  * The thesis's printed formulas carry typos (a garbled radial falloff, an ellipsoid test without squares); each field
  * below says which of its ideas it implements and uses the smooth form that was meant.
  */
-import { DEGREES, eulerMatrix, rotationOffset } from './math3';
+import { DEGREES, eulerMatrix, rotationOffset, rotationOffsetBy } from './math3';
 import type { BrushSphere, Muscle, Vec3 } from './rig-types';
 
 const HALF_PI = Math.PI / 2;
@@ -234,6 +234,22 @@ function displace(P: Float64Array, o: number, c: number, x: number, y: number, z
   const qy = P[F + 1] * dx + P[F + 4] * dy + P[F + 7] * dz;
   const qz = P[F + 2] * dx + P[F + 5] * dy + P[F + 8] * dz;
   if (type === SPHINCTER) return displaceSphincter(P, o, c, qx, qy, qz, out);
+  const falloff = turnAt(P, o, c, qx, qy, qz, TURN, 0);
+  // Thesis 3.2.2 and 4.4.3: rotation muscles turn their skin about a joint, about the local x axis (the frame's first
+  // column); the turn moves skin farther from the joint farther, as the thesis wants.
+  if (falloff !== 0) turnPoint(P, o, x, y, z, TURN, 0, out);
+  return falloff;
+}
+
+/** Scratch for displace's turn (sine and versine). */
+const TURN = new Float64Array(2);
+
+/**
+ * A rotation muscle's falloff at local coordinates (qx, qy, qz) of the skin's rest point, and, where it is above 0,
+ * the turn's sine and versine (1 - cos) at contraction `c` into `into[at]` and `into[at + 1]`.
+ */
+function turnAt(P: Float64Array, o: number, c: number, qx: number, qy: number, qz: number, into: Float64Array, at: number): number {
+  const type = P[o + TYPE];
   const falloff = type === LID ? lidFalloff(P, o, qx, qy, qz) : jawFalloff(P, o, qx, qy, qz);
   if (falloff === 0) return 0;
   let angle = c * P[o + MAX_ANGLE] * falloff;
@@ -244,9 +260,56 @@ function displace(P: Float64Array, o: number, c: number, x: number, y: number, z
     const across = qx / P[o + HALF_SIZE];
     angle *= 1 + P[o + CURVE] * (1 - across * across);
   }
-  // Thesis 3.2.2 and 4.4.3: rotation muscles turn their skin about a joint, about the local x axis (the frame's first
-  // column); the turn moves skin farther from the joint farther, as the thesis wants.
-  rotationOffset(x, y, z, P[o + JOINT], P[o + JOINT + 1], P[o + JOINT + 2], P[F], P[F + 3], P[F + 6], angle, out);
+  const h = Math.sin(0.5 * angle);
+  into[at] = Math.sin(angle);
+  into[at + 1] = 2 * h * h;
+  return falloff;
+}
+
+/** The offset of (x, y, z) turned by rotation muscle `o` by the turn in `turn[at..at+2]` (see turnAt), into `out`. */
+function turnPoint(P: Float64Array, o: number, x: number, y: number, z: number, turn: Float64Array, at: number, out: Float64Array | number[]): void {
+  const F = o + FRAME;
+  rotationOffsetBy(x, y, z, P[o + JOINT], P[o + JOINT + 1], P[o + JOINT + 2], P[F], P[F + 3], P[F + 6], turn[at], turn[at + 1], out);
+}
+
+/**
+ * Rotation muscles turn the skin by an amount that depends on its rest point only (see displace), the same at every
+ * substep of a compute: so each vertex's turn by each rotation muscle is found once (`vertex[m]` is the vertex it was
+ * found for; -1 for none), and its falloff and turn kept.
+ */
+interface TurnCache {
+  vertex: Int32Array;
+  falloff: Float64Array;
+  /** Sine and versine per muscle. */
+  turn: Float64Array;
+}
+
+/** displace, with the turn of a rotation muscle `m` (at `o`) for vertex `v` taken from `cache` once found. */
+function displaceVertex(P: Float64Array, o: number, m: number, v: number, c: number, x: number, y: number, z: number, out: Float64Array, rx: number, ry: number, rz: number, cache: TurnCache): number {
+  const type = P[o + TYPE];
+  if (type !== LID && type !== JAW) return displace(P, o, c, x, y, z, out, rx, ry, rz);
+  if (cache.vertex[m] !== v) {
+    cache.vertex[m] = v;
+    cache.falloff[m] = 0;
+    const dx = rx - P[o + ANCHOR];
+    const dy = ry - P[o + ANCHOR + 1];
+    const dz = rz - P[o + ANCHOR + 2];
+    if (dx * dx + dy * dy + dz * dz < P[o + BOUND_SQUARED]) {
+      const F = o + FRAME;
+      const qx = P[F] * dx + P[F + 3] * dy + P[F + 6] * dz;
+      const qy = P[F + 1] * dx + P[F + 4] * dy + P[F + 7] * dz;
+      const qz = P[F + 2] * dx + P[F + 5] * dy + P[F + 8] * dz;
+      cache.falloff[m] = turnAt(P, o, c, qx, qy, qz, cache.turn, 2 * m);
+    }
+  }
+  const falloff = cache.falloff[m];
+  if (falloff === 0) {
+    out[0] = 0;
+    out[1] = 0;
+    out[2] = 0;
+    return 0;
+  }
+  turnPoint(P, o, x, y, z, cache.turn, 2 * m, out);
   return falloff;
 }
 
@@ -564,6 +627,8 @@ export class MuscleRig {
   /** The same, in the order of `vertexMuscles` (0 and 1 where no brush reaches). */
   private rowAdd: Float32Array = new Float32Array(0);
   private rowKeep: Float32Array = new Float32Array(0);
+  /** 1 for a vertex some brush reaches (an add or keep in its row that is not 0 or 1). */
+  private rowBrushed: Uint8Array = new Uint8Array(0);
   /** Muscles of vertex v (those it is a candidate of) are `vertexMuscles[vertexMuscleStart[v]..vertexMuscleStart[v+1]]`. */
   private readonly vertexMuscleStart: Uint32Array;
   private vertexMuscles: Uint32Array;
@@ -575,6 +640,7 @@ export class MuscleRig {
   private readonly marked: Uint8Array;
   private readonly reached: Uint32Array;
   private readonly step = new Float64Array(3);
+  private readonly turns: TurnCache;
 
   /** Throws if the rest positions, a muscle (naming it) or an option is not valid. */
   constructor(rest: Float32Array, muscles: readonly Muscle[], options: MuscleRigOptions = {}) {
@@ -610,6 +676,7 @@ export class MuscleRig {
     this.active = new Uint32Array(count);
     this.marked = new Uint8Array(n);
     this.reached = new Uint32Array(n);
+    this.turns = { vertex: new Int32Array(count), falloff: new Float64Array(count), turn: new Float64Array(2 * count) };
   }
 
   /** The rig's muscles, in the order contractions are given. */
@@ -657,6 +724,9 @@ export class MuscleRig {
       throw new Error(`muscle outputs must hold ${n} vertices (targets ${3 * n}, weights ${n}, normalWeights ${n}), got ${targets.length}, ${weights.length}, ${normalWeights.length}`);
     }
     clampContractions(this.muscleList, contractions, this.contraction);
+    const turns = this.turns;
+    // The turns found in the last compute were for its contractions.
+    turns.vertex.fill(-1);
     const rest = this.rest;
     targets.set(rest);
     weights.fill(0);
@@ -696,6 +766,7 @@ export class MuscleRig {
     const row = this.vertexMuscles;
     const rowAdd = this.rowAdd;
     const rowKeep = this.rowKeep;
+    const rowBrushed = this.rowBrushed;
     const step = this.step;
     const marginSquared = this.margin * this.margin;
     let held = 0;
@@ -723,7 +794,7 @@ export class MuscleRig {
             const c = stepContraction[m];
             if (c === 0) continue;
             const o = m * STRIDE;
-            let falloff = displace(P, o, c, x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+            let falloff = displaceVertex(P, o, m, v, c, x, y, z, step, rest[i], rest[i + 1], rest[i + 2], turns);
             if (rowAdd[j] !== 0 || rowKeep[j] !== 1) {
               falloff = brushed(falloff, rowAdd[j], rowKeep[j]);
               displaceAtFalloff(P, o, c * falloff, x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
@@ -739,11 +810,12 @@ export class MuscleRig {
           }
         } else {
           // Slid farther: it may have entered any zone, so every active muscle is asked (most reject at their bound).
+          const anyBrush = rowBrushed[v] === 1;
           for (let a = 0; a < activeCount; a++) {
             const m = this.active[a];
-            const falloff = displace(P, m * STRIDE, stepContraction[m], x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+            const falloff = displaceVertex(P, m * STRIDE, m, v, stepContraction[m], x, y, z, step, rest[i], rest[i + 1], rest[i + 2], turns);
             // A brush on this vertex for this muscle (found in its row; rows are short) sets the falloff here too.
-            for (let j = j0; j < j1; j++) {
+            for (let j = anyBrush ? j0 : j1; j < j1; j++) {
               if (row[j] !== m) continue;
               if (rowAdd[j] !== 0 || rowKeep[j] !== 1) displaceAtFalloff(P, m * STRIDE, stepContraction[m] * brushed(falloff, rowAdd[j], rowKeep[j]), x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
               break;
@@ -800,9 +872,12 @@ export class MuscleRig {
         }
       }
     }
+    const brushed = new Uint8Array(n);
+    for (let v = 0; v < n; v++) for (let j = start[v]; j < start[v + 1]; j++) if (add[j] !== 0 || keep[j] !== 1) brushed[v] = 1;
     this.vertexMuscles = muscles;
     this.rowAdd = add;
     this.rowKeep = keep;
+    this.rowBrushed = brushed;
   }
 
   /** Packs muscle `m` and chooses its candidates from the rest positions. */

@@ -448,7 +448,10 @@ export class SkinSolver {
     this.heldCount = count;
     this.region.seed(this.held, count);
     this.joinReachedCandidates();
-    this.refreshLists();
+    // Of the lists, only the edges' depend on the weights (held edges apart, with their weight): while a slider moves
+    // the region mostly stays as it is, and the other lists with it.
+    if (this.region.revision !== this.listedRevision) this.refreshLists();
+    else fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.region.enabled ? this.region.inside : null);
     this.inputsChanged = true;
     this.restartMotion();
   }
