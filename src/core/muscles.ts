@@ -207,6 +207,9 @@ function packMuscle(m: Muscle, P: Float64Array, o: number): void {
   }
 }
 
+/** Where displace puts a rotation muscle's turn (sine and versine) unless told otherwise. */
+const TURN = new Float64Array(2);
+
 /**
  * Displacement of the point (x, y, z) by packed muscle `o` at contraction `c`, into `out[0..3]`; returns the
  * muscle's falloff (0..1; 0 outside its zone, where the displacement is zero too). Linear and sphincter fields are
@@ -214,7 +217,20 @@ function packMuscle(m: Muscle, P: Float64Array, o: number): void {
  * skin's rest point (rx, ry, rz), because the lid or jaw carries its skin with it: skin it has turned is still its
  * skin, and a lid closing would otherwise leave its own zone halfway. Allocates nothing.
  */
-function displace(P: Float64Array, o: number, c: number, x: number, y: number, z: number, out: Float64Array | number[], rx = x, ry = y, rz = z): number {
+function displace(
+  P: Float64Array,
+  o: number,
+  c: number,
+  x: number,
+  y: number,
+  z: number,
+  out: Float64Array | number[],
+  rx = x,
+  ry = y,
+  rz = z,
+  turn: Float64Array = TURN,
+  at = 0,
+): number {
   out[0] = 0;
   out[1] = 0;
   out[2] = 0;
@@ -234,15 +250,12 @@ function displace(P: Float64Array, o: number, c: number, x: number, y: number, z
   const qy = P[F + 1] * dx + P[F + 4] * dy + P[F + 7] * dz;
   const qz = P[F + 2] * dx + P[F + 5] * dy + P[F + 8] * dz;
   if (type === SPHINCTER) return displaceSphincter(P, o, c, qx, qy, qz, out);
-  const falloff = turnAt(P, o, c, qx, qy, qz, TURN, 0);
+  const falloff = turnAt(P, o, c, qx, qy, qz, turn, at);
   // Thesis 3.2.2 and 4.4.3: rotation muscles turn their skin about a joint, about the local x axis (the frame's first
   // column); the turn moves skin farther from the joint farther, as the thesis wants.
-  if (falloff !== 0) turnPoint(P, o, x, y, z, TURN, 0, out);
+  if (falloff !== 0) turnPoint(P, o, x, y, z, turn, at, out);
   return falloff;
 }
-
-/** Scratch for displace's turn (sine and versine). */
-const TURN = new Float64Array(2);
 
 /**
  * A rotation muscle's falloff at local coordinates (qx, qy, qz) of the skin's rest point, and, where it is above 0,
@@ -284,23 +297,15 @@ interface TurnCache {
   turn: Float64Array;
 }
 
-/** displace, with the turn of a rotation muscle `m` (at `o`) for vertex `v` taken from `cache` once found. */
+/** displace, with the turn of a rotation muscle `m` (at `o`) for vertex `v` taken from `cache` once displace found it. */
 function displaceVertex(P: Float64Array, o: number, m: number, v: number, c: number, x: number, y: number, z: number, out: Float64Array, rx: number, ry: number, rz: number, cache: TurnCache): number {
   const type = P[o + TYPE];
   if (type !== LID && type !== JAW) return displace(P, o, c, x, y, z, out, rx, ry, rz);
   if (cache.vertex[m] !== v) {
+    // First asked for this vertex: displace finds the turn, and keeps it in the cache.
     cache.vertex[m] = v;
-    cache.falloff[m] = 0;
-    const dx = rx - P[o + ANCHOR];
-    const dy = ry - P[o + ANCHOR + 1];
-    const dz = rz - P[o + ANCHOR + 2];
-    if (dx * dx + dy * dy + dz * dz < P[o + BOUND_SQUARED]) {
-      const F = o + FRAME;
-      const qx = P[F] * dx + P[F + 3] * dy + P[F + 6] * dz;
-      const qy = P[F + 1] * dx + P[F + 4] * dy + P[F + 7] * dz;
-      const qz = P[F + 2] * dx + P[F + 5] * dy + P[F + 8] * dz;
-      cache.falloff[m] = turnAt(P, o, c, qx, qy, qz, cache.turn, 2 * m);
-    }
+    cache.falloff[m] = displace(P, o, c, x, y, z, out, rx, ry, rz, cache.turn, 2 * m);
+    return cache.falloff[m];
   }
   const falloff = cache.falloff[m];
   if (falloff === 0) {
