@@ -41,6 +41,17 @@ export interface HeadViewOptions {
   fov: number;
   /** Cap on the device pixel ratio, to bound the cost of fill on dense screens. */
   maxPixelRatio: number;
+  /**
+   * Share of the pixel ratio the view draws at while the picture changes and its draws are slow (see `slowDrawMs`):
+   * 0.5 draws a quarter of the pixels. The first frame with nothing new is drawn again at full resolution. 1 turns
+   * this off.
+   */
+  motionResolution: number;
+  /**
+   * A draw at full resolution that holds the next animation frame back longer than this (ms) is slow: software WebGL,
+   * or a GPU that cannot fill the canvas at 20 frames a second.
+   */
+  slowDrawMs: number;
 }
 
 /**
@@ -90,7 +101,13 @@ const DRAW_AFTER_CHANGE_MS = 250;
 const DRAW_AFTER_CHANGE_FRAMES = 3;
 const DEGREES = Math.PI / 180;
 
-export const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({ background: 0x1d2024, fov: 28, maxPixelRatio: 2 });
+export const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({
+  background: 0x1d2024,
+  fov: 28,
+  maxPixelRatio: 2,
+  motionResolution: 0.5,
+  slowDrawMs: 50,
+});
 
 /** A three.js scene that shows a head: renderer, camera, orbit controls and the default lights. */
 export class HeadView {
@@ -119,6 +136,17 @@ export class HeadView {
   private drawFrames = 0;
   /** A change waits to be drawn (a hook held the frame it came in). */
   private drawPending = false;
+  /** The pixel ratio of a full-resolution draw, and whether the canvas is at the motion's lower one now. */
+  private readonly pixelRatio: number;
+  private readonly motionResolution: number;
+  private readonly slowDrawMs: number;
+  private reduced = false;
+  /**
+   * The animation frame time of the loop's last draw (-1 once measured), and how long the last full-resolution one
+   * held the next animation frame back: the page waits there for the GPU to finish the draw.
+   */
+  private drawnAt = -1;
+  private fullDrawMs = 0;
   private readonly resizeObserver: ResizeObserver;
   /**
    * Whether any of the canvas is in view: a view scrolled away or in a hidden element renders nothing (and runs no
@@ -137,7 +165,10 @@ export class HeadView {
     // With an alpha channel the background can turn transparent later without a new context; an opaque background
     // fills every pixel, so it looks the same as without one.
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, o.maxPixelRatio));
+    this.pixelRatio = Math.min(window.devicePixelRatio, o.maxPixelRatio);
+    this.motionResolution = Math.min(1, Math.max(0.1, o.motionResolution));
+    this.slowDrawMs = o.slowDrawMs;
+    this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.outputColorSpace = SRGBColorSpace;
     this.renderer.toneMapping = ACESFilmicToneMapping;
     this.renderer.toneMappingExposure = 1.0;
@@ -238,6 +269,7 @@ export class HeadView {
     const now = performance.now();
     for (let i = 0; i < this.frameHooks.length; i++) this.frameHooks[i](now);
     this.controls.update();
+    this.setReduced(false);
     this.renderFrame();
     // Read in the same task as the render, so the picture is there even without a preserved drawing buffer.
     return new Promise((resolve, reject) => {
@@ -268,7 +300,7 @@ export class HeadView {
     this.capturing = true;
     for (let i = 0; i < MAX_DAMPING_UPDATES && this.controls.update(); i++);
     const renderer = this.renderer;
-    const pixelRatio = renderer.getPixelRatio();
+    this.setReduced(false);
     renderer.setPixelRatio(1);
     renderer.setSize(width, height, false);
     this.camera.aspect = width / height;
@@ -283,7 +315,7 @@ export class HeadView {
         if (done) return;
         done = true;
         this.capturing = false;
-        renderer.setPixelRatio(pixelRatio);
+        renderer.setPixelRatio(this.pixelRatio);
         this.resize();
       },
     };
@@ -293,6 +325,10 @@ export class HeadView {
   start(): void {
     const loop = (now: number): void => {
       this.frame = requestAnimationFrame(loop);
+      if (this.drawnAt >= 0) {
+        if (!this.reduced) this.fullDrawMs = now - this.drawnAt;
+        this.drawnAt = -1;
+      }
       if (!this.inView || this.capturing) return;
       let changed = this.drawPending || this.drawFrames > 0 || performance.now() < this.drawUntil;
       let hold = false;
@@ -307,9 +343,16 @@ export class HeadView {
       // draw of the skin as it was costs as much as any (a third of a second in software WebGL, where it also slows
       // the solver) and shows the teeth ahead of the lips.
       this.drawPending = changed && hold;
-      if (!changed || hold) return;
+      if (hold) return;
+      // Nothing new: a picture drawn at the motion's resolution is drawn again at full resolution (and the draw timed).
+      if (!changed && !this.reduced) return;
       if (this.drawFrames > 0) this.drawFrames--;
+      // While the picture changes, slow draws go at a lower resolution: in software WebGL a full one costs two threads
+      // about 180 ms, in which the solver shares the cores with it, and the answer to an input reaches the screen
+      // later. The motion's first draw decides by the last full one, so a GPU that keeps up never draws lower.
+      this.setReduced(changed && this.motionResolution < 1 && this.fullDrawMs > this.slowDrawMs);
       this.renderFrame();
+      this.drawnAt = now;
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
     };
     this.invalidate();
@@ -334,6 +377,7 @@ export class HeadView {
     const gl = this.renderer.getContext();
     const pixel = new Uint8Array(4);
     // One frame first, so that shader compilation and texture upload are not counted.
+    this.setReduced(false);
     this.renderFrame();
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     const start = performance.now();
@@ -389,6 +433,18 @@ export class HeadView {
     this.scene.environment?.dispose();
     this.scene.environment = texture;
     this.invalidate();
+  }
+
+  /** Whether the canvas is at the motion's lower resolution (see HeadViewOptions.motionResolution). */
+  get drawsReduced(): boolean {
+    return this.reduced;
+  }
+
+  /** Sets the canvas to the motion's lower resolution or back to full (a new size clears it; the caller draws). */
+  private setReduced(reduced: boolean): void {
+    if (reduced === this.reduced) return;
+    this.reduced = reduced;
+    this.renderer.setPixelRatio(reduced ? this.pixelRatio * this.motionResolution : this.pixelRatio);
   }
 
   /** Renders the scene, making its environment map first if a head is shown and it has none yet. */
