@@ -80,3 +80,47 @@ describe('watched orientation passes', () => {
     expect(underB.map((t) => boundShare(parts, t))).toEqual(before);
   });
 });
+
+describe('the watched set across inputs', () => {
+  /**
+   * A sheet whose left half (x <= 0) is pulled toward its right part (x >= 1 mm), which is held at rest: the strip
+   * between is squeezed toward its orientation bound. `pull(dx)` sets the left half's targets dx along x.
+   */
+  function pulled(): { solver: SkinSolver; parts: PartArrays; pull: (dx: number) => void } {
+    const g = triangleGrid(0.01, 0.01, 0.001);
+    const t = buildTopology(g.positions, g.indices);
+    const solver = new SkinSolver(t, { activeRegion: false, memory: 'shared' });
+    const all = [...Array(t.vertexCount).keys()];
+    const at = (vertices: number[], dx: number): number[] => vertices.flatMap((v) => [t.rest[3 * v] + dx, t.rest[3 * v + 1], t.rest[3 * v + 2]]);
+    const left = all.filter((v) => t.rest[3 * v] < 1e-5);
+    const right = all.filter((v) => t.rest[3 * v] > 0.001 - 1e-5);
+    solver.setMuscleTargets(right, at(right, 0), 1);
+    const pull = (dx: number): void => solver.setMuscleTargets(left, at(left, dx), 1);
+    return { solver, parts: solver.partArrays(), pull };
+  }
+  const count = (flags: Uint8Array): number => flags.reduce((n, f) => n + f, 0);
+
+  it('an input while the skin moves (a slider dragged) keeps the watched triangles', () => {
+    const { solver, parts, pull } = pulled();
+    pull(0.0015);
+    for (let f = 0; f < 3; f++) solver.step();
+    expect(solver.sleeping).toBe(false);
+    const watched = Uint8Array.from(parts.watched);
+    expect(count(watched)).toBeGreaterThan(0);
+    pull(0.0016);
+    expect(Array.from(parts.watched)).toEqual(Array.from(watched));
+    solver.step();
+    // The set only grows within the drag.
+    for (let t = 0; t < watched.length; t++) if (watched[t] === 1) expect(parts.watched[t]).toBe(1);
+  });
+
+  it('an input once the skin sleeps watches anew', () => {
+    const { solver, parts, pull } = pulled();
+    pull(0.0015);
+    for (let f = 0; f < 2000 && !solver.sleeping; f++) solver.step();
+    expect(solver.sleeping).toBe(true);
+    expect(count(parts.watched)).toBeGreaterThan(0);
+    pull(0.0016);
+    expect(count(parts.watched)).toBe(0);
+  });
+});

@@ -203,6 +203,8 @@ export class SkinSolver {
   private readonly calm: Uint8Array;
   /** Frames solved since the last input or parameter change. */
   private motionFrames = 0;
+  /** The watched triangles were cleared: the next frame's passes check every triangle (see restartMotion). */
+  private watchFresh = true;
   /** Each vertex's way (the sum of its moves) since the loop window began (see breakLoops). */
   private readonly path: Float32Array;
   /** Scratch marks of the vertices breakLoops slows. */
@@ -464,8 +466,14 @@ export class SkinSolver {
     this.path.fill(0);
     this.lastLongest = 0;
     this.lastStep.fill(0);
-    // The first frame's passes check every triangle and watch anew (see ORIENT_WATCH).
-    this.parts.watched.fill(0);
+    // A motion from rest watches anew: its first frame's passes check every triangle (see ORIENT_WATCH). Inputs that
+    // come while the skin still moves (a slider dragged, a timeline played) keep the set, which only grows, so that
+    // each frame of a drag is not a first one: the frame's last passes check every triangle either way, and add those
+    // near their bound. A drag's frames cost a fifth more when each one checked every triangle in its iterations.
+    if (this.asleep) {
+      this.parts.watched.fill(0);
+      this.watchFresh = true;
+    }
     this.wake();
   }
 
@@ -541,8 +549,8 @@ export class SkinSolver {
       this.projectLengths(p.lengthIterations);
       t1 = now();
       time.lengths += t1 - t0;
-      // A motion's first frame checks every triangle and so starts the watched set (see ORIENT_WATCH).
-      this.projectOrientation(this.motionFrames === 0 ? ORIENT_FULL : ORIENT_WATCHED);
+      // A motion's first frame from rest checks every triangle and so starts the watched set (see ORIENT_WATCH).
+      this.projectOrientation(this.watchFresh ? ORIENT_FULL : ORIENT_WATCHED);
       t0 = now();
       time.orientation += t0 - t1;
       t1 = t0;
@@ -552,6 +560,7 @@ export class SkinSolver {
       this.projectCollisions();
       time.collisions += now() - t0;
     }
+    this.watchFresh = false;
     // Dense fans (the mouth's corners) need a few passes to untangle. After the relaxation, which blends two shapes
     // and so could turn a sliver over, the passes hold only half the bound: whole-bound passes there undid the
     // relaxation in the fans, where the corrections then took turns with the other constraints until the safety net
