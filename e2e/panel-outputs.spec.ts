@@ -20,9 +20,17 @@ test('the outputs show frames per second, solver time, the skin and the worker m
     mode: await value('mode'),
   };
   console.log(`outputs: ${JSON.stringify(shown)}`);
-  // The panel's rate agrees with frames counted here over 3 s (loosely: the page's frame time varies), while the eye
-  // simulation moves the eyes, so that the view draws at every animation frame.
-  await page.evaluate(() => window.face.setEyeSimulation(true));
+  // The panel's rate agrees with frames counted here over 3 s (loosely: the page's frame time varies), while the
+  // camera turns a little at every animation frame, so that the view draws at each.
+  await page.evaluate(() => {
+    let yaw = 0;
+    const turn = (): void => {
+      yaw = (yaw + 0.5) % 10;
+      window.face.setCamera({ yaw });
+      requestAnimationFrame(turn);
+    };
+    requestAnimationFrame(turn);
+  });
   await page.waitForTimeout(3500);
   const counted = await page.evaluate(
     () =>

@@ -38,6 +38,9 @@ export class EyeDriver implements FaceEyes {
   private on = false;
   /** Frame time at which the simulation's clock reads 0 (NaN until the first frame after switching on). */
   private startedAt = Number.NaN;
+  /** The gaze last shown (NaN: none since switching on), so that a held fixation draws nothing. */
+  private shownYaw = Number.NaN;
+  private shownPitch = Number.NaN;
 
   constructor(
     private readonly face: FaceHandle,
@@ -58,6 +61,7 @@ export class EyeDriver implements FaceEyes {
     if (on) {
       this.simulation.reset();
       this.startedAt = Number.NaN;
+      this.shownYaw = this.shownPitch = Number.NaN;
     } else this.putBack();
   }
 
@@ -77,20 +81,27 @@ export class EyeDriver implements FaceEyes {
     this.on = false;
   }
 
-  /** Moves the eyes (and lids) to the frame's time; returns whether they moved, which they do every frame while on. */
+  /**
+   * Moves the eyes (and lids) to the frame's time; returns whether they moved. Between saccades and blinks the eyes
+   * hold still, and the view need not draw for them (a face with its eyes alive costs a battery only when they move).
+   */
   private frame(now: number): boolean {
     if (!this.on) return false;
     if (Number.isNaN(this.startedAt)) this.startedAt = now;
     const s = this.simulation;
     s.advance(now - this.startedAt);
+    const close = this.o.lids ? s.lidClose() : 0;
+    const raise = this.o.lids ? s.lidRaise() : 0;
+    if (s.yaw === this.shownYaw && s.pitch === this.shownPitch && close === this.lidValues[0] && raise === this.lidValues[1]) return false;
+    this.shownYaw = s.yaw;
+    this.shownPitch = s.pitch;
     // Both eyes turn alike (no vergence): yaw about the head's up axis, then pitch about the turned eye's x axis.
     this.euler.set(-s.pitch * DEGREES, s.yaw * DEGREES, 0);
     this.turn.setFromEuler(this.euler);
     for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.multiplyQuaternions(this.turn, this.rest[i]);
-    if (!this.o.lids) return true;
-    this.lidValues[0] = s.lidClose();
-    this.lidValues[1] = s.lidRaise();
-    this.face.setOverlay(LID_IDS, this.lidValues);
+    this.lidValues[0] = close;
+    this.lidValues[1] = raise;
+    if (this.o.lids) this.face.setOverlay(LID_IDS, this.lidValues);
     return true;
   }
 
