@@ -435,11 +435,6 @@ export class HeadView {
     this.invalidate();
   }
 
-  /** Whether the canvas is at the motion's lower resolution (see HeadViewOptions.motionResolution). */
-  get drawsReduced(): boolean {
-    return this.reduced;
-  }
-
   /** Sets the canvas to the motion's lower resolution or back to full (a new size clears it; the caller draws). */
   private setReduced(reduced: boolean): void {
     if (reduced === this.reduced) return;
