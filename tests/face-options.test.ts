@@ -4,8 +4,8 @@ import { FACE_DEFAULTS, checkFaceOptions } from '../src/embed/face-options';
 describe('createFace options', () => {
   it('fill in the defaults, and keep what is given', () => {
     expect(checkFaceOptions(undefined)).toEqual(FACE_DEFAULTS);
-    const o = checkFaceOptions({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, resolutionUnused: undefined });
-    expect(o).toMatchObject({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, eyeSimulation: false });
+    const o = checkFaceOptions({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, motionResolution: 1, resolutionUnused: undefined });
+    expect(o).toMatchObject({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, motionResolution: 1, eyeSimulation: false });
   });
 
   it('reject a bad option with a message naming it and the value', () => {
@@ -23,8 +23,11 @@ describe('createFace options', () => {
       [{ light: { keyAzimuth: 400 } }, 'createFace: light: keyAzimuth must be within 0..360, got 400'],
       [{ expression: 'AU12=much' }, 'createFace: expression: AU12 needs a finite number, got "much"'],
       [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12 needs a finite number, got "0.5"'],
-      [{ resolutoin: 'low' }, 'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, expression, eyeSimulation, light, background, assetBase, onResolution, autosave)'],
+      [{ resolutoin: 'low' }, 'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, expression, eyeSimulation, light, background, motionResolution, assetBase, onResolution, autosave)'],
       [{ autosave: 1 }, 'createFace: autosave must be true, false or a key, got 1'],
+      [{ motionResolution: 0.1 }, 'createFace: motionResolution must be a number within 0.25..1, got 0.1'],
+      [{ motionResolution: Number.NaN }, 'createFace: motionResolution must be a number within 0.25..1, got NaN'],
+      [{ motionResolution: '0.5' }, 'createFace: motionResolution must be a number within 0.25..1, got "0.5"'],
       [{ autosave: ' ' }, 'createFace: autosave must be true, false or a key, got " "'],
     ];
     for (const [options, message] of cases) expect(() => checkFaceOptions(options), JSON.stringify(options)).toThrow(message);

@@ -39,6 +39,12 @@ export interface FaceOptions {
   /** A colour `"#rrggbb"`, or `"transparent"` to show the page behind the face. */
   background?: string;
   /**
+   * Share of the pixel ratio a moving face is drawn at where a full draw is slow (over 50 ms: software WebGL, or a GPU
+   * that cannot keep up), 0.25..1: 0.5 draws a quarter of the pixels, 1 always draws at full resolution. A face that
+   * stands still, `savePNG` and videos are drawn at full resolution either way.
+   */
+  motionResolution?: number;
+  /**
    * Where models (`models/head-<resolution>.glb`) and rigs (`rigs/default.json`) are fetched from, relative to the
    * page; by default the package's own files, found from the module's own URL.
    */
@@ -63,12 +69,15 @@ export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
   eyeSimulation: false,
   light: {},
   background: '#1d2024',
+  motionResolution: 0.5,
   assetBase: null,
   onResolution: null,
   autosave: false,
 });
 
 const COLOUR = /^#[0-9a-f]{6}$/i;
+/** Allowed range of `motionResolution`: below a quarter the moving face turns to blocks. */
+const MOTION_RESOLUTION_RANGE = [0.25, 1] as const;
 
 function show(x: unknown): string {
   if (typeof x === 'string') return JSON.stringify(x);
@@ -100,6 +109,11 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
     case 'panels':
     case 'eyeSimulation':
       if (typeof value !== 'boolean') throw bad('true or false');
+      break;
+    case 'motionResolution':
+      if (typeof value !== 'number' || !(value >= MOTION_RESOLUTION_RANGE[0] && value <= MOTION_RESOLUTION_RANGE[1])) {
+        throw bad(`a number within ${MOTION_RESOLUTION_RANGE[0]}..${MOTION_RESOLUTION_RANGE[1]}`);
+      }
       break;
     case 'background':
       if (typeof value !== 'string' || !(COLOUR.test(value) || value === 'transparent')) throw bad('a colour "#rrggbb" or "transparent"');

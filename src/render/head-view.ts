@@ -166,7 +166,7 @@ export class HeadView {
     // fills every pixel, so it looks the same as without one.
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.pixelRatio = Math.min(window.devicePixelRatio, o.maxPixelRatio);
-    this.motionResolution = Math.min(1, Math.max(0.1, o.motionResolution));
+    this.motionResolution = Math.min(1, Math.max(0.25, o.motionResolution));
     this.slowDrawMs = o.slowDrawMs;
     this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.outputColorSpace = SRGBColorSpace;
