@@ -11,7 +11,7 @@ const topology = buildTopology(grid.positions, grid.indices);
 // Frames for either patch. A length error that pushes compressed edges apart too little (Jakobsen's, without the
 // root) leaves the compressed patch 0.6 % off its lengths after these.
 const FRAMES = 300;
-const FREE = { positionStiffness: 0, wrinkleSpacing: 0, momentum: 0, foldMomentum: 0 };
+const FREE = { positionStiffness: 0, wrinkleSpacing: 0, momentum: 0, startMomentum: 0, foldMomentum: 0 };
 
 /** The largest relative length error over all edges. */
 function worstLengthError(x: Float32Array): number {

@@ -42,6 +42,7 @@ export const PARAMETER_INDEX: Readonly<Record<keyof SkinParameters, number>> = {
   sleepTolerance: 8,
   momentum: 9,
   foldMomentum: 10,
+  startMomentum: 11,
 };
 const PARAMETER_NAMES = Object.keys(PARAMETER_INDEX) as (keyof SkinParameters)[];
 export const PARAMETER_COUNT = PARAMETER_NAMES.length;
