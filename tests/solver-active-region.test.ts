@@ -2,7 +2,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import type { Collider } from '../src/core/colliders';
 import { SkinSolver } from '../src/core/solver';
 import { buildTopology } from '../src/core/topology';
-import { triangleGrid } from './fixtures/grids';
+import { draggedPatch, triangleGrid } from './fixtures/grids';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 type Simulation = Awaited<ReturnType<typeof loadHeadSimulation>>;
@@ -89,16 +89,7 @@ describe('the active region on the head', () => {
 function sheetWithDraggedPatch(height: number) {
   const g = triangleGrid(0.24, height, 0.002);
   const t = buildTopology(g.positions, g.indices);
-  const vertices: number[] = [];
-  const targets: number[] = [];
-  for (let v = 0; v < t.vertexCount; v++) {
-    const [x, y, z] = [t.rest[3 * v], t.rest[3 * v + 1], t.rest[3 * v + 2]];
-    if (Math.hypot(x + 0.1, y) < 0.01) {
-      vertices.push(v);
-      targets.push(x + 0.003, y + 0.002, z);
-    }
-  }
-  return { t, vertices, targets };
+  return { t, ...draggedPatch(t.rest, -0.1, 0, 0.01, [0.003, 0.002, 0]) };
 }
 
 describe('the active region on a sheet', () => {

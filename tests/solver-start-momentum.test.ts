@@ -1,22 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { SkinSolver, START_MOMENTUM_FRAMES, type SkinParameters } from '../src/core/solver';
 import { buildTopology } from '../src/core/topology';
-import { triangleGrid } from './fixtures/grids';
+import { draggedPatch, triangleGrid } from './fixtures/grids';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 /** A 6 x 4 cm sheet at 2 mm spacing with a 1 cm patch dragged 3 mm sideways and 2 mm up; its shape after each frame. */
 function dragSheet(parameters: Partial<SkinParameters>, frames: number): Float32Array[] {
   const g = triangleGrid(0.06, 0.04, 0.002);
   const t = buildTopology(g.positions, g.indices);
-  const vertices: number[] = [];
-  const targets: number[] = [];
-  for (let v = 0; v < t.vertexCount; v++) {
-    const [x, y, z] = [t.rest[3 * v], t.rest[3 * v + 1], t.rest[3 * v + 2]];
-    if (Math.hypot(x + 0.015, y) < 0.01) {
-      vertices.push(v);
-      targets.push(x + 0.003, y, z + 0.002);
-    }
-  }
+  const { vertices, targets } = draggedPatch(t.rest, -0.015, 0, 0.01, [0.003, 0, 0.002]);
   const solver = new SkinSolver(t, { parameters });
   solver.setMuscleTargets(vertices, targets, 1, 0);
   const shapes: Float32Array[] = [];
@@ -30,7 +22,7 @@ function dragSheet(parameters: Partial<SkinParameters>, frames: number): Float32
 
 const same = (a: Float32Array, b: Float32Array) => a.every((x, i) => x === b[i]);
 
-/** Frames of a motion until every vertex is within 2 % of the largest move of where it comes to rest; and the total. */
+/** thesis-laughing on the medium head: frames until every vertex is within 2 % (of the largest move) of where it comes to rest, and to sleep. */
 async function framesToShape(parameters: Partial<SkinParameters>) {
   const run = async () => {
     const sim = await loadHeadSimulation('medium', parameters);
@@ -58,7 +50,7 @@ async function framesToShape(parameters: Partial<SkinParameters>) {
   return { near, frames, sleeping: first.host.solver.sleeping };
 }
 
-describe('the start momentum (a larger carry in a motion first frames)', () => {
+describe('the start momentum (a larger carry in a motion\'s first frames)', () => {
   it('carries startMomentum along the surface for the first START_MOMENTUM_FRAMES frames and momentum after', () => {
     const frames = START_MOMENTUM_FRAMES + 3;
     const scheduled = dragSheet({ momentum: 0.5, startMomentum: 0.7 }, frames);
