@@ -19,6 +19,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { boxCentre, type HeadModel } from './head-model';
 import { describeMaterial, type MaterialDescription } from './materials';
+import { motionDraw, type MotionDrawState } from './motion-draw';
 import {
   CAMERA_DEFAULTS,
   CAMERA_RANGES,
@@ -43,8 +44,8 @@ export interface HeadViewOptions {
   maxPixelRatio: number;
   /**
    * Share of the pixel ratio the view draws at while the picture changes and its draws are slow (see `slowDrawMs`):
-   * 0.5 draws a quarter of the pixels. The first frame with nothing new is drawn again at full resolution. 1 turns
-   * this off.
+   * 0.5 draws a quarter of the pixels. Once nothing new has come for 100 ms the picture is drawn again at full
+   * resolution. 1 turns this off.
    */
   motionResolution: number;
   /**
@@ -139,7 +140,6 @@ export class HeadView {
   /** The pixel ratio of a full-resolution draw, and whether the canvas is at the motion's lower one now. */
   private readonly pixelRatio: number;
   private readonly motionResolution: number;
-  private readonly slowDrawMs: number;
   private reduced = false;
   /**
    * The animation frame time of the loop's last draw (-1 once measured), and how long the last full-resolution one
@@ -147,6 +147,10 @@ export class HeadView {
    */
   private drawnAt = -1;
   private fullDrawMs = 0;
+  /** The animation frame time at which the loop last saw something new. */
+  private changedAt = 0;
+  /** What the loop knows at an animation frame, for motionDraw. */
+  private readonly drawState: MotionDrawState;
   private readonly resizeObserver: ResizeObserver;
   /**
    * Whether any of the canvas is in view: a view scrolled away or in a hidden element renders nothing (and runs no
@@ -167,7 +171,7 @@ export class HeadView {
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.pixelRatio = Math.min(window.devicePixelRatio, o.maxPixelRatio);
     this.motionResolution = Math.min(1, Math.max(0.25, o.motionResolution));
-    this.slowDrawMs = o.slowDrawMs;
+    this.drawState = { changed: false, reduced: false, sinceChangeMs: 0, fullDrawMs: 0, motionResolution: this.motionResolution, slowDrawMs: o.slowDrawMs };
     this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.outputColorSpace = SRGBColorSpace;
     this.renderer.toneMapping = ACESFilmicToneMapping;
@@ -344,13 +348,17 @@ export class HeadView {
       // the solver) and shows the teeth ahead of the lips.
       this.drawPending = changed && hold;
       if (hold) return;
-      // Nothing new: a picture drawn at the motion's resolution is drawn again at full resolution (and the draw timed).
-      if (!changed && !this.reduced) return;
+      if (changed) this.changedAt = now;
+      // Filled in place: the loop allocates nothing.
+      const state = this.drawState;
+      state.changed = changed;
+      state.reduced = this.reduced;
+      state.sinceChangeMs = now - this.changedAt;
+      state.fullDrawMs = this.fullDrawMs;
+      const draw = motionDraw(state);
+      if (draw === 'skip') return;
       if (this.drawFrames > 0) this.drawFrames--;
-      // While the picture changes, slow draws go at a lower resolution: in software WebGL a full one costs two threads
-      // about 180 ms, in which the solver shares the cores with it, and the answer to an input reaches the screen
-      // later. The motion's first draw decides by the last full one, so a GPU that keeps up never draws lower.
-      this.setReduced(changed && this.motionResolution < 1 && this.fullDrawMs > this.slowDrawMs);
+      this.setReduced(draw === 'reduced');
       this.renderFrame();
       this.drawnAt = now;
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
