@@ -44,8 +44,8 @@ export interface HeadViewOptions {
   maxPixelRatio: number;
   /**
    * Share of the pixel ratio the view draws at while the picture changes and its draws are slow (see `slowDrawMs`):
-   * 0.5 draws a quarter of the pixels. Once nothing new has come for 100 ms the picture is drawn again at full
-   * resolution. 1 turns this off.
+   * 0.5 draws a quarter of the pixels. Once nothing new has come for MOTION_END_MS (see motion-draw.ts) the picture
+   * is drawn again at full resolution. 1 turns this off.
    */
   motionResolution: number;
   /**
