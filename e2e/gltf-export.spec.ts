@@ -157,6 +157,15 @@ test('exportGLTF writes the settled Action Unit and preset as named morph target
   expect(weightAt(clip, skin, 'AU12', 0.8)).toBeCloseTo(0.4, 5);
   expect(weightAt(clip, skin, 'surprise', 0.5)).toBe(0);
   expect(weightAt(clip, teeth, 'AU12', 0.5)).toBeCloseTo(1, 5);
+
+  // The brows and lashes go along, posed on the skin at rest, with the skin's targets and its clip: surprise raises
+  // the brows by millimetres.
+  for (const name of ['eyebrows', 'eyelashes']) {
+    const hair = meshNamed(gltf, name);
+    expect(hair.morphTargetDictionary).toEqual({ AU12: 0, surprise: 1 });
+    expect(weightAt(clip, hair, 'AU12', 0.5)).toBeCloseTo(1, 5);
+  }
+  expect(largestMove(meshNamed(gltf, 'eyebrows'), 'surprise')).toBeGreaterThan(3e-3);
 });
 
 test('bad export options reject naming the option and leave the face as it was', async ({ page }) => {
@@ -233,12 +242,16 @@ test('an aborted export rejects with the reason and gives the face its expressio
     }
     const restored = JSON.stringify(face.getActionUnits()) === JSON.stringify(before);
     const next = await face.exportGLTF({ actionUnits: ['AU17'], binary: false });
-    const document = JSON.parse(await next.text()) as { meshes: { name: string; extras?: { targetNames?: string[] } }[] };
-    return { error, restored, type: next.type, names: document.meshes.map((m) => m.extras?.targetNames ?? []) };
+    const document = JSON.parse(await next.text()) as { nodes: { name: string; mesh?: number }[]; meshes: { extras?: { targetNames?: string[] } }[] };
+    // Meshes are named by the nodes that hold them.
+    const targets = document.nodes.filter((n) => n.mesh !== undefined).map((n) => [n.name, document.meshes[n.mesh!].extras?.targetNames ?? []] as const);
+    return { error, restored, type: next.type, targets };
   });
   expect(r.error).toBe('stopped');
   expect(r.restored).toBe(true);
-  // A glTF JSON document this time; AU17 leaves the jaw, so only the skin has targets.
+  // A glTF JSON document this time; AU17 leaves the jaw, so only the skin and the hair on it have targets.
   expect(r.type).toBe('model/gltf+json');
-  expect(r.names.filter((n) => n.length > 0)).toEqual([['AU17']]);
+  const withTargets = r.targets.filter(([, names]) => names.length > 0);
+  expect(withTargets.map(([name]) => name).sort()).toEqual(['eyebrows', 'eyelashes', 'skin']);
+  for (const [, names] of withTargets) expect(names).toEqual(['AU17']);
 });

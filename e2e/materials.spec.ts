@@ -5,7 +5,7 @@ test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth
   await openFace(page, '/?resolution=low');
   const materials = await page.evaluate(() => window.face.describeMaterials());
   const byName = Object.fromEntries(materials.map((m) => [m.name, m]));
-  expect(Object.keys(byName).sort()).toEqual(['cornea', 'gums', 'iris', 'sclera', 'skin', 'teeth', 'tongue']);
+  expect(Object.keys(byName).sort()).toEqual(['cornea', 'eyebrows', 'eyelashes', 'gums', 'iris', 'sclera', 'skin', 'teeth', 'tongue']);
 
   const skin = byName.skin;
   expect(skin.type).toBe('MeshPhysicalMaterial');
@@ -55,4 +55,19 @@ test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth
   expect((await page.evaluate(() => window.face.describeMaterials())).every((m) => m.wireframe)).toBe(true);
   await page.evaluate(() => window.face.setRenderOptions({ wireframe: false }));
   expect((await page.evaluate(() => window.face.describeMaterials())).some((m) => m.wireframe)).toBe(false);
+});
+
+test('the brows and lashes are dark hair by default and take the colours setAppearance gives them', async ({ page }) => {
+  await openFace(page, '/?resolution=low');
+  const colour = (name: string): Promise<string> => page.evaluate((name) => window.face.describeMaterials().find((m) => m.name === name)!.color, name);
+  for (const name of ['eyebrows', 'eyelashes']) {
+    const rgb = [1, 3, 5].map(async (i) => parseInt((await colour(name)).slice(i, i + 2), 16));
+    const [r, g, b] = await Promise.all(rgb);
+    // Dark, and warm (brown to black, not grey-blue).
+    expect(Math.max(r, g, b)).toBeLessThan(0x60);
+    expect(r).toBeGreaterThanOrEqual(b);
+  }
+  await page.evaluate(() => window.face.setAppearance({ browColor: '#a07850', lashColor: '#302010' }));
+  expect(await colour('eyebrows')).toBe('#a07850');
+  expect(await colour('eyelashes')).toBe('#302010');
 });

@@ -3,7 +3,8 @@
  * Builds the app, serves it and, in headless Chromium at 1024 x 768 with the medium head:
  *   --shots  writes docs/images/neutral.png (the neutral face) and docs/images/closeup-wrinkles.png (forehead and
  *            eyes at twice the pixel density, brows raised by AU1 + AU2 so the solver folds the forehead);
- *   --bench  prints `face.measureRender(100)` three times: main-thread ms per `renderer.render` and `renderer.info`.
+ *   --bench  prints `face.measureRender(100)` three times with the brows and lashes and three times without: main-thread
+ *            ms per `renderer.render`, ms to pose the hair, and `renderer.info`.
  */
 import { execSync, spawn } from 'node:child_process';
 import { launchBrowser, openApp } from './browser.mjs';
@@ -56,7 +57,12 @@ try {
   if (args.includes('--bench')) {
     const page = await open(1);
     await page.evaluate(() => window.face.settle(60_000));
-    for (let run = 0; run < 3; run++) console.log(JSON.stringify(await page.evaluate(() => window.face.measureRender(100))));
+    // With the brows and lashes as they are, then without them: their cost is the difference in render time plus
+    // the time to pose them (`hairMeanMs`, `hairMedianMs`).
+    for (const hair of [true, false]) {
+      await page.evaluate((on) => window.face.setAppearance({ brows: on, lashes: on }), hair);
+      for (let run = 0; run < 3; run++) console.log(`hair ${hair ? 'on ' : 'off'}`, JSON.stringify(await page.evaluate(() => window.face.measureRender(100))));
+    }
     await page.close();
   }
 } finally {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { decodeExpression, encodeExpression, expressionEntries, readExpression } from '../src/embed/expression-hash';
+import { appearanceChanges, decodeAppearance, decodeExpression, encodeExpression, expressionEntries, readExpression } from '../src/embed/expression-hash';
 
 describe('the expression carried in the URL hash', () => {
   it('round-trips non-zero Action Units and preset weights, leaving zeros out', () => {
@@ -33,5 +33,23 @@ describe('an expression given to createFace, setExpression or <soft-face>', () =
     expect(() => readExpression('AU12=', 'setExpression')).toThrow('setExpression: AU12 needs a finite number, got ""');
     expect(() => readExpression({ AU12: Infinity })).toThrow('expression: AU12 needs a finite number, got Infinity');
     expect(() => readExpression(42 as unknown as string)).toThrow('expression: needs text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got 42');
+  });
+});
+
+describe('appearance in the hash', () => {
+  const defaults = { brows: true, browColor: '#4a3427', browDensity: 1, lashes: true, lashColor: '#1c1612' };
+
+  it('carries only what differs from the defaults, beside the expression, and reads it back typed', () => {
+    const changes = appearanceChanges({ ...defaults, browDensity: 0.4, lashes: false, browColor: '#4A3427' }, defaults);
+    expect(changes).toEqual({ browDensity: 0.4, lashes: false });
+    const hash = encodeExpression({ actionUnits: { AU12: 0.5 }, presets: {} }, undefined, { ...changes, lashColor: '#aa0000' });
+    expect(hash).toBe('#AU12=0.5&appearance.browDensity=0.4&appearance.lashes=0&appearance.lashColor=%23aa0000');
+    expect(decodeAppearance(hash, defaults)).toEqual({ browDensity: 0.4, lashes: false, lashColor: '#aa0000' });
+    // Not Action Units.
+    expect(decodeExpression(hash)).toEqual({ actionUnits: { AU12: 0.5 }, presets: {} });
+  });
+
+  it('keeps entries of the wrong form as given, for the face to refuse by name', () => {
+    expect(decodeAppearance('#appearance.browDensity=lots&appearance.brows=yes&appearance.beard=1', defaults)).toEqual({ browDensity: 'lots', brows: 'yes', beard: '1' });
   });
 });

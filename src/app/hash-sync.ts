@@ -1,5 +1,6 @@
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
-import { decodeExpression, decodeTimeline, encodeExpression, MAX_HASH_TIMELINE_CHARS } from '../embed/expression-hash';
+import { appearanceChanges, decodeAppearance, decodeExpression, decodeTimeline, encodeExpression, MAX_HASH_TIMELINE_CHARS } from '../embed/expression-hash';
+import { APPEARANCE_DEFAULTS, type AppearanceOptions } from '../render/view-options';
 
 /** Options of the URL hash sync. */
 export interface HashSyncOptions {
@@ -10,8 +11,8 @@ export interface HashSyncOptions {
 export const HASH_SYNC_DEFAULTS: Required<HashSyncOptions> = { intervalMs: 250 };
 
 /**
- * Keeps the current expression (Action Unit sliders and preset weights) in the URL hash, with the loaded timeline when
- * its JSON is short (`MAX_HASH_TIMELINE_CHARS`), so that a copied link reopens the same face: applies the hash the
+ * Keeps the current expression (Action Unit sliders and preset weights) and appearance (where it differs from the
+ * defaults) in the URL hash, with the loaded timeline when its JSON is short (`MAX_HASH_TIMELINE_CHARS`), so that a copied link reopens the same face: applies the hash the
  * page opened with (and any the user types later), and rewrites it with `history.replaceState` after changes, at most
  * every `intervalMs` and always after the last one. Replacing, not pushing, keeps slider moves out of the back
  * button's history.
@@ -50,6 +51,7 @@ export class HashSync {
     }
     const { actionUnits, presets } = decodeExpression(hash);
     const timeline = decodeTimeline(hash);
+    const appearance = decodeAppearance(hash, APPEARANCE_DEFAULTS);
     const attempt = (apply: () => void): void => {
       try {
         apply();
@@ -60,6 +62,9 @@ export class HashSync {
     this.applying = true;
     try {
       if (replace) this.face.reset();
+      // A hash without appearance entries means the default look.
+      const look = replace ? { ...APPEARANCE_DEFAULTS, ...appearance } : appearance;
+      for (const [key, value] of Object.entries(look)) attempt(() => this.face.setAppearance({ [key]: value } as Partial<AppearanceOptions>));
       for (const [id, value] of Object.entries(actionUnits)) attempt(() => this.face.setActionUnit(id, value));
       for (const [name, weight] of Object.entries(presets)) attempt(() => this.face.applyPreset(name, weight));
       if (timeline !== null) attempt(() => this.face.setTimeline(timeline, 'URL hash timeline'));
@@ -76,7 +81,8 @@ export class HashSync {
     for (const p of this.face.listPresets()) presets[p.name] = p.weight;
     const timeline = this.face.getTimeline();
     const text = timeline ? JSON.stringify(timeline) : undefined;
-    return encodeExpression({ actionUnits: this.face.getActionUnits(), presets }, text !== undefined && text.length <= MAX_HASH_TIMELINE_CHARS ? text : undefined);
+    const look = appearanceChanges({ ...this.face.getAppearance() }, APPEARANCE_DEFAULTS);
+    return encodeExpression({ actionUnits: this.face.getActionUnits(), presets }, text !== undefined && text.length <= MAX_HASH_TIMELINE_CHARS ? text : undefined, look);
   }
 
   /** Writes the hash now, dropping any write that was waiting. */
@@ -96,7 +102,7 @@ export class HashSync {
   }
 
   private changed(change: FaceChange): void {
-    if ((change !== 'expression' && change !== 'timeline') || this.applying || this.timer !== undefined) return;
+    if ((change !== 'expression' && change !== 'timeline' && change !== 'appearance') || this.applying || this.timer !== undefined) return;
     const wait = this.lastWrite + this.o.intervalMs - performance.now();
     if (wait <= 0) this.flush();
     else this.timer = setTimeout(() => this.flush(), wait);

@@ -3,12 +3,14 @@ import { DEGREES, eulerMatrix } from '../core/math3';
 import { RigDocument } from '../core/rig-document';
 import { parseRig, parseRigText } from '../core/rig-schema';
 import type { Rig } from '../core/rig-types';
+import { HEAD_NODES } from '../core/head-nodes';
 import { headColliders } from '../render/head-colliders';
 import { DEFAULT_LANDMARKS, type Landmarks } from '../core/landmarks';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView, type ViewBackground } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
 import { ENVIRONMENT_PATH, loadEnvironment } from '../render/environment';
+import { HairView } from '../render/hair-view';
 import { SkinView } from '../render/skin-view';
 import { HeadExporter } from '../render/gltf-export';
 import { Panels } from '../ui/panels';
@@ -197,6 +199,7 @@ export class EmbeddedFace {
     const start = readExpression(o.expression, 'createFace: expression');
     if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0) this.expression!.set(start, 'createFace: expression');
     if (Object.keys(o.light).length > 0) this.handle.setLight(o.light);
+    if (Object.keys(o.appearance).length > 0) this.handle.setAppearance(o.appearance);
     if (o.eyeSimulation) this.handle.setEyeSimulation(true);
     if (o.panels) this.setPanels(true);
   }
@@ -302,6 +305,11 @@ export class EmbeddedFace {
     try {
       // Before the first render: the skin's attributes become dynamic.
       skinView = new SkinView(head.skin);
+      // Brows and lashes, placed from the eye corners on the skin at rest (the lashes' roots clear of the eyeballs),
+      // ride every frame the skin shows.
+      const colliders = headColliders(head);
+      const eyes = colliders.filter((c) => (HEAD_NODES.eyes as readonly string[]).includes(c.name)).map((c) => ({ centre: c.a, radius: c.radius }));
+      head.hair = new HairView(head.skin, prepared?.landmarks ?? DEFAULT_LANDMARKS, eyes);
       // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
       if (this.rigKey) {
         autosave = new RigAutosave(prepared && this.headStore ? this.headStore.rigKey : this.rigKey, original);
@@ -315,7 +323,7 @@ export class EmbeddedFace {
         workers: o.workers,
         renderPositions: head.skin.geometry.getAttribute('position').array as Float32Array,
         indices: head.skin.geometry.index!.array as Uint16Array | Uint32Array,
-        colliders: headColliders(head),
+        colliders,
         muscles: rig.muscles,
       });
     } catch (error) {
@@ -340,6 +348,8 @@ export class EmbeddedFace {
     // Made before the first frame moves the skin, and while the jaw and eyes are still at rest.
     const exporter = new HeadExporter(head, restRender, restNormals);
     skinView.connect(simulation);
+    const hair = head.hair;
+    if (hair) own.push(skinView.follow(hair));
     own.push(this.view.onFrame(() => {
       simulation.advance();
       if (skinView.update()) return true;

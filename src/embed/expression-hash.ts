@@ -18,14 +18,23 @@ const PRESET_PREFIX = 'preset:';
 /** The hash entry that carries a timeline document, as compact JSON: `timeline={"format":...}`. */
 export const TIMELINE_HASH_KEY = 'timeline';
 
+/**
+ * Hash entries that carry the face's appearance (`appearance.browDensity=0.5`, `appearance.lashes=0`), only where it
+ * differs from the defaults; they are not expression entries.
+ */
+export const APPEARANCE_HASH_PREFIX = 'appearance.';
+
 /** Longest timeline JSON the app puts in its URL hash, in characters: longer ones make links too long to share. */
 export const MAX_HASH_TIMELINE_CHARS = 1500;
 
 /** The hash (with its `#`) for an expression, and a timeline's JSON text if given; zero values are left out. */
-export function encodeExpression(e: HashExpression, timeline?: string): string {
+export function encodeExpression(e: HashExpression, timeline?: string, appearance: HashAppearance = {}): string {
   const params = new URLSearchParams();
   for (const [id, v] of Object.entries(e.actionUnits)) if (v !== 0) params.set(id, String(round(v)));
   for (const [name, w] of Object.entries(e.presets)) if (w !== 0) params.set(PRESET_PREFIX + name, String(round(w)));
+  for (const [key, value] of Object.entries(appearance)) {
+    params.set(APPEARANCE_HASH_PREFIX + key, typeof value === 'boolean' ? (value ? '1' : '0') : typeof value === 'number' ? String(round(value)) : value);
+  }
   if (timeline !== undefined) params.set(TIMELINE_HASH_KEY, timeline);
   const text = params.toString();
   return text ? `#${text}` : '';
@@ -35,11 +44,41 @@ export function encodeExpression(e: HashExpression, timeline?: string): string {
 export function decodeExpression(hash: string): HashExpression {
   const out: HashExpression = { actionUnits: {}, presets: {} };
   for (const [key, text] of new URLSearchParams(hash.replace(/^#/, ''))) {
-    if (key === TIMELINE_HASH_KEY) continue;
+    if (key === TIMELINE_HASH_KEY || key.startsWith(APPEARANCE_HASH_PREFIX)) continue;
     const value = Number(text);
     if (text.trim() === '' || !Number.isFinite(value)) continue;
     if (key.startsWith(PRESET_PREFIX)) out.presets[key.slice(PRESET_PREFIX.length)] = value;
     else out.actionUnits[key] = value;
+  }
+  return out;
+}
+
+/** Appearance options as a hash carries them: booleans, numbers and colours by option name. */
+export type HashAppearance = Record<string, boolean | number | string>;
+
+/**
+ * The appearance entries of a hash, typed by the defaults (`1`/`0` for switches, numbers, `#rrggbb` colours); entries
+ * of unknown options or of the wrong form are kept as given, for the face to refuse with its own message.
+ */
+export function decodeAppearance(hash: string, defaults: Readonly<HashAppearance>): HashAppearance {
+  const out: HashAppearance = {};
+  for (const [key, text] of new URLSearchParams(hash.replace(/^#/, ''))) {
+    if (!key.startsWith(APPEARANCE_HASH_PREFIX)) continue;
+    const name = key.slice(APPEARANCE_HASH_PREFIX.length);
+    const kind = typeof defaults[name];
+    if (kind === 'boolean' && (text === '1' || text === '0')) out[name] = text === '1';
+    else if (kind === 'number' && text.trim() !== '' && Number.isFinite(Number(text))) out[name] = Number(text);
+    else out[name] = text;
+  }
+  return out;
+}
+
+/** The options of `current` that differ from `defaults`: what a hash needs to carry. */
+export function appearanceChanges(current: Readonly<HashAppearance>, defaults: Readonly<HashAppearance>): HashAppearance {
+  const out: HashAppearance = {};
+  for (const [key, value] of Object.entries(current)) {
+    const same = typeof value === 'string' && typeof defaults[key] === 'string' ? value.toLowerCase() === (defaults[key] as string).toLowerCase() : value === defaults[key];
+    if (!same) out[key] = value;
   }
   return out;
 }

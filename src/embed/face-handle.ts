@@ -7,7 +7,8 @@ import type { SkinParameters } from '../core/solver';
 import type { RenderTiming } from '../render/head-view';
 import type { GizmoMode, GizmoPart } from '../render/muscle-gizmo';
 import type { MaterialDescription } from '../render/materials';
-import type { CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
+import type { HairSnapshot } from '../render/hair-view';
+import type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
 import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
 import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader';
@@ -41,7 +42,7 @@ export type FaceStats = SkinSimulationStats;
  * head loaded, or the default one back), the landmark guide (started, a landmark placed, ended), or the timeline
  * (loaded, played, paused, sought, and every frame it plays).
  */
-export type FaceChange = 'expression' | 'light' | 'camera' | 'render' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks' | 'timeline';
+export type FaceChange = 'expression' | 'light' | 'camera' | 'render' | 'appearance' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks' | 'timeline';
 
 /**
  * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
@@ -188,6 +189,9 @@ export interface FaceView {
   lightOptions(): LightOptions;
   setRenderOptions(partial: Partial<RenderOptions>): void;
   renderOptions(): RenderOptions;
+  setAppearance(partial: Partial<AppearanceOptions>): void;
+  appearanceOptions(): AppearanceOptions;
+  describeHair(vertexAt: (x: number, y: number, z: number) => number): HairSnapshot | null;
   setCamera(partial: Partial<CameraOptions>): void;
   cameraOptions(): CameraOptions;
   locate(point: readonly [number, number, number]): { x: number; y: number } | null;
@@ -603,6 +607,36 @@ export class FaceHandle {
 
   getRenderOptions(): RenderOptions {
     return this.shown().renderOptions();
+  }
+
+  /**
+   * Changes how the face's hair looks: `brows` and `lashes` (booleans: off for a bare face), `browColor` and
+   * `lashColor` (`#rrggbb`), `browDensity` (0..1, the share of brow hairs drawn); bad input throws and changes nothing.
+   */
+  setAppearance(partial: Partial<AppearanceOptions>): void {
+    this.shown().setAppearance(partial);
+    this.emit('appearance');
+  }
+
+  getAppearance(): AppearanceOptions {
+    return this.shown().appearanceOptions();
+  }
+
+  /**
+   * The brows and lashes as drawn now: per kind, the drawn hairs' ribbon vertices (a hair's first two are its root)
+   * and each hair's anchor (three skin vertices in simulation order, as `getSkin` gives them, and barycentric weights).
+   */
+  getHair(): HairSnapshot {
+    const rest = this.running().rest;
+    const byPosition = new Map<string, number>();
+    for (let v = rest.length / 3 - 1; v >= 0; v--) byPosition.set(`${rest[3 * v]},${rest[3 * v + 1]},${rest[3 * v + 2]}`, v);
+    const hair = this.shown().describeHair((x, y, z) => {
+      const v = byPosition.get(`${Math.fround(x)},${Math.fround(y)},${Math.fround(z)}`);
+      if (v === undefined) throw new Error(`getHair: no skin vertex at (${x}, ${y}, ${z})`);
+      return v;
+    });
+    if (!hair) throw new Error('getHair: the head has no hair');
+    return hair;
   }
 
   /**

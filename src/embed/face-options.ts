@@ -1,5 +1,5 @@
 import type { Rig } from '../core/rig-types';
-import { LIGHT_DEFAULTS, LIGHT_RANGES, checkOptions, type LightOptions } from '../render/view-options';
+import { APPEARANCE_DEFAULTS, APPEARANCE_RANGES, LIGHT_DEFAULTS, LIGHT_RANGES, checkOptions, type AppearanceOptions, type LightOptions } from '../render/view-options';
 import { readExpression, type ExpressionEntries } from './expression-hash';
 
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
@@ -36,6 +36,8 @@ export interface FaceOptions {
   eyeSimulation?: boolean;
   /** Some light options (see `setLight`). */
   light?: Partial<LightOptions>;
+  /** Some appearance options: the brows' and lashes' switches and colours, the brows' density (see `setAppearance`). */
+  appearance?: Partial<AppearanceOptions>;
   /** A colour `"#rrggbb"`, or `"transparent"` to show the page behind the face. */
   background?: string;
   /**
@@ -68,6 +70,7 @@ export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
   expression: '',
   eyeSimulation: false,
   light: {},
+  appearance: {},
   background: '#1d2024',
   motionResolution: 0.5,
   assetBase: null,
@@ -133,6 +136,9 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
       break;
     case 'light':
       checkOptions<LightOptions>(`${what}: light`, value, LIGHT_DEFAULTS, LIGHT_RANGES);
+      break;
+    case 'appearance':
+      checkOptions<AppearanceOptions>(`${what}: appearance`, value, APPEARANCE_DEFAULTS, APPEARANCE_RANGES);
       break;
     case 'expression':
       // Whether its ids and presets exist is checked against the rig, once it is loaded.

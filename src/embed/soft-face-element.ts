@@ -1,5 +1,5 @@
 import type { SkinParameters } from '../core/solver';
-import type { LightOptions, RenderOptions } from '../render/view-options';
+import type { AppearanceOptions, LightOptions, RenderOptions } from '../render/view-options';
 import type { Face } from './create-face';
 import { ATTRIBUTE_DEFAULTS, FACE_ATTRIBUTES, readAttributes, type FaceAttribute, type FaceAttributeValues } from './element-attributes';
 import { EmbeddedFace } from './embedded-face';
@@ -17,6 +17,7 @@ interface CarriedState {
   expression: Record<string, number>;
   light: LightOptions;
   render: RenderOptions;
+  appearance: AppearanceOptions;
   muscles: MuscleDisplay;
   skin: SkinParameters;
   eyeSimulation: boolean;
@@ -95,7 +96,7 @@ export class SoftFaceElement extends HTMLElement {
       resolution: v.resolution,
       solver: v.solver,
       background: v.background,
-      ...(carried ? { expression: carried.expression, light: carried.light, eyeSimulation: carried.eyeSimulation } : {}),
+      ...(carried ? { expression: carried.expression, light: carried.light, appearance: carried.appearance, eyeSimulation: carried.eyeSimulation } : {}),
     };
     EmbeddedFace.create(this, options, building.signal).then(
       (face) => {
@@ -191,6 +192,7 @@ function carry(face: Face): CarriedState {
     expression: expressionEntries({ actionUnits: face.getActionUnits(), presets }),
     light: face.getLight(),
     render: face.getRenderOptions(),
+    appearance: face.getAppearance(),
     muscles: face.getMuscleDisplay(),
     skin: face.getSkinParameters(),
     eyeSimulation: face.getEyeSimulation(),

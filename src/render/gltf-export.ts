@@ -53,6 +53,8 @@ export interface ExportScene {
   skin: Mesh;
   /** Meshes under the jaw node that carry the jaw's turn as morph targets (none if no shape turns it). */
   jawMeshes: Mesh[];
+  /** The brows and lashes shown, with the skin's morph targets. */
+  hairMeshes: Mesh[];
   /** Frees the geometries made for the export (the materials are the shown head's). */
   dispose(): void;
 }
@@ -127,15 +129,28 @@ export class HeadExporter {
     made.push(geometry);
 
     const jawMeshes = this.bakeJaw(scene, copies, shapes, made);
+    // The brows and lashes as shown (hidden ones left out), at rest, with the skin's targets.
+    const hairMeshes: Mesh[] = [];
+    for (const { mesh, shown } of this.head.hair?.meshes() ?? []) {
+      const copy = copies.get(mesh) as Mesh;
+      if (!shown) {
+        copy.removeFromParent();
+        continue;
+      }
+      copy.geometry = this.head.hair!.bakedGeometry(mesh, { positions: this.restPositions, normals: this.restNormals }, shapes);
+      copy.updateMorphTargets();
+      made.push(copy.geometry);
+      hairMeshes.push(copy);
+    }
     const animations: AnimationClip[] = [];
     if (clip) {
       const count = clip.times.length;
       if (clip.weights.length !== count * shapes.length) throw new Error(`the clip ${clip.name} has ${clip.weights.length} weights for ${count} times of ${shapes.length} targets`);
       // By uuid: node names of a loaded head need not be unique.
-      const tracks = [skin, ...jawMeshes].map((m) => new NumberKeyframeTrack(`${m.uuid}.morphTargetInfluences`, clip.times, clip.weights));
+      const tracks = [skin, ...jawMeshes, ...hairMeshes].map((m) => new NumberKeyframeTrack(`${m.uuid}.morphTargetInfluences`, clip.times, clip.weights));
       animations.push(new AnimationClip(clip.name, clip.duration, tracks));
     }
-    return { scene, animations, skin, jawMeshes, dispose: () => made.forEach((g) => g.dispose()) };
+    return { scene, animations, skin, jawMeshes, hairMeshes, dispose: () => made.forEach((g) => g.dispose()) };
   }
 
   /** Exports the scene `buildScene` makes, through three.js's GLTFExporter: a GLB, or a glTF JSON document. */

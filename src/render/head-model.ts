@@ -2,6 +2,7 @@ import { Box3, BufferAttribute, Mesh, Object3D, Texture, Vector3, type Material 
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { HEAD_NODES } from '../core/head-nodes';
 import { createHeadMaterials } from './materials';
+import type { HairView } from './hair-view';
 import { mouthLight, SKIN_TINT_DEFAULTS, skinTint } from './skin-tint';
 
 /** What the model file's scene extras say about it (written by scripts/build-head-model.ts). */
@@ -24,6 +25,8 @@ export interface HeadModel {
   info: HeadModelInfo;
   /** Bounds of the skin at rest. */
   bounds: Box3;
+  /** Eyebrows and eyelashes on the skin, once the face has placed them (see HairView). */
+  hair?: HairView;
 }
 
 /** Loads a softface head GLB and gives its parts the app's materials. */

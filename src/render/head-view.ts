@@ -18,15 +18,19 @@ import {
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { boxCentre, type HeadModel } from './head-model';
+import type { HairSnapshot } from './hair-view';
 import { describeMaterial, type MaterialDescription } from './materials';
 import { motionDraw, type MotionDrawState } from './motion-draw';
 import {
+  APPEARANCE_DEFAULTS,
+  APPEARANCE_RANGES,
   CAMERA_DEFAULTS,
   CAMERA_RANGES,
   LIGHT_DEFAULTS,
   LIGHT_RANGES,
   RENDER_DEFAULTS,
   checkOptions,
+  type AppearanceOptions,
   type CameraOptions,
   type LightOptions,
   type RenderOptions,
@@ -69,6 +73,9 @@ export interface RenderTiming {
   /** Main-thread milliseconds spent in `renderer.render` per frame: mean and median. */
   meanMs: number;
   medianMs: number;
+  /** Main-thread milliseconds spent posing the brows and lashes on the skin per frame (as at each new skin frame): mean and median. */
+  hairMeanMs: number;
+  hairMedianMs: number;
   /** Wall milliseconds per frame over the whole run, waiting at the end for the GPU to finish (pixel cost included). */
   finishedMs: number;
   /** From `renderer.info` after the last frame. */
@@ -126,6 +133,7 @@ export class HeadView {
   private readonly scratch = new Vector3();
   private readonly light: Required<LightOptions> = { ...LIGHT_DEFAULTS };
   private readonly render: Required<RenderOptions> = { ...RENDER_DEFAULTS };
+  private readonly appearance: Required<AppearanceOptions> = { ...APPEARANCE_DEFAULTS };
   private frame = 0;
   private readonly frameHooks: FrameHook[] = [];
   private readonly renderHooks: (() => void)[] = [];
@@ -266,6 +274,23 @@ export class HeadView {
     return { ...this.render };
   }
 
+  /** Changes some appearance options (the hair's colours, density and switches); throws, changing nothing, on bad input. */
+  setAppearance(partial: Partial<AppearanceOptions>): void {
+    Object.assign(this.appearance, checkOptions<AppearanceOptions>('setAppearance', partial, APPEARANCE_DEFAULTS, APPEARANCE_RANGES));
+    this.head?.hair?.setAppearance(this.appearance);
+    this.invalidate();
+  }
+
+  /** A copy of the current appearance options. */
+  appearanceOptions(): AppearanceOptions {
+    return { ...this.appearance };
+  }
+
+  /** The shown head's hair as drawn now (see HairView.snapshot); null without a head or hair. */
+  describeHair(vertexAt: (x: number, y: number, z: number) => number): HairSnapshot | null {
+    return this.head?.hair?.snapshot(vertexAt) ?? null;
+  }
+
   /** Renders a frame now and encodes the canvas as a PNG (what the user sees, at the canvas's pixel size). */
   snapshot(): Promise<Blob> {
     // The frame hooks first, as the render loop runs them: the skin takes the solver's newest frame, so a picture
@@ -388,8 +413,14 @@ export class HeadView {
     this.setReduced(false);
     this.renderFrame();
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    const hair = this.head?.hair;
+    const hairTimes: number[] = [];
     const start = performance.now();
     for (let i = 0; i < frames; i++) {
+      // As at every new skin frame: the hair is posed on the skin, and its attributes go to the GPU in the render.
+      const h0 = performance.now();
+      hair?.skinChanged();
+      hairTimes.push(performance.now() - h0);
       const t0 = performance.now();
       this.renderer.render(this.scene, this.camera);
       times.push(performance.now() - t0);
@@ -397,11 +428,14 @@ export class HeadView {
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
     const finishedMs = (performance.now() - start) / frames;
     times.sort((a, b) => a - b);
+    hairTimes.sort((a, b) => a - b);
     const info = this.renderer.info;
     return {
       frames,
       meanMs: times.reduce((s, t) => s + t, 0) / frames,
       medianMs: times[Math.floor(frames / 2)],
+      hairMeanMs: hairTimes.reduce((s, t) => s + t, 0) / frames,
+      hairMedianMs: hairTimes[Math.floor(frames / 2)],
       finishedMs,
       calls: info.render.calls,
       triangles: info.render.triangles,
@@ -553,6 +587,7 @@ export class HeadView {
         m.needsUpdate = true;
       }
     });
+    head.hair?.setAppearance(this.appearance);
     for (const eye of head.eyes) eye.visible = this.render.showEyes;
     for (const t of head.teeth) t.visible = this.render.showTeeth;
     if (head.tongue) head.tongue.visible = this.render.showTeeth;

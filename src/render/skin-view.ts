@@ -8,6 +8,11 @@ export interface SkinFrameSource {
   readonly bounds: Float32Array;
 }
 
+/** What is posed on the skin (hair): told after the skin mesh took each new frame. */
+export interface SkinFollower {
+  skinChanged(): void;
+}
+
 /** An update range covering a whole attribute, in components. */
 interface UpdateRange {
   start: number;
@@ -25,6 +30,7 @@ export class SkinView {
   private readonly normals: BufferAttribute;
   private readonly positionRange: UpdateRange;
   private readonly normalRange: UpdateRange;
+  private followers: readonly SkinFollower[] = [];
 
   /** Prepares the mesh's attributes for per-frame updates; call before the mesh is first rendered. */
   constructor(mesh: Mesh) {
@@ -43,6 +49,14 @@ export class SkinView {
     this.source = source;
   }
 
+  /** Tells `follower` of every new frame from now on, until the returned function is called. */
+  follow(follower: SkinFollower): () => void {
+    this.followers = [...this.followers, follower];
+    return () => {
+      this.followers = this.followers.filter((f) => f !== follower);
+    };
+  }
+
   /** Copies the newest solved frame into the mesh, if one arrived since the last call; returns whether one did. */
   update(): boolean {
     const source = this.source;
@@ -56,6 +70,7 @@ export class SkinView {
     box.min.set(b[0], b[1], b[2]);
     box.max.set(b[3], b[4], b[5]);
     box.getBoundingSphere(this.geometry.boundingSphere as Sphere);
+    for (let i = 0; i < this.followers.length; i++) this.followers[i].skinChanged();
     return true;
   }
 }

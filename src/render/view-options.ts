@@ -59,6 +59,31 @@ export const CAMERA_RANGES: Readonly<Record<keyof CameraOptions, readonly [numbe
   distance: [0.2, 5],
 });
 
+/** How the face's hair looks: eyebrows and eyelashes, each with an off switch for studies that want a bare face. */
+export interface AppearanceOptions {
+  /** Draw the eyebrows. */
+  brows: boolean;
+  /** Eyebrow colour, sRGB `#rrggbb`. */
+  browColor: string;
+  /** Share of the eyebrow hairs drawn, 0..1 (1: a full brow, 0.4: a sparse one). */
+  browDensity: number;
+  /** Draw the eyelashes. */
+  lashes: boolean;
+  /** Eyelash colour, sRGB `#rrggbb`. */
+  lashColor: string;
+}
+
+/** Dark brown brows and near-black lashes, as on most faces. */
+export const APPEARANCE_DEFAULTS: Readonly<Required<AppearanceOptions>> = Object.freeze({
+  brows: true,
+  browColor: '#4a3427',
+  browDensity: 1,
+  lashes: true,
+  lashColor: '#1c1612',
+});
+
+export const APPEARANCE_RANGES: Readonly<Partial<Record<keyof AppearanceOptions, readonly [number, number]>>> = Object.freeze({ browDensity: [0, 1] });
+
 export const RENDER_DEFAULTS: Readonly<Required<RenderOptions>> = Object.freeze({ wireframe: false, showEyes: true, showTeeth: true });
 
 const COLOUR = /^#[0-9a-f]{6}$/i;

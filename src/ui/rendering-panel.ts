@@ -17,7 +17,7 @@ export interface RenderingPanelOptions {
 const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations' | 'onResolution'>> = { maxIterations: 20, onResolution: null };
 
 /**
- * The Rendering folder: solid or wireframe, eyes, teeth, the head's resolution, the solver's length and position
+ * The Rendering folder: solid or wireframe, eyes, teeth, the brows and lashes (switches, colours, density), the head's resolution, the solver's length and position
  * iteration counts, the eye simulation, every muscle shown over the skin, and a button that saves the picture as a PNG.
  */
 export class RenderingPanel {
@@ -26,6 +26,11 @@ export class RenderingPanel {
     wireframe: boolean;
     showEyes: boolean;
     showTeeth: boolean;
+    brows: boolean;
+    browColor: string;
+    browDensity: number;
+    lashes: boolean;
+    lashColor: string;
     resolution: Resolution;
     lengthIterations: number;
     positionIterations: number;
@@ -41,6 +46,7 @@ export class RenderingPanel {
     const skin = face.getSkinParameters();
     this.state = {
       ...face.getRenderOptions(),
+      ...face.getAppearance(),
       resolution: o.resolution,
       lengthIterations: skin.lengthIterations,
       positionIterations: skin.positionIterations,
@@ -53,6 +59,11 @@ export class RenderingPanel {
     this.add(this.folder.add(s, 'wireframe').onChange((v: boolean) => face.setRenderOptions({ wireframe: v })), 'wireframe');
     this.add(this.folder.add(s, 'showEyes').name('show eyes').onChange((v: boolean) => face.setRenderOptions({ showEyes: v })), 'show-eyes');
     this.add(this.folder.add(s, 'showTeeth').name('show teeth').onChange((v: boolean) => face.setRenderOptions({ showTeeth: v })), 'show-teeth');
+    this.add(this.folder.add(s, 'brows').name('eyebrows').onChange((v: boolean) => face.setAppearance({ brows: v })), 'brows');
+    this.add(this.folder.addColor(s, 'browColor').name('brow colour').onChange((v: string) => face.setAppearance({ browColor: v })), 'brow-color');
+    this.add(this.folder.add(s, 'browDensity', 0, 1, 0.05).name('brow density').onChange((v: number) => face.setAppearance({ browDensity: v })), 'brow-density');
+    this.add(this.folder.add(s, 'lashes').name('eyelashes').onChange((v: boolean) => face.setAppearance({ lashes: v })), 'lashes');
+    this.add(this.folder.addColor(s, 'lashColor').name('lash colour').onChange((v: string) => face.setAppearance({ lashColor: v })), 'lash-color');
     const onResolution = o.onResolution;
     if (onResolution) this.add(this.folder.add(s, 'resolution', [...RESOLUTIONS]).name('mesh resolution').onChange((r: Resolution) => onResolution(r)), 'resolution');
     this.add(
@@ -91,6 +102,7 @@ export class RenderingPanel {
 
   private changed(change: FaceChange): void {
     if (change === 'render') Object.assign(this.state, this.face.getRenderOptions());
+    else if (change === 'appearance') Object.assign(this.state, this.face.getAppearance());
     else if (change === 'eyes') this.state.eyeSimulation = this.face.getEyeSimulation();
     else if (change === 'muscles') this.state.showAllMuscles = this.face.getMuscleDisplay().all;
     else if (change === 'skin') {

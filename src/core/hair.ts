@@ -1,0 +1,172 @@
+/**
+ * Hair that rides a skin: each hair (a brow hair, a lash) is a thin ribbon anchored to one skin triangle by
+ * barycentric weights, with its vertices stored in the frame the skin has at the anchor (the surface normal, a
+ * tangent along the triangle's first edge, and their cross product). Posing the hair on a solved skin rebuilds each
+ * frame from the skin's positions and normals, so a hair follows its patch of skin as it moves, turns and stretches;
+ * the solver never sees the hair. Pure: no three.js, no DOM.
+ */
+
+/** Strands anchored to a skin: ribbons of `verticesPerHair` vertices each, in the frame of their anchor. */
+export interface HairStrands {
+  /** Number of hairs; a prefix of them can be drawn (density), as they are stored in a shuffled order. */
+  count: number;
+  /** Vertices of one hair's ribbon (two per point along the hair, the hair's root first). */
+  verticesPerHair: number;
+  /** Per hair, the anchor triangle's three skin vertices (render order). */
+  corners: Uint32Array;
+  /** Per hair, the anchor point's barycentric weights in that triangle. */
+  weights: Float32Array;
+  /** Per vertex, its place in the anchor's frame: along the tangent, the bitangent and the normal, in metres. */
+  local: Float32Array;
+  /** Per vertex, a brightness factor (hairs differ a little in colour, and tips are lighter than roots). */
+  shade: Float32Array;
+  /** Triangles of the ribbons, three vertex indices each; hair h's triangles come before hair h + 1's. */
+  indices: Uint32Array;
+}
+
+/** The two vertices of the root of a hair's ribbon are its first; their midpoint is the root. */
+export const ROOT_VERTICES = 2;
+
+/**
+ * The skin's frame at hair `h`'s anchor, into `out` (12 numbers): the anchor point, the tangent, the bitangent and
+ * the unit normal (interpolated from the vertex normals). The tangent is the triangle's first edge made
+ * perpendicular to the normal, so the frame turns with the skin patch around the hair.
+ */
+export function anchorFrame(h: HairStrands, hair: number, positions: ArrayLike<number>, normals: ArrayLike<number>, out: Float64Array): void {
+  const i0 = 3 * h.corners[3 * hair], i1 = 3 * h.corners[3 * hair + 1], i2 = 3 * h.corners[3 * hair + 2];
+  const w0 = h.weights[3 * hair], w1 = h.weights[3 * hair + 1], w2 = h.weights[3 * hair + 2];
+  let nx = w0 * normals[i0] + w1 * normals[i1] + w2 * normals[i2];
+  let ny = w0 * normals[i0 + 1] + w1 * normals[i1 + 1] + w2 * normals[i2 + 1];
+  let nz = w0 * normals[i0 + 2] + w1 * normals[i1 + 2] + w2 * normals[i2 + 2];
+  let n = Math.hypot(nx, ny, nz);
+  if (!(n > 1e-12)) {
+    // No usable vertex normals (a sliver, or zero normals): the triangle's own.
+    const ax = positions[i1] - positions[i0], ay = positions[i1 + 1] - positions[i0 + 1], az = positions[i1 + 2] - positions[i0 + 2];
+    const bx = positions[i2] - positions[i0], by = positions[i2 + 1] - positions[i0 + 1], bz = positions[i2 + 2] - positions[i0 + 2];
+    nx = ay * bz - az * by;
+    ny = az * bx - ax * bz;
+    nz = ax * by - ay * bx;
+    n = Math.hypot(nx, ny, nz) || 1;
+  }
+  nx /= n;
+  ny /= n;
+  nz /= n;
+  let tx = positions[i1] - positions[i0], ty = positions[i1 + 1] - positions[i0 + 1], tz = positions[i1 + 2] - positions[i0 + 2];
+  const along = tx * nx + ty * ny + tz * nz;
+  tx -= along * nx;
+  ty -= along * ny;
+  tz -= along * nz;
+  let t = Math.hypot(tx, ty, tz);
+  if (!(t > 1e-12)) {
+    // An edge along the normal: any direction across it will do, as long as it is the same at rest and now.
+    tx = Math.abs(nx) < 0.9 ? 1 : 0;
+    ty = Math.abs(nx) < 0.9 ? 0 : 1;
+    tz = 0;
+    const d = tx * nx + ty * ny;
+    tx -= d * nx;
+    ty -= d * ny;
+    tz -= d * nz;
+    t = Math.hypot(tx, ty, tz);
+  }
+  tx /= t;
+  ty /= t;
+  tz /= t;
+  out[0] = w0 * positions[i0] + w1 * positions[i1] + w2 * positions[i2];
+  out[1] = w0 * positions[i0 + 1] + w1 * positions[i1 + 1] + w2 * positions[i2 + 1];
+  out[2] = w0 * positions[i0 + 2] + w1 * positions[i1 + 2] + w2 * positions[i2 + 2];
+  out[3] = tx;
+  out[4] = ty;
+  out[5] = tz;
+  out[6] = ny * tz - nz * ty;
+  out[7] = nz * tx - nx * tz;
+  out[8] = nx * ty - ny * tx;
+  out[9] = nx;
+  out[10] = ny;
+  out[11] = nz;
+}
+
+const frame = new Float64Array(12);
+
+/**
+ * Poses the first `count` hairs on a skin (positions and normals, xyz per render vertex): writes each ribbon
+ * vertex's position, and the anchor's normal as every vertex's normal (a hair is lit as the skin it lies on).
+ * Allocates nothing: it runs at every new skin frame.
+ */
+export function poseHair(
+  h: HairStrands,
+  positions: ArrayLike<number>,
+  normals: ArrayLike<number>,
+  outPositions: Float32Array,
+  outNormals: Float32Array,
+  count = h.count,
+): void {
+  const per = h.verticesPerHair;
+  const local = h.local;
+  for (let hair = 0; hair < count; hair++) {
+    anchorFrame(h, hair, positions, normals, frame);
+    const ax = frame[0], ay = frame[1], az = frame[2];
+    const tx = frame[3], ty = frame[4], tz = frame[5];
+    const bx = frame[6], by = frame[7], bz = frame[8];
+    const nx = frame[9], ny = frame[10], nz = frame[11];
+    const end = 3 * (hair + 1) * per;
+    for (let o = 3 * hair * per; o < end; o += 3) {
+      const lt = local[o], lb = local[o + 1], ln = local[o + 2];
+      outPositions[o] = ax + lt * tx + lb * bx + ln * nx;
+      outPositions[o + 1] = ay + lt * ty + lb * by + ln * ny;
+      outPositions[o + 2] = az + lt * tz + lb * bz + ln * nz;
+      outNormals[o] = nx;
+      outNormals[o + 1] = ny;
+      outNormals[o + 2] = nz;
+    }
+  }
+}
+
+/**
+ * Builds strands from hairs given in world space at rest: each hair's anchor (triangle and weights) and its ribbon's
+ * vertices (`verticesPerHair` xyz each, root pair first), expressed in the anchor's frame on the rest skin.
+ */
+export function strandsAtRest(
+  rest: { positions: ArrayLike<number>; normals: ArrayLike<number> },
+  hairs: readonly { corners: readonly [number, number, number]; weights: readonly [number, number, number]; vertices: ArrayLike<number>; shade: ArrayLike<number> }[],
+  verticesPerHair: number,
+  ribbon: readonly (readonly [number, number, number])[],
+): HairStrands {
+  const count = hairs.length;
+  const h: HairStrands = {
+    count,
+    verticesPerHair,
+    corners: new Uint32Array(3 * count),
+    weights: new Float32Array(3 * count),
+    local: new Float32Array(3 * count * verticesPerHair),
+    shade: new Float32Array(count * verticesPerHair),
+    indices: new Uint32Array(3 * count * ribbon.length),
+  };
+  hairs.forEach((hair, k) => {
+    h.corners.set(hair.corners, 3 * k);
+    h.weights.set(hair.weights, 3 * k);
+    h.shade.set(hair.shade, k * verticesPerHair);
+  });
+  const f = new Float64Array(12);
+  hairs.forEach((hair, k) => {
+    anchorFrame(h, k, rest.positions, rest.normals, f);
+    for (let v = 0; v < verticesPerHair; v++) {
+      const dx = hair.vertices[3 * v] - f[0], dy = hair.vertices[3 * v + 1] - f[1], dz = hair.vertices[3 * v + 2] - f[2];
+      const o = 3 * (k * verticesPerHair + v);
+      h.local[o] = dx * f[3] + dy * f[4] + dz * f[5];
+      h.local[o + 1] = dx * f[6] + dy * f[7] + dz * f[8];
+      h.local[o + 2] = dx * f[9] + dy * f[10] + dz * f[11];
+    }
+    ribbon.forEach((tri, i) => h.indices.set([k * verticesPerHair + tri[0], k * verticesPerHair + tri[1], k * verticesPerHair + tri[2]], 3 * (k * ribbon.length + i)));
+  });
+  return h;
+}
+
+/** The triangles of a ribbon of `points` points along a hair (vertices 2p and 2p + 1 across it at point p). */
+export function ribbonTriangles(points: number): [number, number, number][] {
+  const out: [number, number, number][] = [];
+  for (let p = 0; p + 1 < points; p++) {
+    const a = 2 * p;
+    out.push([a, a + 1, a + 2], [a + 1, a + 3, a + 2]);
+  }
+  return out;
+}
