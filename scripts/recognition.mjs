@@ -1,0 +1,224 @@
+/**
+ * An automatic expression recogniser for the app's renders, shared by `npm run recognize` (scripts/recognize.mjs)
+ * and the presets' browser test (e2e/recognition.spec.ts.pending): @vladmandic/face-api's SSD MobileNet v1 finds the
+ * face and FaceExpressionNet reads the detector's crop of it as one of 7 classes (neutral, happy, sad, angry,
+ * fearful, disgusted, surprised), in headless Chromium with tfjs's cpu backend.
+ *
+ * The recogniser's page, face-api's browser bundle and its weights are served from node_modules by a small HTTP
+ * server on 127.0.0.1 (a free port): nothing is copied into the repository or fetched from the internet. The
+ * recogniser runs in a page of its own, so that its tensors stay out of the page being measured (which, cross-origin
+ * isolated, could not load scripts from another origin anyway).
+ *
+ *   await showExpression(page, 'happiness');             // the app's page: settled from the neutral face
+ *   const png = await renderView(page, -30);             // PNG bytes, camera turned 30° to the viewer's left
+ *   const recognizer = await startRecognizer(browser);   // a Playwright Browser or BrowserContext
+ *   const { top, probability, expressions } = await recognizer.recognize(png);
+ *   await recognizer.close();
+ *
+ * Why these choices: SSD MobileNet found the face in every render (front and 30° to either side, score 0.91 or more
+ * at 512 and 900 px); TinyFaceDetector missed most views from the subject's left at its usual input sizes. tfjs's
+ * cpu backend needs no GPU and gives the same numbers on every run; its webgl backend (SwiftShader here) gave the same
+ * probabilities about twice as fast, and is an option. The wasm backend would need its .wasm files from another
+ * package.
+ */
+import { createReadStream } from 'node:fs';
+import { createServer } from 'node:http';
+import { createRequire } from 'node:module';
+import { dirname, join } from 'node:path';
+
+/** FaceExpressionNet's classes, in its output order. */
+export const LABELS = ['neutral', 'happy', 'sad', 'angry', 'fearful', 'disgusted', 'surprised'];
+
+/** The class each prototype (and the neutral face) is meant to read as; contempt has none. */
+const EMOTION_LABELS = {
+  neutral: 'neutral',
+  happiness: 'happy',
+  sadness: 'sad',
+  anger: 'angry',
+  fear: 'fearful',
+  disgust: 'disgusted',
+  surprise: 'surprised',
+  contempt: null,
+  // The thesis's laughing is a strong happiness.
+  laughing: 'happy',
+};
+
+/**
+ * The class `preset` (a preset's name, or `neutral`) is meant to read as: the prototypes by their emotion, each
+ * `thesis-X` like X, `thesis-laughing` as happy; null for contempt, which the recogniser has no class for, and for a
+ * name that says no emotion.
+ */
+export function meantLabel(preset) {
+  const emotion = preset.startsWith('thesis-') ? preset.slice('thesis-'.length) : preset;
+  return EMOTION_LABELS[emotion] ?? null;
+}
+
+/** The camera views: front, and turned 30° to the viewer's left (the subject's right) and right. */
+export const VIEWS = [
+  { view: 'front', yaw: 0 },
+  { view: 'left30', yaw: -30 },
+  { view: 'right30', yaw: 30 },
+];
+
+/** The page's panel column and status bar would cover part of the face (and be read as part of it). */
+export const HIDE_PANELS_CSS = '.softface-panels, #status { display: none !important; }';
+
+/**
+ * Shows `preset` (or `neutral`) at full intensity in the app's `page`, started from the settled neutral face, and
+ * waits until the skin settles; resolves to whether it did within `timeoutMs`. Starting from rest matters: the skin
+ * may settle to a slightly different shape from another expression, and that moved the recogniser's answer (happiness
+ * 0.95 happy from rest, 0.84 from fear).
+ */
+export async function showExpression(page, preset, timeoutMs = 60_000) {
+  return page.evaluate(
+    async ({ preset, timeoutMs }) => {
+      const face = window.face;
+      try {
+        face.reset();
+        await face.settle(timeoutMs);
+        if (preset !== 'neutral') face.applyPreset(preset, 1);
+        await face.settle(timeoutMs);
+        return true;
+      } catch {
+        return false;
+      }
+    },
+    { preset, timeoutMs },
+  );
+}
+
+/**
+ * A PNG of the app's canvas with the camera turned `yaw` degrees round the head (pitch 0, the default distance), as
+ * `face.savePNG` draws it: always at full resolution, where the page's own frames may still be at the lower
+ * resolution of a moving face. Resolves to its bytes (a Buffer).
+ */
+export async function renderView(page, yaw) {
+  const dataUrl = await page.evaluate(async (yaw) => {
+    const face = window.face;
+    face.setCamera({ yaw, pitch: 0, distance: 1 });
+    const blob = await face.savePNG();
+    return new Promise((resolve, reject) => {
+      const reader = new FileReader();
+      reader.onload = () => resolve(reader.result);
+      reader.onerror = () => reject(reader.error);
+      reader.readAsDataURL(blob);
+    });
+  }, yaw);
+  return Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64');
+}
+
+const faceApiDir = dirname(createRequire(import.meta.url).resolve('@vladmandic/face-api/package.json'));
+
+/** The installed face-api's version (for the results' record). */
+export const FACE_API_VERSION = createRequire(import.meta.url)('@vladmandic/face-api/package.json').version;
+
+/** What the recogniser's page may ask for: the browser bundle (tfjs inside) and the networks' weights. */
+const FILES = {
+  '/face-api.esm.js': { file: join(faceApiDir, 'dist', 'face-api.esm.js'), type: 'text/javascript' },
+};
+for (const model of ['ssd_mobilenetv1_model', 'tiny_face_detector_model', 'face_expression_model']) {
+  FILES[`/model/${model}-weights_manifest.json`] = { file: join(faceApiDir, 'model', `${model}-weights_manifest.json`), type: 'application/json' };
+  FILES[`/model/${model}.bin`] = { file: join(faceApiDir, 'model', `${model}.bin`), type: 'application/octet-stream' };
+}
+const PAGE = `<!doctype html>
+<meta charset="utf-8">
+<title>recogniser</title>
+<script type="module">
+  import * as faceapi from './face-api.esm.js';
+  window.faceapi = faceapi;
+  document.documentElement.dataset.state = 'loaded';
+</script>
+`;
+
+/** Serves the recogniser's page and files on 127.0.0.1 at a free port; resolves to its URL and a close function. */
+async function serve() {
+  const server = createServer((req, res) => {
+    const path = new URL(req.url ?? '/', 'http://localhost').pathname;
+    if (path === '/') {
+      res.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' }).end(PAGE);
+      return;
+    }
+    const entry = FILES[path];
+    if (!entry) {
+      res.writeHead(404).end();
+      return;
+    }
+    res.writeHead(200, { 'Content-Type': entry.type });
+    createReadStream(entry.file).pipe(res);
+  });
+  await new Promise((resolve, reject) => server.once('error', reject).listen(0, '127.0.0.1', resolve));
+  const { port } = server.address();
+  return {
+    url: `http://127.0.0.1:${port}/`,
+    close: () =>
+      new Promise((resolve) => {
+        // The browser keeps its connections open; closing only the listener would wait for them to time out.
+        server.closeAllConnections();
+        server.close(() => resolve());
+      }),
+  };
+}
+
+/**
+ * The recogniser's settings. `detector`: 'ssd' (SSD MobileNet v1) or 'tiny' (TinyFaceDetector, input 416);
+ * `minScore`: the least detection score taken as a face (face-api's default for SSD); `backend`: tfjs's, 'cpu' or
+ * 'webgl'.
+ */
+export const DEFAULTS = Object.freeze({ detector: 'ssd', minScore: 0.5, backend: 'cpu' });
+
+/**
+ * Opens the recogniser in a new page of `browser` (a Playwright Browser or BrowserContext) and loads its networks.
+ * `recognize(png)` takes PNG bytes and resolves to `{ detected, score, box, top, probability, expressions }`: the
+ * detection's score and box (pixels), the top class and its probability, and every class's probability; with no face
+ * found, `detected` is false and the rest null.
+ */
+export async function startRecognizer(browser, options = {}) {
+  const settings = { ...DEFAULTS, ...options };
+  if (!['ssd', 'tiny'].includes(settings.detector)) throw new Error(`detector must be ssd or tiny, got ${settings.detector}`);
+  if (!['cpu', 'webgl'].includes(settings.backend)) throw new Error(`backend must be cpu or webgl, got ${settings.backend}`);
+  const server = await serve();
+  let page;
+  try {
+    page = await browser.newPage();
+    await page.goto(server.url);
+    await page.waitForFunction(() => document.documentElement.dataset.state === 'loaded', null, { timeout: 60_000 });
+    await page.evaluate(async ({ backend, detector }) => {
+      const faceapi = window.faceapi;
+      if (!(await faceapi.tf.setBackend(backend))) throw new Error(`tfjs could not start its ${backend} backend`);
+      await faceapi.tf.ready();
+      const net = detector === 'ssd' ? faceapi.nets.ssdMobilenetv1 : faceapi.nets.tinyFaceDetector;
+      await Promise.all([net.loadFromUri('./model'), faceapi.nets.faceExpressionNet.loadFromUri('./model')]);
+    }, settings);
+  } catch (error) {
+    await page?.close();
+    await server.close();
+    throw error;
+  }
+  return {
+    settings,
+    async recognize(png) {
+      return page.evaluate(
+        async ({ data, detector, minScore }) => {
+          const faceapi = window.faceapi;
+          const image = new Image();
+          image.src = `data:image/png;base64,${data}`;
+          await image.decode();
+          const options =
+            detector === 'ssd' ? new faceapi.SsdMobilenetv1Options({ minConfidence: minScore }) : new faceapi.TinyFaceDetectorOptions({ inputSize: 416, scoreThreshold: minScore });
+          // face-api's own pipeline: the detector's box, cut from the image, is what FaceExpressionNet reads.
+          const result = await faceapi.detectSingleFace(image, options).withFaceExpressions();
+          if (!result) return { detected: false, score: null, box: null, top: null, probability: null, expressions: null };
+          const { x, y, width, height } = result.detection.box;
+          const expressions = Object.fromEntries(Object.entries(result.expressions).filter(([, p]) => typeof p === 'number'));
+          const [top, probability] = Object.entries(expressions).sort((a, b) => b[1] - a[1])[0];
+          return { detected: true, score: result.detection.score, box: { x, y, width, height }, top, probability, expressions };
+        },
+        { data: Buffer.from(png).toString('base64'), ...settings },
+      );
+    },
+    async close() {
+      await page.close();
+      await server.close();
+    },
+  };
+}
