@@ -39,19 +39,20 @@ const RIBBON = ribbonTriangles(POINTS);
 /**
  * The brow's shape in units of the eye's width L, measured from the inner eye corner along the eye (u) and up (v):
  * from its head a little inside the inner corner to its tail past the outer one, its lower edge rising to the arch
- * two thirds of the way out and falling to the tail, thick at the head and thin at the tail (Farkas's facial
- * proportions: the brow's lower edge about half an eye width above the corners).
+ * two thirds of the way out and falling to the tail, thickest at the head and thin at the tail; the head and the tail
+ * at about one height, the arch a quarter eye width above them (the usual proportions: the brow's lower edge about half
+ * an eye width above the corners, its peak two thirds of the way out).
  */
 const BROW = {
   hairs: 520,
   uStart: -0.12,
   uEnd: 1.22,
-  lowHead: 0.5,
-  lowArch: 0.63,
-  lowTail: 0.5,
+  lowHead: 0.52,
+  lowArch: 0.64,
+  lowTail: 0.52,
   archAt: 0.62,
-  thickHead: 0.33,
-  thickArch: 0.22,
+  thickHead: 0.24,
+  thickArch: 0.2,
   thickTail: 0.07,
   /** Hair length in L at the head and along the body, and the share each hair differs by. */
   lengthHead: 0.15,
@@ -67,11 +68,13 @@ const BROW = {
 
 /** Lash counts per eye, lengths in L, widths and the angles the lashes leave the lid at and curl to (degrees from forward). */
 const LASHES = {
-  upper: 110,
-  lower: 40,
+  upper: 140,
+  lower: 30,
   upperLength: 0.26,
-  lowerLength: 0.12,
-  width: 0.0002,
+  lowerLength: 0.09,
+  /** Ribbon width at the root, upper and lower lashes (m): wide enough that the dense roots make the lid's dark line. */
+  width: 0.0003,
+  lowerWidth: 0.00015,
   upperRootAngle: 22,
   upperTipAngle: 68,
   /** Lower lashes lie along the lid, down its front, standing off it by this much at the root and at the tip (m). */
@@ -80,8 +83,8 @@ const LASHES = {
   /** How far the lash roots sit from the margin the rays find, in metres (rows spread over this much again). */
   /** Where along the eye (in eye widths from the inner corner) the lashes start. */
   start: 0.12,
-  rootInset: 0.00012,
-  rows: 0.0003,
+  rootInset: 0.0001,
+  rows: 0.0002,
   /** The least gap between a lash's root and an eyeball; the lid's margin itself tucks a little under the eye's surface. */
   eyeGap: 0.0002,
   seed: 0x1a5e,
@@ -217,14 +220,15 @@ export function placeBrows(surface: HairSurface, landmarks: HairLandmarks, caste
       // Fewer hairs toward the edges: a soft outline, as a brow has.
       const s = (a - BROW.uStart) / (BROW.uEnd - BROW.uStart);
       const edge = Math.min(r, 1 - r) * band.thick;
-      const keep = smooth(edge / 0.06 + 0.35) * smooth(s / 0.04) * smooth((1 - s) / 0.08);
+      // The head's upright hairs grow sparser than the body's.
+      const keep = smooth(edge / 0.06 + 0.35) * smooth(s / 0.04) * smooth((1 - s) / 0.08) * (s < 0.15 ? 0.55 + 0.45 * (s / 0.15) : 1);
       if (r < -0.15 || r > 1.15 || random() >= keep) continue;
       const [x0, y0] = at(e, a, b);
       if (!caster.cast(x0, y0, hit)) continue;
       // The hair's direction in the front view, in degrees from along the eye toward up: upright at the head,
       // turning to lie along the brow in its body and down a little at the tail; above and below the brow's middle
       // line hairs lean toward it (the herringbone of a real brow).
-      let angle = s < 0.12 ? 72 : s < 0.35 ? 72 - ((s - 0.12) / 0.23) * 52 : 20 - ((s - 0.35) / 0.65) * 32;
+      let angle = s < 0.1 ? 65 : s < 0.35 ? 65 - ((s - 0.1) / 0.25) * 45 : 20 - ((s - 0.35) / 0.65) * 32;
       if (s > 0.25) angle += (0.5 - r) * 28;
       angle += (random() - 0.5) * 18;
       const rad = (angle * Math.PI) / 180;
@@ -417,7 +421,7 @@ export function placeLashes(
         }
         if (!line) continue;
         const laid: LaidHair = { ...anchor(surface, hit), vertices: new Float32Array(3 * VERTICES_PER_HAIR), shade: new Float32Array(VERTICES_PER_HAIR) };
-        ribbon(line, lateral, LASHES.width, 0.9 + 0.2 * random(), laid);
+        ribbon(line, lateral, lid === 'upper' ? LASHES.width : LASHES.lowerWidth, 0.9 + 0.2 * random(), laid);
         hairs.push(laid);
       }
     }
