@@ -15,10 +15,13 @@
  *   --detector ssd|tiny   the face detector (default ssd; see recognition.mjs)
  *   --backend cpu|webgl   tfjs's backend (default cpu)
  *   --images DIR          also write each render to DIR/<preset>_<view>.png
+ *   --sheet FILE          also write a sheet (JPEG, or PNG if FILE ends in .png) of neutral and the seven prototypes from the front, each labelled
+ *                         with what it is meant to show and what the recogniser read
  *   --no-build            serve the last build (dist/) as it is
  */
 import { spawn, execSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname } from 'node:path';
 import { createServer } from 'node:net';
 import { cpus } from 'node:os';
 import { join } from 'node:path';
@@ -35,6 +38,11 @@ if (!['low', 'medium', 'high'].includes(resolution)) throw new Error(`the resolu
 const detector = option('detector', DEFAULTS.detector);
 const backend = option('backend', DEFAULTS.backend);
 const imagesDir = option('images', null);
+const sheetFile = option('sheet', null);
+/** The sheet's tiles: neutral and the seven prototypes, front view. */
+const SHEET_PRESETS = ['neutral', 'happiness', 'sadness', 'surprise', 'fear', 'anger', 'disgust', 'contempt'];
+/** The part of the 900 px picture the face fills, for the sheet's tiles. */
+const FACE_CROP = { x: 250, y: 230, width: 400, height: 520 };
 const SIZE = 900;
 const SETTLE_MS = 60_000;
 /** The prototypes the summary counts (contempt, with no class, is left out). */
@@ -55,6 +63,8 @@ const port = await freePort();
 const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(port), '--strictPort'], { stdio: 'ignore', detached: true });
 const browser = await launchBrowser();
 const rows = [];
+/** Front renders kept for the sheet, by preset. */
+const fronts = new Map();
 try {
   const recognizer = await startRecognizer(browser, { detector, backend });
   const page = await browser.newPage({ viewport: { width: SIZE, height: SIZE } });
@@ -70,6 +80,7 @@ try {
       const png = await renderView(page, yaw);
       if (imagesDir) writeFileSync(join(imagesDir, `${preset}_${view}.png`), png);
       const r = await recognizer.recognize(png);
+      if (sheetFile && view === 'front' && SHEET_PRESETS.includes(preset)) fronts.set(preset, { png, r, meant });
       const row = {
         preset,
         view,
@@ -88,6 +99,46 @@ try {
     }
   }
   await recognizer.close();
+  if (sheetFile) {
+    const tiles = SHEET_PRESETS.filter((n) => fronts.has(n)).map((n) => {
+      const { png, r, meant } = fronts.get(n);
+      const read = r.detected ? `${r.top} ${r.probability.toFixed(2)}` : 'no face found';
+      const label = meant === null ? `read: ${read} (no class for it)` : `read: ${read}${r.top === meant ? '' : ` (${meant} ${(r.expressions?.[meant] ?? 0).toFixed(2)})`}`;
+      return { name: n, label, hit: meant !== null && r.top === meant, data: png.toString('base64') };
+    });
+    const jpeg = await page.evaluate(
+      async ({ tiles, crop, type }) => {
+        const columns = 4;
+        const head = 28;
+        const foot = 26;
+        const canvas = document.createElement('canvas');
+        canvas.width = columns * crop.width;
+        canvas.height = Math.ceil(tiles.length / columns) * (crop.height + head + foot);
+        const ctx = canvas.getContext('2d');
+        ctx.fillStyle = '#1d2024';
+        ctx.fillRect(0, 0, canvas.width, canvas.height);
+        for (let i = 0; i < tiles.length; i++) {
+          const img = new Image();
+          img.src = `data:image/png;base64,${tiles[i].data}`;
+          await img.decode();
+          const x = (i % columns) * crop.width;
+          const y = Math.floor(i / columns) * (crop.height + head + foot);
+          ctx.drawImage(img, crop.x, crop.y, crop.width, crop.height, x, y + head, crop.width, crop.height);
+          ctx.font = 'bold 18px sans-serif';
+          ctx.fillStyle = '#e8e6e3';
+          ctx.fillText(tiles[i].name, x + 10, y + 20);
+          ctx.font = '15px sans-serif';
+          ctx.fillStyle = tiles[i].hit ? '#8fd18f' : '#e8a0a0';
+          ctx.fillText(tiles[i].label, x + 10, y + head + crop.height + 18);
+        }
+        return canvas.toDataURL(type, 0.85).split(',')[1];
+      },
+      { tiles, crop: FACE_CROP, type: sheetFile.endsWith('.png') ? 'image/png' : 'image/jpeg' },
+    );
+    mkdirSync(dirname(sheetFile), { recursive: true });
+    writeFileSync(sheetFile, Buffer.from(jpeg, 'base64'));
+    console.log(`wrote ${sheetFile}`);
+  }
 } finally {
   await browser.close();
   process.kill(-server.pid);
