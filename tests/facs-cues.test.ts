@@ -1,0 +1,49 @@
+import { beforeAll, describe, expect, it } from 'vitest';
+import { displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
+import { betweenBrows, foldAcrossOverAlong, innerBrowGap } from './fixtures/facs-cues';
+import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
+import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
+
+// The FACS appearance changes of the Action Units (FACS manual, Ekman, Friesen & Hager 2002) beyond each unit's main
+// move, on the medium head at full intensity, settled as the worker settles it (README, "How far each Action Unit
+// moves the face": the cue table).
+describe('Action Units show their FACS appearance changes, medium head', () => {
+  let sim: Awaited<ReturnType<typeof loadHeadSimulation>>;
+  let rest: Float32Array;
+  let normals: Float32Array;
+  let lm: FaceLandmarks;
+  let map: FoldMap;
+  /** Settles Action Units together at full intensity (`AU1+AU2+AU4`) and returns the skin's positions. */
+  const settle = (expression: string): Float32Array => {
+    sim.expression.reset();
+    for (const au of expression.split('+')) sim.expression.setActionUnit(au, 1);
+    sim.host.solver.buffers.positions.set(rest);
+    sim.apply();
+    let frames = 0;
+    while (frames < MAX_SETTLE_FRAMES && sim.host.step()) frames++;
+    expect(sim.host.solver.sleeping, `${expression} comes to rest`).toBe(true);
+    return Float32Array.from(sim.host.solver.buffers.positions);
+  };
+  beforeAll(async () => {
+    sim = await loadHeadSimulation('medium');
+    rest = sim.host.topology.rest;
+    normals = sim.host.topology.restNormals;
+    lm = faceLandmarks(rest, sim.triangles);
+    map = foldMap(rest, normals, sim.triangles);
+  });
+
+  it('AU4 lowers the brows and draws them together, furrows vertically between them and pushes the upper lid down a little', () => {
+    const x = settle('AU4');
+    // The inner brows closer by 3 mm or more in all (4.4 before the corrugator's origin moved to the midline, 6.6 now).
+    expect(innerBrowGap(lm, rest) - innerBrowGap(lm, x)).toBeGreaterThanOrEqual(3);
+    // The upper lid margin lower than at rest, a little (0.0 before AU4 relaxed the levator a little, 0.8 now).
+    const lidDown = -displacement(rest, x, lm.upperLid).up;
+    expect(lidDown).toBeGreaterThanOrEqual(0.3);
+    expect(lidDown).toBeLessThanOrEqual(2);
+    // Between the brows, folds that vary across more than along: vertical furrows (1.44 before, 2.0 now; AU1+AU2's
+    // horizontal forehead lines read 0.13 here).
+    const between = betweenBrows(map, rest, sim.triangles);
+    expect(foldDepth(map, between, rest, normals, x)).toBeGreaterThan(0.12);
+    expect(foldAcrossOverAlong(map, between, sim.triangles, rest, normals, x)).toBeGreaterThanOrEqual(1.5);
+  });
+});
