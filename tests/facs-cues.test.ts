@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
-import { betweenBrows, foldAcrossOverAlong, innerBrowGap } from './fixtures/facs-cues';
+import { betweenBrows, cueMarks, foldAcrossOverAlong, innerBrowGap, loadIrisTops, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
 import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
 
@@ -13,6 +13,7 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
   let normals: Float32Array;
   let lm: FaceLandmarks;
   let map: FoldMap;
+  let cues: CueMarks;
   /** Settles Action Units together at full intensity (`AU1+AU2+AU4`) and returns the skin's positions. */
   const settle = (expression: string): Float32Array => {
     sim.expression.reset();
@@ -30,6 +31,7 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     normals = sim.host.topology.restNormals;
     lm = faceLandmarks(rest, sim.triangles);
     map = foldMap(rest, normals, sim.triangles);
+    cues = cueMarks(rest, sim.triangles, await loadIrisTops('medium'));
   });
 
   it('AU4 lowers the brows and draws them together, furrows vertically between them and pushes the upper lid down a little', () => {
@@ -45,5 +47,12 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     const between = betweenBrows(map, rest, sim.triangles);
     expect(foldDepth(map, between, rest, normals, x)).toBeGreaterThan(0.12);
     expect(foldAcrossOverAlong(map, between, sim.triangles, rest, normals, x)).toBeGreaterThanOrEqual(1.5);
+  });
+
+  it('AU5 raises the upper lid clear of the iris: sclera shows above it in the pupil column', () => {
+    // At rest the lid covers the iris's top 2.1 mm.
+    expect(scleraAboveIris(cues, rest)).toBeLessThan(-1);
+    // 0.7 mm of sclera above the iris with AU5 (it held before the cue was measured).
+    expect(scleraAboveIris(cues, settle('AU5'))).toBeGreaterThanOrEqual(0.3);
   });
 });
