@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
-import { betweenBrows, cueMarks, foldAcrossOverAlong, innerBrowGap, loadIrisTops, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
+import { betweenBrows, cueMarks, foldAcrossOverAlong, innerBrowGap, loadIrisTops, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
 import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
 
@@ -54,5 +54,14 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     expect(scleraAboveIris(cues, rest)).toBeLessThan(-1);
     // 0.7 mm of sclera above the iris with AU5 (it held before the cue was measured).
     expect(scleraAboveIris(cues, settle('AU5'))).toBeGreaterThanOrEqual(0.3);
+  });
+
+  it('AU7 raises and straightens the lower lid and narrows the eye', () => {
+    const x = settle('AU7');
+    // The lower margin's sag below the chord of its ends: 1.8 mm at rest, 1.05 with AU7 (held before the cue was measured).
+    expect(lowerLidSag(lm, x)).toBeLessThanOrEqual(0.75 * lowerLidSag(lm, rest));
+    expect(displacement(rest, x, lm.lowerLid).up).toBeGreaterThan(1);
+    // The opening in the middle of the eye: 8.6 mm at rest, 4.7 with AU7.
+    expect(middleLidGap(lm, x)).toBeLessThanOrEqual(0.8 * middleLidGap(lm, rest));
   });
 });
