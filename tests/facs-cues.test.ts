@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
-import { betweenBrows, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, loadIrisTops, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
+import { ACTION_UNIT_MEASURES, displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
+import { betweenBrows, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, lipBulges, loadIrisTops, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
 import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
 
@@ -73,5 +73,34 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     // Horizontal lines in the forehead's middle (0.55 mm deep). FACS confines them to the middle; here the sides fold
     // as deep (0.63; README: not held yet).
     expect(foreheadMiddleAndSides(map, rest, normals, sim.triangles, x).middle).toBeGreaterThan(0.12);
+  });
+
+  it('AU20 stretches the lips sideways, the corners back and a little down', () => {
+    const corner = displacement(rest, settle('AU20'), lm.lipCorner);
+    // 7.4 mm out, 10.4 back (around the face's curve) and 2.0 down (held before the cue was measured).
+    expect(corner.lateral).toBeGreaterThanOrEqual(5);
+    expect(corner.forward).toBeLessThanOrEqual(-1);
+    expect(corner.up).toBeLessThanOrEqual(-0.3);
+    expect(corner.up).toBeGreaterThanOrEqual(-3);
+  });
+
+  it('AU23 narrows and tightens the red: narrower, the corners drawn in, not pushed out', () => {
+    const x = settle('AU23');
+    // 25 % narrower, corners 5.1 mm in, the lip centres 1.2 mm back (held before the cue was measured).
+    expect(ACTION_UNIT_MEASURES.AU23.read(lm, rest, x)).toBeGreaterThanOrEqual(20);
+    expect(displacement(rest, x, lm.lipCorner).lateral).toBeLessThanOrEqual(-1);
+    expect((displacement(rest, x, lm.upperLip).forward + displacement(rest, x, lm.lowerLip).forward) / 2).toBeLessThanOrEqual(0);
+  });
+
+  it('AU24 presses the lips together and the skin bulges a little above and below the red', () => {
+    const x = settle('AU24');
+    expect(ACTION_UNIT_MEASURES.AU24.read(lm, rest, x)).toBeGreaterThanOrEqual(10);
+    expect(ACTION_UNIT_MEASURES['AU24 forward'].read(lm, rest, x)).toBeLessThanOrEqual(0);
+    // Above 0.57 and below 0.02 mm before the pressor's zone was kept to the red (its height 16 -> 12.5 mm); 0.67 and 0.55 now.
+    const bulge = lipBulges(map, rest, normals, sim.triangles, x);
+    for (const b of [bulge.above, bulge.below]) {
+      expect(b).toBeGreaterThanOrEqual(0.2);
+      expect(b).toBeLessThanOrEqual(1.5);
+    }
   });
 });
