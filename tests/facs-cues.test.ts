@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { ACTION_UNIT_MEASURES, displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
-import { betweenBrows, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, lipBulges, loadIrisTops, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
+import { betweenBrows, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, lipBulges, loadIrisTops, nasolabialDeepening, noseSide, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
 import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
 
@@ -102,5 +102,24 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
       expect(b).toBeGreaterThanOrEqual(0.2);
       expect(b).toBeLessThanOrEqual(1.5);
     }
+  });
+
+  it("AU9 wrinkles the nose's sides and root, raises the nostril wings and deepens the nasolabial furrow", () => {
+    const x = settle('AU9');
+    // Fold depths 0.26 on the side, 0.13 at the root (0.12 is a visible crease); wings 4.8 mm up; the furrow 0.27 mm
+    // deeper in its upper half (all held before the cue was measured).
+    expect(foldDepth(map, noseSide(map, rest, sim.triangles), rest, normals, x)).toBeGreaterThan(0.12);
+    expect(foldDepth(map, map.regions.noseRoot, rest, normals, x)).toBeGreaterThan(0.12);
+    expect(displacement(rest, x, lm.noseWing).up).toBeGreaterThanOrEqual(3);
+    expect(nasolabialDeepening(map, rest, normals, sim.triangles, x).upper).toBeGreaterThanOrEqual(0.2);
+  });
+
+  it("AU10 raises the upper lip's centre and deepens the nasolabial furrow's upper part", () => {
+    const x = settle('AU10');
+    expect(displacement(rest, x, lm.upperLip).up).toBeGreaterThanOrEqual(4);
+    // 0.57 mm deeper in the upper half, 0.18 in the lower (held before the cue was measured).
+    const furrow = nasolabialDeepening(map, rest, normals, sim.triangles, x);
+    expect(furrow.upper).toBeGreaterThanOrEqual(0.3);
+    expect(furrow.upper).toBeGreaterThan(furrow.lower);
   });
 });
