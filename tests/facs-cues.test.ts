@@ -1,0 +1,133 @@
+import { beforeAll, describe, expect, it } from 'vitest';
+import { ACTION_UNIT_MEASURES, displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
+import { betweenBrows, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, lipBulges, loadIrisTops, nasolabialDeepening, noseSide, redRoughness, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
+import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
+import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
+
+// The FACS appearance changes of the Action Units (FACS manual, Ekman, Friesen & Hager 2002) beyond each unit's main
+// move, on the medium head at full intensity, settled as the worker settles it (README, "How far each Action Unit
+// moves the face": the cue table).
+describe('Action Units show their FACS appearance changes, medium head', () => {
+  let sim: Awaited<ReturnType<typeof loadHeadSimulation>>;
+  let rest: Float32Array;
+  let normals: Float32Array;
+  let lm: FaceLandmarks;
+  let map: FoldMap;
+  let cues: CueMarks;
+  /** Settles Action Units together at full intensity (`AU1+AU2+AU4`) and returns the skin's positions. */
+  const settle = (expression: string): Float32Array => {
+    sim.expression.reset();
+    for (const au of expression.split('+')) sim.expression.setActionUnit(au, 1);
+    sim.host.solver.buffers.positions.set(rest);
+    sim.apply();
+    let frames = 0;
+    while (frames < MAX_SETTLE_FRAMES && sim.host.step()) frames++;
+    expect(sim.host.solver.sleeping, `${expression} comes to rest`).toBe(true);
+    return Float32Array.from(sim.host.solver.buffers.positions);
+  };
+  beforeAll(async () => {
+    sim = await loadHeadSimulation('medium');
+    rest = sim.host.topology.rest;
+    normals = sim.host.topology.restNormals;
+    lm = faceLandmarks(rest, sim.triangles);
+    map = foldMap(rest, normals, sim.triangles);
+    cues = cueMarks(rest, sim.triangles, await loadIrisTops('medium'));
+  });
+
+  it('AU4 lowers the brows and draws them together, furrows vertically between them and pushes the upper lid down a little', () => {
+    const x = settle('AU4');
+    // The inner brows closer by 3 mm or more in all (4.4 before the corrugator's origin moved to the midline, 6.6 now).
+    expect(innerBrowGap(lm, rest) - innerBrowGap(lm, x)).toBeGreaterThanOrEqual(3);
+    // The upper lid margin lower than at rest, a little (0.0 before AU4 relaxed the levator a little, 0.8 now).
+    const lidDown = -displacement(rest, x, lm.upperLid).up;
+    expect(lidDown).toBeGreaterThanOrEqual(0.3);
+    expect(lidDown).toBeLessThanOrEqual(2);
+    // Between the brows, folds that vary across more than along: vertical furrows (1.44 before, 2.0 now; AU1+AU2's
+    // horizontal forehead lines read 0.13 here).
+    const between = betweenBrows(map, rest, sim.triangles);
+    expect(foldDepth(map, between, rest, normals, x)).toBeGreaterThan(0.12);
+    expect(foldAcrossOverAlong(map, between, sim.triangles, rest, normals, x)).toBeGreaterThanOrEqual(1.5);
+  });
+
+  it('AU5 raises the upper lid clear of the iris: sclera shows above it in the pupil column', () => {
+    // At rest the lid covers the iris's top 2.1 mm.
+    expect(scleraAboveIris(cues, rest)).toBeLessThan(-1);
+    // 0.7 mm of sclera above the iris with AU5 (it held before the cue was measured).
+    expect(scleraAboveIris(cues, settle('AU5'))).toBeGreaterThanOrEqual(0.3);
+  });
+
+  it('AU7 raises and straightens the lower lid and narrows the eye', () => {
+    const x = settle('AU7');
+    // The lower margin's sag below the chord of its ends: 1.8 mm at rest, 1.05 with AU7 (held before the cue was measured).
+    expect(lowerLidSag(lm, x)).toBeLessThanOrEqual(0.75 * lowerLidSag(lm, rest));
+    expect(displacement(rest, x, lm.lowerLid).up).toBeGreaterThan(1);
+    // The opening in the middle of the eye: 8.6 mm at rest, 4.7 with AU7.
+    expect(middleLidGap(lm, x)).toBeLessThanOrEqual(0.8 * middleLidGap(lm, rest));
+  });
+
+  it('AU1+AU2+AU4, the fear brow, raises the brows and draws them together at once', () => {
+    const x = settle('AU1+AU2+AU4');
+    // The inner brows 2.5 mm up and 5.1 mm closer together (held before the cue was measured: 2.8 and 4.0).
+    expect(displacement(rest, x, lm.innerBrow).up).toBeGreaterThanOrEqual(2);
+    expect(innerBrowGap(lm, rest) - innerBrowGap(lm, x)).toBeGreaterThanOrEqual(3);
+    // Horizontal lines in the forehead's middle (0.55 mm deep). FACS confines them to the middle; here the sides fold
+    // as deep (0.63; README: not held yet).
+    expect(foreheadMiddleAndSides(map, rest, normals, sim.triangles, x).middle).toBeGreaterThan(0.12);
+  });
+
+  it('AU20 stretches the lips sideways, the corners back and a little down', () => {
+    const corner = displacement(rest, settle('AU20'), lm.lipCorner);
+    // 7.4 mm out, 10.4 back (around the face's curve) and 2.0 down (held before the cue was measured).
+    expect(corner.lateral).toBeGreaterThanOrEqual(5);
+    expect(corner.forward).toBeLessThanOrEqual(-1);
+    expect(corner.up).toBeLessThanOrEqual(-0.3);
+    expect(corner.up).toBeGreaterThanOrEqual(-3);
+  });
+
+  it('AU23 narrows and tightens the red: narrower, the corners drawn in, not pushed out', () => {
+    const x = settle('AU23');
+    // 25 % narrower, corners 5.1 mm in, the lip centres 1.2 mm back (held before the cue was measured).
+    expect(ACTION_UNIT_MEASURES.AU23.read(lm, rest, x)).toBeGreaterThanOrEqual(20);
+    expect(displacement(rest, x, lm.lipCorner).lateral).toBeLessThanOrEqual(-1);
+    expect((displacement(rest, x, lm.upperLip).forward + displacement(rest, x, lm.lowerLip).forward) / 2).toBeLessThanOrEqual(0);
+  });
+
+  it('AU24 presses the lips together and the skin bulges a little above and below the red', () => {
+    const x = settle('AU24');
+    expect(ACTION_UNIT_MEASURES.AU24.read(lm, rest, x)).toBeGreaterThanOrEqual(10);
+    expect(ACTION_UNIT_MEASURES['AU24 forward'].read(lm, rest, x)).toBeLessThanOrEqual(0);
+    // Above 0.57 and below 0.02 mm before the pressor's zone was kept to the red (its height 16 -> 12.5 mm); 0.67 and 0.55 now.
+    const bulge = lipBulges(map, rest, normals, sim.triangles, x);
+    for (const b of [bulge.above, bulge.below]) {
+      expect(b).toBeGreaterThanOrEqual(0.2);
+      expect(b).toBeLessThanOrEqual(1.5);
+    }
+  });
+
+  it("AU9 wrinkles the nose's sides and root, raises the nostril wings and deepens the nasolabial furrow", () => {
+    const x = settle('AU9');
+    // Fold depths 0.26 on the side, 0.13 at the root (0.12 is a visible crease); wings 4.8 mm up; the furrow 0.27 mm
+    // deeper in its upper half (all held before the cue was measured).
+    expect(foldDepth(map, noseSide(map, rest, sim.triangles), rest, normals, x)).toBeGreaterThan(0.12);
+    expect(foldDepth(map, map.regions.noseRoot, rest, normals, x)).toBeGreaterThan(0.12);
+    expect(displacement(rest, x, lm.noseWing).up).toBeGreaterThanOrEqual(3);
+    expect(nasolabialDeepening(map, rest, normals, sim.triangles, x).upper).toBeGreaterThanOrEqual(0.2);
+  });
+
+  it("AU10 raises the upper lip's centre and deepens the nasolabial furrow's upper part", () => {
+    const x = settle('AU10');
+    expect(displacement(rest, x, lm.upperLip).up).toBeGreaterThanOrEqual(4);
+    // 0.57 mm deeper in the upper half, 0.18 in the lower (held before the cue was measured).
+    const furrow = nasolabialDeepening(map, rest, normals, sim.triangles, x);
+    expect(furrow.upper).toBeGreaterThanOrEqual(0.3);
+    expect(furrow.upper).toBeGreaterThan(furrow.lower);
+  });
+
+  it("AU17 raises the chin boss and leaves the lips' red smooth", () => {
+    const x = settle('AU17');
+    expect(displacement(rest, x, lm.chin).up).toBeGreaterThanOrEqual(4);
+    // No fold along the red shorter than about 5 mm: 0.00 mm (held before the cue was measured). AU15 (0.07) and AU16
+    // (0.16) fold the red near the corners: README, not held yet.
+    expect(redRoughness(map, rest, normals, sim.triangles, x).rms).toBeLessThan(0.06);
+  });
+});
