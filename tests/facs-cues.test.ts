@@ -34,6 +34,19 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     cues = cueMarks(rest, sim.triangles, await loadIrisTops('medium'));
   });
 
+  // The brows themselves, where their hair grows: the brow landmarks of the FACS table are on the profile a
+  // centimetre higher, which the frontalis and depressors moved more than the brows (AU1 raised the brow's head
+  // 2.2 mm, AU2 its tail 4.5, AU4 lowered its head 3.6 and drew it 0.4 toward the midline). The muscles' lower fibres
+  // now insert into the brow (thesis 4.5: a muscle per direction of pull, inserted where it moves the skin): 3.8, 6.1,
+  // 6.0 and 1.7 mm.
+  it('AU1, AU2 and AU4 move the brows themselves, where their hair grows, visibly', () => {
+    expect(displacement(rest, settle('AU1'), lm.browHead).up).toBeGreaterThanOrEqual(3);
+    expect(displacement(rest, settle('AU2'), lm.browTail).up).toBeGreaterThanOrEqual(4);
+    const lowered = displacement(rest, settle('AU4'), lm.browHead);
+    expect(-lowered.up).toBeGreaterThanOrEqual(3);
+    expect(-lowered.lateral).toBeGreaterThanOrEqual(1.5);
+  });
+
   it('AU4 lowers the brows and draws them together, furrows vertically between them and pushes the upper lid down a little', () => {
     const x = settle('AU4');
     // The inner brows closer by 3 mm or more in all (4.4 before the corrugator's origin moved to the midline, 6.6 now).

@@ -117,16 +117,16 @@ describe('ExpressionState presets', () => {
   it('adds weighted presets to the sliders and clamps the sum (happiness + surprise)', () => {
     const s = new ExpressionState(DEFAULT_RIG.presets);
     s.applyPreset('happiness', 1); // AU6 0.8, AU12 0.9
-    s.applyPreset('surprise', 0.5); // AU1 0.8, AU2 0.8, AU5 0.2, AU26 0.6
+    s.applyPreset('surprise', 0.5); // AU1 1, AU2 1, AU5 0.2, AU26 0.8
     s.setActionUnit('AU12L', 0.5);
     s.setActionUnit('AU26', 0.1);
     const e = s.effective();
     expect(e.AU12L).toBe(1); // 0.5 + 0.9, clamped
     expect(e.AU12R).toBeCloseTo(0.9, 12);
     expect(e.AU6L).toBeCloseTo(0.8, 12);
-    expect(e.AU1R).toBeCloseTo(0.4, 12);
+    expect(e.AU1R).toBeCloseTo(0.5, 12);
     expect(e.AU5L).toBeCloseTo(0.1, 12);
-    expect(e.AU26).toBeCloseTo(0.4, 12); // 0.1 + 0.5 x 0.6
+    expect(e.AU26).toBeCloseTo(0.5, 12); // 0.1 + 0.5 x 0.8
     expect(e.AU15L).toBe(0);
     expect(s.getActionUnits().AU12R).toBe(0); // sliders stay what was set
   });
