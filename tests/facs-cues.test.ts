@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { ACTION_UNIT_MEASURES, displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
-import { betweenBrows, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, lipBulges, loadIrisTops, nasolabialDeepening, noseSide, redRoughness, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
+import { betweenBrows, crowsFeetFan, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, lidMarginRoughness, lipBulges, loadIrisTops, nasolabialDeepening, noseSide, redRoughness, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
 import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
 
@@ -142,5 +142,19 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     // No fold along the red shorter than about 5 mm: 0.00 mm (held before the cue was measured). AU15 (0.07) and AU16
     // (0.16) fold the red near the corners: README, not held yet.
     expect(redRoughness(map, rest, normals, sim.triangles, x).rms).toBeLessThan(0.06);
+  });
+
+  it("AU6 fans two to four crow's feet longer than 8 mm from the outer eye corner and leaves the lids' margins uncrumpled", () => {
+    const x = settle('AU6');
+    // Lines 12 and 8 mm long, then 7 and 3 (11 and 8, then 7, 3 and 2, before the lids were kept out of the orbital ring).
+    const long = crowsFeetFan(map, rest, normals, sim.triangles, x).filter((length) => length >= 8).length;
+    expect(long).toBeGreaterThanOrEqual(2);
+    expect(long).toBeLessThanOrEqual(4);
+    // Along lines 1.5 to 4.5 mm outside the margins, no folds across them: 0.08 (upper, at the inner corner) and 0.08
+    // (lower) before the orbital ring was kept off the lids, 0.03 and 0.03 now (below 0.06, smooth as the fold tests
+    // read it).
+    const lids = lidMarginRoughness(map, lm, rest, normals, x);
+    expect(lids.upper).toBeLessThan(0.06);
+    expect(lids.lower).toBeLessThan(0.06);
   });
 });
