@@ -579,8 +579,10 @@ export class HeadView {
     const head = this.head;
     if (!head) return;
     const wireframe = this.render.wireframe;
+    // The hair keeps its look: ribbons drawn as their edges would turn the lashes into black blots.
+    const hair = new Set(head.hair?.meshes().map((m) => m.mesh));
     head.root.traverse((o) => {
-      if (!(o instanceof Mesh)) return;
+      if (!(o instanceof Mesh) || hair.has(o)) return;
       const materials = Array.isArray(o.material) ? o.material : [o.material];
       for (const m of materials) if ('wireframe' in m && m.wireframe !== wireframe) {
         m.wireframe = wireframe;
