@@ -53,13 +53,12 @@ export interface FaceCrop {
 }
 
 /**
- * Screenshots the page (after a few frames, so the newest skin is drawn) and measures the face: the box of
- * non-background pixels left of the panel column, narrowed to its middle (the face, without ears and neck). Pass an
- * earlier crop's `rect` to measure the same pixels again.
+ * Screenshots the page once the picture stands still and measures the face: the box of non-background pixels left of
+ * the panel column, narrowed to its middle (the face, without ears and neck). Pass an earlier crop's `rect` to
+ * measure the same pixels again.
  */
 export async function faceCrop(page: Page, rect?: FaceCrop['rect'], panelLeft = 700): Promise<FaceCrop> {
-  await page.waitForTimeout(400);
-  const png = await page.screenshot();
+  const png = await stillScreenshot(page);
   return measurePNG(
     page,
     png,
@@ -127,4 +126,22 @@ export function pictureDifference(a: FaceCrop, b: FaceCrop): number {
   let s = 0;
   for (let i = 0; i < a.grey.length; i++) s += Math.abs(a.grey[i] - b.grey[i]);
   return s / a.grey.length;
+}
+
+/**
+ * A screenshot of the page once two in a row, 150 ms apart, are the same to the byte: the face at rest is drawn only
+ * when something changed, and a change is first drawn at a lower resolution where draws are slow (software WebGL),
+ * then again at full resolution once nothing new has come for a while. A fixed wait before one screenshot caught the
+ * lower one now and then.
+ */
+export async function stillScreenshot(page: Page, options: { clip?: { x: number; y: number; width: number; height: number } } = {}, timeoutMs = 30_000): Promise<Buffer> {
+  const end = Date.now() + timeoutMs;
+  let last = await page.screenshot(options);
+  for (;;) {
+    await page.waitForTimeout(150);
+    const next = await page.screenshot(options);
+    if (next.equals(last)) return next;
+    if (Date.now() > end) throw new Error(`stillScreenshot: the picture still changed after ${timeoutMs} ms`);
+    last = next;
+  }
 }

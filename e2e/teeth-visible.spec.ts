@@ -1,6 +1,7 @@
 import type { Page } from '@playwright/test';
 import { openFace } from './face';
 import { expect, measurePNG, test } from './fixtures';
+import { stillScreenshot } from './panels';
 
 interface Box {
   x: number;
@@ -41,8 +42,7 @@ async function mouthBox(page: Page): Promise<Box> {
  * tongue are far redder).
  */
 async function toothPixels(page: Page, box: Box): Promise<{ count: number; total: number }> {
-  await page.waitForTimeout(300);
-  const png = await page.screenshot({ clip: box });
+  const png = await stillScreenshot(page, { clip: box });
   return measurePNG(page, png, ({ pixels }) => {
     const d = pixels.data;
     let count = 0;
