@@ -26,6 +26,8 @@ export interface RecognizerSettings {
   detector: 'ssd' | 'tiny';
   minScore: number;
   backend: 'cpu' | 'webgl';
+  /** 'aligned': the cut around the 68 landmarks; 'box': the detector's box. */
+  crop: 'aligned' | 'box';
 }
 export declare const DEFAULTS: Readonly<RecognizerSettings>;
 

@@ -14,6 +14,7 @@
  *   --markdown            print the Markdown table too
  *   --detector ssd|tiny   the face detector (default ssd; see recognition.mjs)
  *   --backend cpu|webgl   tfjs's backend (default cpu)
+ *   --crop aligned|box    what FaceExpressionNet reads: the detector's box (default) or the cut around the 68 landmarks
  *   --images DIR          also write each render to DIR/<preset>_<view>.png
  *   --sheet FILE          also write a sheet (JPEG, or PNG if FILE ends in .png) of neutral and the seven prototypes from the front, each labelled
  *                         with what it is meant to show and what the recogniser read
@@ -37,6 +38,7 @@ const resolution = args[0] && !args[0].startsWith('--') ? args[0] : 'medium';
 if (!['low', 'medium', 'high'].includes(resolution)) throw new Error(`the resolution must be low, medium or high, got ${resolution}`);
 const detector = option('detector', DEFAULTS.detector);
 const backend = option('backend', DEFAULTS.backend);
+const crop = option('crop', DEFAULTS.crop);
 const imagesDir = option('images', null);
 const sheetFile = option('sheet', null);
 /** The sheet's tiles: neutral and the seven prototypes, front view. */
@@ -66,7 +68,7 @@ const rows = [];
 /** Front renders kept for the sheet, by preset. */
 const fronts = new Map();
 try {
-  const recognizer = await startRecognizer(browser, { detector, backend });
+  const recognizer = await startRecognizer(browser, { detector, backend, crop });
   const page = await browser.newPage({ viewport: { width: SIZE, height: SIZE } });
   // Tried again while the server starts.
   await openApp(page, `http://127.0.0.1:${port}/?resolution=${resolution}`, { timeout: 120_000, retries: 51, retryMs: 200 });
@@ -172,7 +174,7 @@ const table = [
   ...rows.map((r) => [r.preset + (r.settled ? '' : ' (not settled)'), r.view, r.detected ? r.top : 'no face', p(r.probability), r.meant ?? '—', p(r.meantProbability)]),
 ];
 const widths = table[0].map((_, c) => Math.max(...table.map((row) => row[c].length)));
-console.log(`\nRecognition: ${resolution} head, ${SIZE} x ${SIZE} px, face-api ${FACE_API_VERSION} (${detector} detector, FaceExpressionNet, tfjs ${backend})\n`);
+console.log(`\nRecognition: ${resolution} head, ${SIZE} x ${SIZE} px, face-api ${FACE_API_VERSION} (${detector} detector, ${crop} crop, FaceExpressionNet, tfjs ${backend})\n`);
 console.log(table.map((row) => row.map((cell, c) => cell.padEnd(widths[c])).join('  ')).join('\n'));
 const g = (x, n) => `${x.frontHits} of ${n} in front, ${x.allViewsHits} of ${n} in all three views, ${x.viewHits} of ${x.views} views; mean p(meant) ${p(x.meanMeantProbability)}`;
 const neutralLine = neutralRows.map((r) => `${r.view} ${hit(r) ? 'yes' : `no (${r.top})`} ${p(r.meantProbability)}`).join(', ');
@@ -208,7 +210,7 @@ const seconds = (performance.now() - started) / 1000;
 console.log(`\n${rows.length} renders in ${Math.round(seconds)} s`);
 mkdirSync('bench-results', { recursive: true });
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length };
-const recogniser = { faceApi: FACE_API_VERSION, detector, backend, expression: 'FaceExpressionNet', minScore: DEFAULTS.minScore };
+const recogniser = { faceApi: FACE_API_VERSION, detector, crop, backend, expression: 'FaceExpressionNet', minScore: DEFAULTS.minScore };
 writeFileSync(
   'bench-results/recognition.json',
   JSON.stringify({ machine, date: new Date().toISOString(), resolution, size: SIZE, recogniser, seconds, summary, rows }, null, 2) + '\n',

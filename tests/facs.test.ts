@@ -116,17 +116,20 @@ describe('ExpressionState sliders', () => {
 describe('ExpressionState presets', () => {
   it('adds weighted presets to the sliders and clamps the sum (happiness + surprise)', () => {
     const s = new ExpressionState(DEFAULT_RIG.presets);
-    s.applyPreset('happiness', 1); // AU6 0.8, AU12 0.9
-    s.applyPreset('surprise', 0.5); // AU1 1, AU2 1, AU5 0.2, AU26 0.8
+    const amount = (preset: string, au: string): number => DEFAULT_RIG.presets.find((p) => p.name === preset)?.actionUnits[au] ?? 0;
+    const happy12 = amount('happiness', 'AU12');
+    expect(happy12).toBeGreaterThan(0.5); // so that 0.5 + it clamps
+    s.applyPreset('happiness', 1);
+    s.applyPreset('surprise', 0.5);
     s.setActionUnit('AU12L', 0.5);
     s.setActionUnit('AU26', 0.1);
     const e = s.effective();
-    expect(e.AU12L).toBe(1); // 0.5 + 0.9, clamped
-    expect(e.AU12R).toBeCloseTo(0.9, 12);
-    expect(e.AU6L).toBeCloseTo(0.8, 12);
-    expect(e.AU1R).toBeCloseTo(0.5, 12);
-    expect(e.AU5L).toBeCloseTo(0.1, 12);
-    expect(e.AU26).toBeCloseTo(0.5, 12); // 0.1 + 0.5 x 0.8
+    expect(e.AU12L).toBe(1); // 0.5 + happiness's AU12, clamped
+    expect(e.AU12R).toBeCloseTo(happy12, 12);
+    expect(e.AU6L).toBeCloseTo(amount('happiness', 'AU6'), 12);
+    expect(e.AU1R).toBeCloseTo(0.5 * amount('surprise', 'AU1'), 12);
+    expect(e.AU5L).toBeCloseTo(0.5 * amount('surprise', 'AU5'), 12);
+    expect(e.AU26).toBeCloseTo(0.1 + 0.5 * amount('surprise', 'AU26'), 12);
     expect(e.AU15L).toBe(0);
     expect(s.getActionUnits().AU12R).toBe(0); // sliders stay what was set
   });
