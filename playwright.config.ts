@@ -25,7 +25,13 @@ export default defineConfig({
     launchOptions: {
       executablePath: chromiumPath(),
       // WebGL through SwiftShader, and no background traffic toward hosts this machine cannot reach.
-      args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking', '--disable-component-update', '--no-first-run'],
+      args: [
+        '--use-angle=swiftshader',
+        '--enable-unsafe-swiftshader',
+        '--disable-background-networking',
+        '--disable-component-update',
+        '--no-first-run',
+      ],
     },
   },
   webServer: [

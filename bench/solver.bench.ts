@@ -35,7 +35,11 @@ const WARMUP_FRAMES = 5;
 
 async function loadSkin(name: string): Promise<SkinTopology> {
   const doc = await new NodeIO().readBinary(new Uint8Array(readFileSync(`public/models/head-${name}.glb`)));
-  const prim = doc.getRoot().listMeshes().find((m) => m.getName() === 'skin')!.listPrimitives()[0];
+  const prim = doc
+    .getRoot()
+    .listMeshes()
+    .find((m) => m.getName() === 'skin')!
+    .listPrimitives()[0];
   return buildTopology(prim.getAttribute('POSITION')!.getArray()!, prim.getIndices()!.getArray()!);
 }
 
@@ -57,7 +61,11 @@ function expression(t: SkinTopology): { vertices: number[]; targets: number[] } 
 }
 
 const quantile = (sorted: number[], q: number): number => sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
-const median = (xs: number[]): number => quantile([...xs].sort((a, b) => a - b), 0.5);
+const median = (xs: number[]): number =>
+  quantile(
+    [...xs].sort((a, b) => a - b),
+    0.5,
+  );
 
 interface Row {
   resolution: string;
@@ -268,33 +276,74 @@ for (const { resolution, expression: name } of DRAG_CASES) {
   }
   const medianApplyMs = median(apply);
   const medianFrameMs = median(frame);
-  dragRows.push({ resolution, expression: name, inputs: DRAG_FRAMES, medianApplyMs, medianFrameMs, framesPerSecond: 1000 / (medianApplyMs + medianFrameMs) });
+  dragRows.push({
+    resolution,
+    expression: name,
+    inputs: DRAG_FRAMES,
+    medianApplyMs,
+    medianFrameMs,
+    framesPerSecond: 1000 / (medianApplyMs + medianFrameMs),
+  });
 }
 
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, platform: platform(), node: process.version };
-const header = '| head | vertices | edges | length iterations | workers | median ms/frame | p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
+const header =
+  '| head | vertices | edges | length iterations | workers | median ms/frame | ' +
+  'p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
 const lines = rows.map(
   (r) =>
-    `| ${r.resolution} | ${r.vertices.toLocaleString('en-US')} | ${r.edges.toLocaleString('en-US')} | ${r.lengthIterations} | ${r.workers} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.medianNormalsMs.toFixed(2)} | ${r.medianBendingMs.toFixed(2)} | ${r.medianOrientationMs.toFixed(2)} |`,
+    `| ${[
+      r.resolution,
+      r.vertices.toLocaleString('en-US'),
+      r.edges.toLocaleString('en-US'),
+      r.lengthIterations,
+      r.workers,
+      r.medianFrameMs.toFixed(1),
+      r.p90FrameMs.toFixed(1),
+      r.nsPerEdgeProjection.toFixed(1),
+      r.medianNormalsMs.toFixed(2),
+      r.medianBendingMs.toFixed(2),
+      r.medianOrientationMs.toFixed(2),
+    ].join(' | ')} |`,
 );
-console.log(`Solver benchmark on ${machine.cpu}, ${machine.cores} cores, Node ${machine.node} (${rows[0].positionIterations} position iterations)\n`);
+console.log(
+  `Solver benchmark on ${machine.cpu}, ${machine.cores} cores, Node ${machine.node} (${rows[0].positionIterations} position iterations)\n`,
+);
 console.log('Loops (whole mesh, a held expression):\n');
 console.log([header, header.replace(/[^|]+/g, ' --- '), ...lines].join('\n'));
 const rigHeader =
-  '| head | expression | workers | active vertices | median ms/frame | p90 ms/frame | ns/edge projection | frames to 2 % | ms to 2 % | frames to sleep | ms to sleep |';
+  '| head | expression | workers | active vertices | median ms/frame | p90 ms/frame ' +
+  '| ns/edge projection | frames to 2 % | ms to 2 % | frames to sleep | ms to sleep |';
 const count = (n: number): string => n.toLocaleString('en-US');
 const rigLines = rigRows.map(
   (r) =>
-    `| ${r.resolution} | ${r.expression} | ${r.workers} | ${count(r.activeVertices)} of ${count(r.vertices)} | ${r.medianFrameMs.toFixed(1)} | ${r.p90FrameMs.toFixed(1)} | ${r.nsPerEdgeProjection.toFixed(1)} | ${r.framesToNearFinal} | ${count(Math.round(r.msToNearFinal))} | ${r.framesToSleep ?? `> ${r.maxFrames}`} | ${r.msToSleep === null ? '-' : count(Math.round(r.msToSleep))} |`,
+    `| ${[
+      r.resolution,
+      r.expression,
+      r.workers,
+      `${count(r.activeVertices)} of ${count(r.vertices)}`,
+      r.medianFrameMs.toFixed(1),
+      r.p90FrameMs.toFixed(1),
+      r.nsPerEdgeProjection.toFixed(1),
+      r.framesToNearFinal,
+      count(Math.round(r.msToNearFinal)),
+      r.framesToSleep ?? `> ${r.maxFrames}`,
+      r.msToSleep === null ? '-' : count(Math.round(r.msToSleep)),
+    ].join(' | ')} |`,
 );
 console.log('\nThe rig (solver host, colliders, default rig, active region), from rest to an expression at full intensity:\n');
 console.log([rigHeader, rigHeader.replace(/[^|]+/g, ' --- '), ...rigLines].join('\n'));
 const dragHeader = '| head | expression | inputs | median ms to apply an input | median ms/frame | frames a second |';
 const dragLines = dragRows.map(
-  (r) => `| ${r.resolution} | ${r.expression} | ${r.inputs} | ${r.medianApplyMs.toFixed(1)} | ${r.medianFrameMs.toFixed(1)} | ${Math.round(r.framesPerSecond)} |`,
+  (r) =>
+    `| ${r.resolution} | ${r.expression} | ${r.inputs} | ${r.medianApplyMs.toFixed(1)} ` +
+    `| ${r.medianFrameMs.toFixed(1)} | ${Math.round(r.framesPerSecond)} |`,
 );
 console.log(`\nA slider dragged from 0 to full intensity over ${DRAG_FRAMES} frames, an input before each:\n`);
 console.log([dragHeader, dragHeader.replace(/[^|]+/g, ' --- '), ...dragLines].join('\n'));
 mkdirSync('bench-results', { recursive: true });
-writeFileSync('bench-results/solver.json', JSON.stringify({ machine, date: new Date().toISOString(), rows, rigRows, dragRows }, null, 2) + '\n');
+writeFileSync(
+  'bench-results/solver.json',
+  JSON.stringify({ machine, date: new Date().toISOString(), rows, rigRows, dragRows }, null, 2) + '\n',
+);
 console.log('\nwrote bench-results/solver.json');

@@ -88,7 +88,12 @@ test('AU43 brings the upper lids down to the lower lids', async ({ page }) => {
         return [-0.004, 0, 0.004].map((dx) => {
           const near: number[] = [];
           for (let v = 0; v < rest.length / 3; v++) {
-            if (Math.abs(rest[3 * v] - eye[0] - dx) < 0.0015 && rest[3 * v + 2] > eye[2] + 0.005 && Math.abs(rest[3 * v + 1] - eye[1]) < 0.006) near.push(v);
+            if (
+              Math.abs(rest[3 * v] - eye[0] - dx) < 0.0015 &&
+              rest[3 * v + 2] > eye[2] + 0.005 &&
+              Math.abs(rest[3 * v + 1] - eye[1]) < 0.006
+            )
+              near.push(v);
           }
           near.sort((a, b) => rest[3 * a + 1] - rest[3 * b + 1]);
           let gap = 0;

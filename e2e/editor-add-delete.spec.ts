@@ -2,7 +2,9 @@ import { openFace } from './face';
 import { expect, test } from './fixtures';
 import { control, openFolder } from './panels';
 
-test('the panel adds a muscle in front of the view, duplicates, renames, assigns and deletes it, and undo steps back through it', async ({ page }) => {
+test('the panel adds a muscle in front of the view, duplicates, renames, assigns and deletes it, and undo steps back through it', async ({
+  page,
+}) => {
   await openFace(page, '/?resolution=low');
   await openFolder(page, 'Editor');
   await control(page, 'editor').locator('input').check();
@@ -11,13 +13,24 @@ test('the panel adds a muscle in front of the view, duplicates, renames, assigns
   // The view looks at the face's middle from the front: the muscle lands on the midline, on the skin.
   const added = await page.evaluate(() => {
     const name = window.face.getSelectedMuscle()!;
-    return { name, muscle: window.face.getRig().muscles.find((m) => m.name === name) as { type: string; center: number[] }, rest: window.face.getSkin().rest };
+    return {
+      name,
+      muscle: window.face.getRig().muscles.find((m) => m.name === name) as { type: string; center: number[] },
+      rest: window.face.getSkin().rest,
+    };
   });
   expect(added.name).toBe('new-sphincter');
   expect(added.muscle.type).toBe('sphincter');
   let nearest = Infinity;
   for (let i = 0; i < added.rest.length; i += 3) {
-    nearest = Math.min(nearest, Math.hypot(added.rest[i] - added.muscle.center[0], added.rest[i + 1] - added.muscle.center[1], added.rest[i + 2] - added.muscle.center[2]));
+    nearest = Math.min(
+      nearest,
+      Math.hypot(
+        added.rest[i] - added.muscle.center[0],
+        added.rest[i + 1] - added.muscle.center[1],
+        added.rest[i + 2] - added.muscle.center[2],
+      ),
+    );
   }
   expect(nearest).toBeLessThan(0.01);
   expect(Math.abs(added.muscle.center[0])).toBeLessThan(0.005);

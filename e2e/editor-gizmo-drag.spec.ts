@@ -11,7 +11,11 @@ async function corner(page: import('@playwright/test').Page, vertex = -1): Promi
     if (v < 0) {
       let farthest = 0;
       for (let i = 0; i < rest.length / 3; i++) {
-        const d = Math.hypot(positions[3 * i] - rest[3 * i], positions[3 * i + 1] - rest[3 * i + 1], positions[3 * i + 2] - rest[3 * i + 2]);
+        const d = Math.hypot(
+          positions[3 * i] - rest[3 * i],
+          positions[3 * i + 1] - rest[3 * i + 1],
+          positions[3 * i + 2] - rest[3 * i + 2],
+        );
         if (rest[3 * i] > 0.01 && d > farthest) [v, farthest] = [i, d];
       }
     }
@@ -19,7 +23,9 @@ async function corner(page: import('@playwright/test').Page, vertex = -1): Promi
   }, vertex);
 }
 
-test('dragging the gizmo with the mouse moves the muscle and the skin in one undo step, and Ctrl+Z brings the rig back exactly', async ({ page }) => {
+test('dragging the gizmo with the mouse moves the muscle and the skin in one undo step, and Ctrl+Z brings the rig back exactly', async ({
+  page,
+}) => {
   test.setTimeout(120_000);
   await openFace(page, '/?resolution=low');
   await page.evaluate(() => window.face.setActionUnit('AU12', 0.8));
@@ -38,7 +44,9 @@ test('dragging the gizmo with the mouse moves the muscle and the skin in one und
   const editor = await page.evaluate(() => window.face.describeEditor());
   expect(editor.history).toEqual({ undo: 1, redo: 0 });
   await expect(control(page, 'undo')).toContainText('undo (1)');
-  const insertion = await page.evaluate(() => (window.face.getRig().muscles.find((m) => m.name === 'zygomaticus-major-l') as { insertion: number[] }).insertion);
+  const insertion = await page.evaluate(
+    () => (window.face.getRig().muscles.find((m) => m.name === 'zygomaticus-major-l') as { insertion: number[] }).insertion,
+  );
   const was = (original.muscles.find((m) => m.name === 'zygomaticus-major-l') as { insertion: number[] }).insertion;
   const shift = Math.hypot(insertion[0] - was[0], insertion[1] - was[1], insertion[2] - was[2]);
   // The gizmo followed the pointer: the point moved right and up on the screen, which is +x and +y on the face.
@@ -58,5 +66,9 @@ test('dragging the gizmo with the mouse moves the muscle and the skin in one und
   const back = await corner(page, before.vertex);
   expect(Math.hypot(back.at[0] - before.at[0], back.at[1] - before.at[1], back.at[2] - before.at[2])).toBeLessThan(0.0002);
   await page.keyboard.press('Control+Shift+z');
-  expect(await page.evaluate(() => (window.face.getRig().muscles.find((m) => m.name === 'zygomaticus-major-l') as { insertion: number[] }).insertion)).toEqual(insertion);
+  expect(
+    await page.evaluate(
+      () => (window.face.getRig().muscles.find((m) => m.name === 'zygomaticus-major-l') as { insertion: number[] }).insertion,
+    ),
+  ).toEqual(insertion);
 });

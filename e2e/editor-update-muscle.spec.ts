@@ -28,7 +28,11 @@ test("updateMuscle moves AU12's lip corner on the live skin, undo restores it, a
       let best = -1;
       let bestD = Infinity;
       for (let v = 0; v < rest.length / 3; v++) {
-        const d = Math.hypot(rest[3 * v] + rest[3 * corner], rest[3 * v + 1] - rest[3 * corner + 1], rest[3 * v + 2] - rest[3 * corner + 2]);
+        const d = Math.hypot(
+          rest[3 * v] + rest[3 * corner],
+          rest[3 * v + 1] - rest[3 * corner + 1],
+          rest[3 * v + 2] - rest[3 * corner + 2],
+        );
         if (d < bestD) [best, bestD] = [v, d];
       }
       return best;
@@ -70,7 +74,10 @@ test("updateMuscle moves AU12's lip corner on the live skin, undo restores it, a
       finite: Array.from(face.getSkin().positions).every(Number.isFinite),
     };
   });
-  console.log(`lip corner: AU12 moved it ${(result.farthest * 1000).toFixed(2)} mm; the edit ${(result.editChange * 1000).toFixed(2)} mm (right side ${(result.rightChange * 1000).toFixed(3)} mm); after undo ${(result.undoChange * 1000).toFixed(3)} mm from the smile`);
+  console.log(
+    `lip corner: AU12 moved it ${(result.farthest * 1000).toFixed(2)} mm; the edit ${(result.editChange * 1000).toFixed(2)} mm ` +
+      `(right side ${(result.rightChange * 1000).toFixed(3)} mm); after undo ${(result.undoChange * 1000).toFixed(3)} mm from the smile`,
+  );
   expect(result.undone).toBe(true);
   expect(result.errors).toHaveLength(3);
   expect(result.errors[0]).toMatch(/^updateMuscle: muscles\[\d+\]\.insertion\[0\]: expected a number, got NaN/);

@@ -49,7 +49,8 @@ function installProbe(): void {
   const getContext = HTMLCanvasElement.prototype.getContext;
   HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
     const context = (getContext as (...a: unknown[]) => RenderingContext | null).call(this, type, ...rest);
-    if (context && type.startsWith('webgl') && !contexts.includes(context as WebGLRenderingContext)) contexts.push(context as WebGLRenderingContext);
+    if (context && type.startsWith('webgl') && !contexts.includes(context as WebGLRenderingContext))
+      contexts.push(context as WebGLRenderingContext);
     return context;
   } as typeof getContext;
   // A listener is the same one again for the same type, function and capture flag, as the DOM counts them.
@@ -129,7 +130,9 @@ function installProbe(): void {
 
 const CYCLES = 20;
 
-test(`creating and disposing a face ${CYCLES} times leaves no worker, WebGL context, listener, observer or timer behind`, async ({ page }) => {
+test(`creating and disposing a face ${CYCLES} times leaves no worker, WebGL context, listener, observer or timer behind`, async ({
+  page,
+}) => {
   test.setTimeout(240_000);
   const messages: string[] = [];
   page.on('console', (m) => messages.push(m.text()));

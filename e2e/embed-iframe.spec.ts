@@ -2,7 +2,9 @@ import { expect, test } from './fixtures';
 import { OTHER_ORIGIN, STATIC_ORIGIN, serveStatic } from './static-host';
 
 /** Waits for the framed page's `<soft-face>`, opens its jaw and reports how it runs and how far the skin moved. */
-async function framedFace(page: import('@playwright/test').Page): Promise<{ isolated: boolean; mode: string; moved: number; framed: boolean }> {
+async function framedFace(
+  page: import('@playwright/test').Page,
+): Promise<{ isolated: boolean; mode: string; moved: number; framed: boolean }> {
   await expect(page.frameLocator('#frame').locator('html')).toHaveAttribute('data-state', 'ready');
   const inner = page.frames().find((f) => f.url().startsWith(STATIC_ORIGIN))!;
   return inner.evaluate(async () => {

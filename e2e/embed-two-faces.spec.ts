@@ -23,7 +23,14 @@ test('two faces on one page have a worker each, and a change to one never moves 
     const aSkin = a.getSkin();
     let aMoved = 0;
     for (let i = 0; i < aSkin.rest.length; i += 3) {
-      aMoved = Math.max(aMoved, Math.hypot(aSkin.positions[i] - aSkin.rest[i], aSkin.positions[i + 1] - aSkin.rest[i + 1], aSkin.positions[i + 2] - aSkin.rest[i + 2]));
+      aMoved = Math.max(
+        aMoved,
+        Math.hypot(
+          aSkin.positions[i] - aSkin.rest[i],
+          aSkin.positions[i + 1] - aSkin.rest[i + 1],
+          aSkin.positions[i + 2] - aSkin.rest[i + 2],
+        ),
+      );
     }
     const bAfter = b.getSkin();
     let bChanged = 0;

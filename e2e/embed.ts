@@ -36,7 +36,12 @@ const PLACEMENT_DEFAULTS: Required<Placement> = { width: 360, height: 360, inVie
 /** The style of a face's container for a placement. */
 function placementStyle(placement: Placement): Record<string, string> {
   const p = { ...PLACEMENT_DEFAULTS, ...placement };
-  return { display: 'inline-block', width: `${p.width}px`, height: `${p.height}px`, ...(p.inView ? {} : { position: 'absolute', left: '-10000px' }) };
+  return {
+    display: 'inline-block',
+    width: `${p.width}px`,
+    height: `${p.height}px`,
+    ...(p.inView ? {} : { position: 'absolute', left: '-10000px' }),
+  };
 }
 
 /**
@@ -91,7 +96,9 @@ export async function addElement(page: Page, name: string, attributes: Record<st
       Object.assign(element.style, style);
       element.addEventListener('ready', () => events.push({ type: 'ready' }));
       // Only the element's own change events have a detail; a native one leaking out of its panels would show as such.
-      element.addEventListener('change', (e) => events.push({ type: 'change', what: (e as CustomEvent<{ change: string } | null>).detail?.change ?? 'native' }));
+      element.addEventListener('change', (e) =>
+        events.push({ type: 'change', what: (e as CustomEvent<{ change: string } | null>).detail?.change ?? 'native' }),
+      );
       element.addEventListener('error', (e) => {
         e.preventDefault();
         events.push({ type: 'error', what: (e as ErrorEvent).message });

@@ -42,7 +42,9 @@ test('the face is lit by the baked room environment, the very picture the view m
   expect(otherWarnings.some((w) => /lighting environment .*room\.pmrem could not be loaded \(HTTP 404\)/.test(w))).toBe(true);
 
   const difference = await comparePictures(page, baked, made);
-  console.log(`baked vs made environment: mean difference ${difference.mean.toFixed(4)}, max ${difference.max}, ${difference.lit} lit pixels`);
+  console.log(
+    `baked vs made environment: mean difference ${difference.mean.toFixed(4)}, max ${difference.max}, ${difference.lit} lit pixels`,
+  );
   expect(difference.sameSize).toBe(true);
   expect(difference.lit).toBeGreaterThan(20_000);
   // The file holds the generator's own half floats, so the pictures agree to the last rounding of a channel.

@@ -61,7 +61,17 @@ test('the eye simulation blinks through the lids and moves the gaze within 10 s,
       // Done once a blink and a saccade happened and the blink has had 600 ms to show on the skin.
       if ((stats.blinks > 0 && stats.saccades > 0 && t > firstBlinkAt + 600) || t > 12_000) break;
     }
-    return { lidVertices: lidVertices.length, before, maxDrop, maxDropNoBlink, maxOverlay, sliderMoved, firstBlinkAt, stats, gazes: gazes.size };
+    return {
+      lidVertices: lidVertices.length,
+      before,
+      maxDrop,
+      maxDropNoBlink,
+      maxOverlay,
+      sliderMoved,
+      firstBlinkAt,
+      stats,
+      gazes: gazes.size,
+    };
   }, EYE_L);
   console.log(JSON.stringify(run));
   expect(run.lidVertices).toBeGreaterThan(3);

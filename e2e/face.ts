@@ -54,7 +54,10 @@ export async function pullForehead(page: Page): Promise<PulledSkin> {
     const { positions } = face.getSkin();
     let moved = 0;
     for (let v = 0; v < n; v++) {
-      moved = Math.max(moved, Math.hypot(positions[3 * v] - rest[3 * v], positions[3 * v + 1] - rest[3 * v + 1], positions[3 * v + 2] - rest[3 * v + 2]));
+      moved = Math.max(
+        moved,
+        Math.hypot(positions[3 * v] - rest[3 * v], positions[3 * v + 1] - rest[3 * v + 1], positions[3 * v + 2] - rest[3 * v + 2]),
+      );
     }
     const size = Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
     return { rest: Array.from(rest), positions: Array.from(positions), size, moved, mode: face.stats().mode };

@@ -42,7 +42,12 @@ export async function decodePNG(page: Page, png: Buffer): Promise<JSHandle<Image
  * Runs `measure` in the page on a PNG's pixels (see `decodePNG`) and returns what it returns. It runs in the page:
  * it sees only its argument, `arg` with the pixels added.
  */
-export async function measurePNG<A extends object, R>(page: Page, png: Buffer, measure: (arg: A & { pixels: ImageData }) => R | Promise<R>, arg: A): Promise<R> {
+export async function measurePNG<A extends object, R>(
+  page: Page,
+  png: Buffer,
+  measure: (arg: A & { pixels: ImageData }) => R | Promise<R>,
+  arg: A,
+): Promise<R> {
   const pixels = await decodePNG(page, png);
   try {
     // The page gets the pixels in place of their handle; Playwright's types cannot follow that through a generic `A`.

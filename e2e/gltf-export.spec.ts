@@ -10,7 +10,15 @@ import { control, openFolder } from './panels';
 const TIMELINE = {
   format: 'softface-timeline',
   version: 1,
-  tracks: { AU12: { keys: [{ time: 0, value: 0, easing: 'linear' }, { time: 0.5, value: 1 }, { time: 1, value: 0 }] } },
+  tracks: {
+    AU12: {
+      keys: [
+        { time: 0, value: 0, easing: 'linear' },
+        { time: 0.5, value: 1 },
+        { time: 1, value: 0 },
+      ],
+    },
+  },
   actions: [],
 };
 
@@ -54,7 +62,11 @@ function morphed(mesh: Mesh, target: string): { base: Float32Array; shape: Float
  * file's morphed render skin: render vertices are matched to simulation vertices by their rest position (the solver
  * welds equal rest positions into one). Returns the largest distance in metres.
  */
-async function largestError(page: Page, expression: Record<string, number>, render: { base: Float32Array; shape: Float32Array }): Promise<number> {
+async function largestError(
+  page: Page,
+  expression: Record<string, number>,
+  render: { base: Float32Array; shape: Float32Array },
+): Promise<number> {
   const solved = await page.evaluate(async (entries) => {
     const face = window.face;
     face.reset();
@@ -65,12 +77,17 @@ async function largestError(page: Page, expression: Record<string, number>, rend
     return { rest: Array.from(rest), positions: Array.from(positions) };
   }, expression);
   const simOf = new Map<string, number>();
-  for (let v = 0; v < solved.rest.length / 3; v++) simOf.set(`${solved.rest[3 * v]},${solved.rest[3 * v + 1]},${solved.rest[3 * v + 2]}`, v);
+  for (let v = 0; v < solved.rest.length / 3; v++)
+    simOf.set(`${solved.rest[3 * v]},${solved.rest[3 * v + 1]},${solved.rest[3 * v + 2]}`, v);
   let worst = 0;
   for (let i = 0; i < render.base.length / 3; i++) {
     const v = simOf.get(`${render.base[3 * i]},${render.base[3 * i + 1]},${render.base[3 * i + 2]}`);
     expect(v, `render vertex ${i} sits on a simulation vertex at rest`).toBeDefined();
-    const d = Math.hypot(render.shape[3 * i] - solved.positions[3 * v!], render.shape[3 * i + 1] - solved.positions[3 * v! + 1], render.shape[3 * i + 2] - solved.positions[3 * v! + 2]);
+    const d = Math.hypot(
+      render.shape[3 * i] - solved.positions[3 * v!],
+      render.shape[3 * i + 1] - solved.positions[3 * v! + 1],
+      render.shape[3 * i + 2] - solved.positions[3 * v! + 2],
+    );
     worst = Math.max(worst, d);
   }
   return worst;
@@ -104,7 +121,12 @@ test('exportGLTF writes the settled Action Unit and preset as named morph target
     face.setExpression({ AU6L: 0.3, 'preset:sadness': 0.5 });
     const before = { actionUnits: face.getActionUnits(), presets: face.listPresets(), timeline: face.timelineState() };
     const progress: string[] = [];
-    const blob = await face.exportGLTF({ actionUnits: ['AU12'], presets: ['surprise'], fps: 10, onProgress: (p) => progress.push(`${p.done}/${p.total} ${p.target}`) });
+    const blob = await face.exportGLTF({
+      actionUnits: ['AU12'],
+      presets: ['surprise'],
+      fps: 10,
+      onProgress: (p) => progress.push(`${p.done}/${p.total} ${p.target}`),
+    });
     const after = { actionUnits: face.getActionUnits(), presets: face.listPresets(), timeline: face.timelineState() };
     return { bytes: Array.from(new Uint8Array(await blob.arrayBuffer())), type: blob.type, progress, before, after };
   }, TIMELINE);
@@ -236,15 +258,24 @@ test('an aborted export rejects with the reason and gives the face its expressio
     const controller = new AbortController();
     let error = '';
     try {
-      await face.exportGLTF({ actionUnits: ['AU12', 'AU26'], signal: controller.signal, onProgress: (p) => p.target === 'AU12' && controller.abort(new Error('stopped')) });
+      await face.exportGLTF({
+        actionUnits: ['AU12', 'AU26'],
+        signal: controller.signal,
+        onProgress: (p) => p.target === 'AU12' && controller.abort(new Error('stopped')),
+      });
     } catch (e) {
       error = (e as Error).message;
     }
     const restored = JSON.stringify(face.getActionUnits()) === JSON.stringify(before);
     const next = await face.exportGLTF({ actionUnits: ['AU17'], binary: false });
-    const document = JSON.parse(await next.text()) as { nodes: { name: string; mesh?: number }[]; meshes: { extras?: { targetNames?: string[] } }[] };
+    const document = JSON.parse(await next.text()) as {
+      nodes: { name: string; mesh?: number }[];
+      meshes: { extras?: { targetNames?: string[] } }[];
+    };
     // Meshes are named by the nodes that hold them.
-    const targets = document.nodes.filter((n) => n.mesh !== undefined).map((n) => [n.name, document.meshes[n.mesh!].extras?.targetNames ?? []] as const);
+    const targets = document.nodes
+      .filter((n) => n.mesh !== undefined)
+      .map((n) => [n.name, document.meshes[n.mesh!].extras?.targetNames ?? []] as const);
     return { error, restored, type: next.type, targets };
   });
   expect(r.error).toBe('stopped');

@@ -38,7 +38,12 @@ test('savePNG shows the brows and lashes where they grow, and not once they are 
       ctx.drawImage(image, 0, 0);
       const sx = image.width / rect.width;
       const sy = image.height / rect.height;
-      const d = ctx.getImageData(Math.round((x0 - rect.left) * sx), Math.round((y0 - rect.top) * sy), Math.max(1, Math.round((x1 - x0) * sx)), Math.max(1, Math.round((y1 - y0) * sy))).data;
+      const d = ctx.getImageData(
+        Math.round((x0 - rect.left) * sx),
+        Math.round((y0 - rect.top) * sy),
+        Math.max(1, Math.round((x1 - x0) * sx)),
+        Math.max(1, Math.round((y1 - y0) * sy)),
+      ).data;
       let sum = 0;
       for (let i = 0; i < d.length; i += 4) sum += (d[i] + d[i + 1] + d[i + 2]) / 3;
       return sum / (d.length / 4);
@@ -54,7 +59,10 @@ test('savePNG shows the brows and lashes where they grow, and not once they are 
       cheek: [await brightness(on, cheek), await brightness(off, cheek)],
     };
   });
-  console.log(`brightness with / without hair: brows ${r.brows.map((v) => v.toFixed(1))}, lashes ${r.lashes.map((v) => v.toFixed(1))}, cheek ${r.cheek.map((v) => v.toFixed(1))}`);
+  console.log(
+    `brightness with / without hair: brows ${r.brows.map((v) => v.toFixed(1))}, lashes ` +
+      `${r.lashes.map((v) => v.toFixed(1))}, cheek ${r.cheek.map((v) => v.toFixed(1))}`,
+  );
   expect(r.brows[1] - r.brows[0]).toBeGreaterThan(15);
   expect(r.lashes[1] - r.lashes[0]).toBeGreaterThan(5);
   expect(Math.abs(r.cheek[1] - r.cheek[0])).toBeLessThan(1);

@@ -58,7 +58,11 @@ for (const expression of ['neutral', 'AU5', 'AU43']) {
             }
           }
           if (best < 0) continue;
-          const depth = -((m[0] - skin[3 * best]) * normals[3 * best] + (m[1] - skin[3 * best + 1]) * normals[3 * best + 1] + (m[2] - skin[3 * best + 2]) * normals[3 * best + 2]);
+          const depth = -(
+            (m[0] - skin[3 * best]) * normals[3 * best] +
+            (m[1] - skin[3 * best + 1]) * normals[3 * best + 1] +
+            (m[2] - skin[3 * best + 2]) * normals[3 * best + 2]
+          );
           behindSkin = Math.max(behindSkin, depth);
         }
         return { lashes: lashes.count, inEye, behindSkin };

@@ -5,7 +5,9 @@ import { control, openFolder } from './panels';
 
 type Vec3 = [number, number, number];
 
-test('a head whose landmarks are not found gets them by guided clicks and then loads with them; cancelling keeps the current head', async ({ page }) => {
+test('a head whose landmarks are not found gets them by guided clicks and then loads with them; cancelling keeps the current head', async ({
+  page,
+}) => {
   await openFace(page, '/?resolution=low');
   const before = await page.evaluate(() => window.face.describeHead());
   await openFolder(page, 'Head');
@@ -25,7 +27,10 @@ test('a head whose landmarks are not found gets them by guided clicks and then l
   await control(page, 'guide-landmarks').locator('button').dispatchEvent('click');
   await expect(control(page, 'head-message')).toHaveText("ball.obj: click the left eye's inner corner (1 of 13)");
   // Two real clicks on the shown skin, each placing the landmark asked for where it was clicked.
-  for (const [name, next] of [['eye-inner-l', "the left eye's outer corner (2 of 13)"], ['eye-outer-l', "the right eye's inner corner (3 of 13)"]] as const) {
+  for (const [name, next] of [
+    ['eye-inner-l', "the left eye's outer corner (2 of 13)"],
+    ['eye-outer-l', "the right eye's inner corner (3 of 13)"],
+  ] as const) {
     const target = spot(defaults[name]);
     const at = await page.evaluate((p) => window.face.locateLandmarkPoint(p), target);
     await page.mouse.click(at!.x, at!.y);

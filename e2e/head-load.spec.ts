@@ -40,46 +40,63 @@ async function lifts(page: Page): Promise<{ au12: number; au1: number; size: num
 
 test.describe.configure({ timeout: 300_000 });
 
-test('a GLB, a glTF with its buffer and an OBJ head with their own meshes and proportions load, and AU12 and AU1 move them as much as the default head', async ({ page }) => {
-  await openFace(page, '/?resolution=low');
-  const reference = await lifts(page);
-  await openFolder(page, 'Head');
-  let firstVertices = 0;
-  for (const file of ['wide-jaw.glb', 'long-face.obj']) {
-    await control(page, 'head-file').setInputFiles({ name: file, mimeType: 'application/octet-stream', buffer: readFileSync(new URL(`./assets/${file}`, import.meta.url)) });
-    await expect(control(page, 'head-message')).toContainText(`loaded ${file}`, { timeout: 60_000 });
-    // The GLB brings its own eyes (nodes eye-l, eye-r); the OBJ has none, and gets the default head's, carried over.
-    const parts = file.endsWith('.glb') ? { eyes: 'file', teeth: 'default', jaw: 'default' } : { eyes: 'default', teeth: 'default', jaw: 'default' };
-    const head = await page.evaluate(() => window.face.describeHead());
-    expect(head).toMatchObject({ source: 'loaded', name: file, parts });
-    firstVertices ||= head.vertices;
-    const m = await lifts(page);
-    expect(m.au12).toBeGreaterThan(0.7 * reference.au12);
-    expect(m.au12).toBeLessThan(1.3 * reference.au12);
-    expect(m.au1).toBeGreaterThan(0.7 * reference.au1);
-    expect(m.au1).toBeLessThan(1.3 * reference.au1);
-  }
+test(
+  'a GLB, a glTF with its buffer and an OBJ head with their own meshes and ' +
+    'proportions load, and AU12 and AU1 move them as much as the default head',
+  async ({ page }) => {
+    await openFace(page, '/?resolution=low');
+    const reference = await lifts(page);
+    await openFolder(page, 'Head');
+    let firstVertices = 0;
+    for (const file of ['wide-jaw.glb', 'long-face.obj']) {
+      await control(page, 'head-file').setInputFiles({
+        name: file,
+        mimeType: 'application/octet-stream',
+        buffer: readFileSync(new URL(`./assets/${file}`, import.meta.url)),
+      });
+      await expect(control(page, 'head-message')).toContainText(`loaded ${file}`, { timeout: 60_000 });
+      // The GLB brings its own eyes (nodes eye-l, eye-r); the OBJ has none, and gets the default head's, carried over.
+      const parts = file.endsWith('.glb')
+        ? { eyes: 'file', teeth: 'default', jaw: 'default' }
+        : { eyes: 'default', teeth: 'default', jaw: 'default' };
+      const head = await page.evaluate(() => window.face.describeHead());
+      expect(head).toMatchObject({ source: 'loaded', name: file, parts });
+      firstVertices ||= head.vertices;
+      const m = await lifts(page);
+      expect(m.au12).toBeGreaterThan(0.7 * reference.au12);
+      expect(m.au12).toBeLessThan(1.3 * reference.au12);
+      expect(m.au1).toBeGreaterThan(0.7 * reference.au1);
+      expect(m.au1).toBeLessThan(1.3 * reference.au1);
+    }
 
-  // The GLB as a .gltf with its side file, given together: the same head.
-  const glb = await page.evaluate(() => window.face.describeHead());
-  expect(glb.name).toBe('long-face.obj');
-  const io = new NodeIO();
-  const { json, resources } = await io.writeJSON(await io.readBinary(new Uint8Array(readFileSync(new URL('./assets/wide-jaw.glb', import.meta.url)))));
-  const files = [
-    { name: 'wide-jaw.gltf', mimeType: 'model/gltf+json', buffer: Buffer.from(JSON.stringify(json)) },
-    ...Object.entries(resources).map(([name, bytes]) => ({ name, mimeType: 'application/octet-stream', buffer: Buffer.from(bytes) })),
-  ];
-  expect(files.length).toBeGreaterThan(1);
-  await control(page, 'head-file').setInputFiles(files);
-  await expect(control(page, 'head-message')).toContainText('loaded wide-jaw.gltf', { timeout: 60_000 });
-  expect(await page.evaluate(() => window.face.describeHead())).toMatchObject({ source: 'loaded', name: 'wide-jaw.gltf', vertices: firstVertices, parts: { eyes: 'file' } });
+    // The GLB as a .gltf with its side file, given together: the same head.
+    const glb = await page.evaluate(() => window.face.describeHead());
+    expect(glb.name).toBe('long-face.obj');
+    const io = new NodeIO();
+    const { json, resources } = await io.writeJSON(
+      await io.readBinary(new Uint8Array(readFileSync(new URL('./assets/wide-jaw.glb', import.meta.url)))),
+    );
+    const files = [
+      { name: 'wide-jaw.gltf', mimeType: 'model/gltf+json', buffer: Buffer.from(JSON.stringify(json)) },
+      ...Object.entries(resources).map(([name, bytes]) => ({ name, mimeType: 'application/octet-stream', buffer: Buffer.from(bytes) })),
+    ];
+    expect(files.length).toBeGreaterThan(1);
+    await control(page, 'head-file').setInputFiles(files);
+    await expect(control(page, 'head-message')).toContainText('loaded wide-jaw.gltf', { timeout: 60_000 });
+    expect(await page.evaluate(() => window.face.describeHead())).toMatchObject({
+      source: 'loaded',
+      name: 'wide-jaw.gltf',
+      vertices: firstVertices,
+      parts: { eyes: 'file' },
+    });
 
-  // By URL, the default head's own model file: its eyes, teeth and jaw are taken from its named nodes, and its
-  // landmarks are found where the default head has them.
-  const own = await page.evaluate(async () => window.face.loadHead('models/head-low.glb'));
-  expect(own).toMatchObject({ source: 'loaded', name: 'head-low.glb', parts: { eyes: 'file', teeth: 'file', jaw: 'file' } });
-  for (const [name, p] of Object.entries(own.landmarks)) {
-    const q = reference.landmarks[name as keyof typeof reference.landmarks];
-    expect(Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), name).toBeLessThan(0.001);
-  }
-});
+    // By URL, the default head's own model file: its eyes, teeth and jaw are taken from its named nodes, and its
+    // landmarks are found where the default head has them.
+    const own = await page.evaluate(async () => window.face.loadHead('models/head-low.glb'));
+    expect(own).toMatchObject({ source: 'loaded', name: 'head-low.glb', parts: { eyes: 'file', teeth: 'file', jaw: 'file' } });
+    for (const [name, p] of Object.entries(own.landmarks)) {
+      const q = reference.landmarks[name as keyof typeof reference.landmarks];
+      expect(Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), name).toBeLessThan(0.001);
+    }
+  },
+);

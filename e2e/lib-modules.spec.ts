@@ -25,14 +25,24 @@ test("the ES modules run with the page's own three.js, and solve on shared memor
     await second.settle(45_000);
     const workers = second.stats().workers;
     second.dispose();
-    return { isolated: crossOriginIsolated, mode: face.stats().mode, happiness: face.listPresets().find((p) => p.name === 'happiness')!.weight, moved, workers };
+    return {
+      isolated: crossOriginIsolated,
+      mode: face.stats().mode,
+      happiness: face.listPresets().find((p) => p.name === 'happiness')!.weight,
+      moved,
+      workers,
+    };
   });
   expect(r).toMatchObject({ isolated: true, mode: 'shared', happiness: 1, workers: 2 });
   expect(r.moved).toBeGreaterThan(0.003);
   const files = [...new Set(asked)];
   // three.js came from the page's import map, once; the library brought no copy of its own and no worker file.
   expect(files.filter((f) => f.startsWith('/three/'))).toEqual(
-    expect.arrayContaining(['/three/build/three.module.js', '/three/examples/jsm/loaders/GLTFLoader.js', '/three/examples/jsm/controls/OrbitControls.js']),
+    expect.arrayContaining([
+      '/three/build/three.module.js',
+      '/three/examples/jsm/loaders/GLTFLoader.js',
+      '/three/examples/jsm/controls/OrbitControls.js',
+    ]),
   );
   expect(files.filter((f) => f.startsWith('/lib/')).sort()).toEqual([
     '/lib/element.js',

@@ -1,7 +1,9 @@
 import { openFace } from './face';
 import { expect, test } from './fixtures';
 
-test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth, gums and tongue have their own materials', async ({ page }) => {
+test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth, gums and tongue have their own materials', async ({
+  page,
+}) => {
   await openFace(page, '/?resolution=low');
   const materials = await page.evaluate(() => window.face.describeMaterials());
   const byName = Object.fromEntries(materials.map((m) => [m.name, m]));
@@ -63,7 +65,8 @@ test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth
 
 test('the brows and lashes are dark hair by default and take the colours setAppearance gives them', async ({ page }) => {
   await openFace(page, '/?resolution=low');
-  const colour = (name: string): Promise<string> => page.evaluate((name) => window.face.describeMaterials().find((m) => m.name === name)!.color, name);
+  const colour = (name: string): Promise<string> =>
+    page.evaluate((name) => window.face.describeMaterials().find((m) => m.name === name)!.color, name);
   for (const name of ['eyebrows', 'eyelashes']) {
     const rgb = [1, 3, 5].map(async (i) => parseInt((await colour(name)).slice(i, i + 2), 16));
     const [r, g, b] = await Promise.all(rgb);

@@ -8,6 +8,8 @@ export function sphereObj(n: number): string {
       lines.push(`v ${0.1 * Math.sin(t) * Math.sin(p)} ${0.7 + 0.1 * Math.cos(t)} ${0.1 * Math.sin(t) * Math.cos(p)}`);
     }
   }
-  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) lines.push(`f ${j * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 2} ${j * (n + 1) + i + 2}`);
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++)
+      lines.push(`f ${j * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 2} ${j * (n + 1) + i + 2}`);
   return lines.join('\n');
 }

@@ -71,7 +71,11 @@ test('a face made with motionResolution 1 draws a moving face at full resolution
   test.setTimeout(120_000);
   await openEmbedPage(page);
   // Two faces alike but for the option: where draws are slow, the one with the default draws lower while it moves.
-  await addFaces(page, { steady: { resolution: 'medium', motionResolution: 1 }, usual: { resolution: 'medium' } }, { width: 560, height: 420 });
+  await addFaces(
+    page,
+    { steady: { resolution: 'medium', motionResolution: 1 }, usual: { resolution: 'medium' } },
+    { width: 560, height: 420 },
+  );
   const usual = await watchJaw(page, 'usual');
   const steady = await watchJaw(page, 'steady');
   console.log(`a full draw: ${steady.drawMs.toFixed(0)} and ${usual.drawMs.toFixed(0)} ms; widths ${steady.widths} and ${usual.widths}`);

@@ -14,7 +14,10 @@ test("the key light's horizontal angle turns which side of the face is lit", asy
   const fromLeft = await faceCrop(page);
   await setSlider(page, 'light-keyAzimuth', 270);
   const fromRight = await faceCrop(page, fromLeft.rect);
-  console.log(`azimuth 90: left ${fromLeft.left.toFixed(1)} right ${fromLeft.right.toFixed(1)}; azimuth 270: left ${fromRight.left.toFixed(1)} right ${fromRight.right.toFixed(1)}`);
+  console.log(
+    `azimuth 90: left ${fromLeft.left.toFixed(1)} right ${fromLeft.right.toFixed(1)}; ` +
+      `azimuth 270: left ${fromRight.left.toFixed(1)} right ${fromRight.right.toFixed(1)}`,
+  );
   expect(fromLeft.right).toBeGreaterThan(fromLeft.left * 1.3);
   expect(fromRight.left).toBeGreaterThan(fromRight.right * 1.3);
   expect(await page.evaluate(() => window.face.getLight())).toMatchObject({ keyAzimuth: 270, keyElevation: 0 });
@@ -26,7 +29,10 @@ test("the key light's vertical angle turns the light from above to below", async
   const above = await faceCrop(page);
   await setSlider(page, 'light-keyElevation', -80);
   const below = await faceCrop(page, above.rect);
-  console.log(`elevation 80: top ${above.top.toFixed(1)} bottom ${above.bottom.toFixed(1)}; -80: top ${below.top.toFixed(1)} bottom ${below.bottom.toFixed(1)}`);
+  console.log(
+    `elevation 80: top ${above.top.toFixed(1)} bottom ${above.bottom.toFixed(1)}; ` +
+      `-80: top ${below.top.toFixed(1)} bottom ${below.bottom.toFixed(1)}`,
+  );
   // Lit from above, the upper half of the face is brighter than the lower (measured: by about 20 grey levels); lit from
   // below, the lower half gains light (by about 20) while the upper half keeps its front-facing forehead lit.
   expect(above.top - above.bottom).toBeGreaterThan(below.top - below.bottom + 10);

@@ -17,7 +17,11 @@ test('switching the mesh resolution reloads with the other head and keeps the ex
   await page.evaluate(() => window.face.ready);
   await expect(page.locator('#status-model')).toContainText('medium head: 17,091 vertices');
 
-  const after = await page.evaluate(() => ({ units: window.face.getActionUnits(), presets: window.face.listPresets(), url: location.href }));
+  const after = await page.evaluate(() => ({
+    units: window.face.getActionUnits(),
+    presets: window.face.listPresets(),
+    url: location.href,
+  }));
   expect(after.units).toEqual(before.units);
   expect(after.presets).toEqual(before.presets);
   // The hash stays, and keeps following the face: the address bar is a link to what is shown.

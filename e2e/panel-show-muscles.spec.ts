@@ -4,7 +4,9 @@ import { control, faceCrop, openFolder, pictureDifference } from './panels';
 
 const shown = (page: import('@playwright/test').Page): Promise<string[]> => page.evaluate(() => window.face.describeMuscleDisplay());
 
-test("an Action Unit's 'show muscles' checkbox draws exactly its muscles over the face, and 'show all muscles' all 43", async ({ page }) => {
+test("an Action Unit's 'show muscles' checkbox draws exactly its muscles over the face, and 'show all muscles' all 43", async ({
+  page,
+}) => {
   // Five screenshots of the whole page on a software renderer: more than the default minute on a busy machine.
   test.setTimeout(150_000);
   await openFace(page, '/?resolution=low');
@@ -30,7 +32,9 @@ test("an Action Unit's 'show muscles' checkbox draws exactly its muscles over th
   expect(all).toHaveLength(43);
   expect(new Set(all).size).toBe(43);
   const everything = pictureDifference(before, await faceCrop(page, before.rect));
-  console.log(`picture difference from no muscles: AU12 ${drawn.toFixed(2)}, unticked ${restored.toFixed(2)}, all ${everything.toFixed(2)}`);
+  console.log(
+    `picture difference from no muscles: AU12 ${drawn.toFixed(2)}, unticked ${restored.toFixed(2)}, all ${everything.toFixed(2)}`,
+  );
   // Two thin rods move few pixels; every muscle moves many more; unticking gives the same picture back.
   expect(drawn).toBeGreaterThan(0.1);
   expect(restored).toBeLessThan(0.05);
@@ -50,7 +54,13 @@ test('a handle call ticks the checkboxes, and a bad one throws naming the id and
   await expect(control(page, 'AU6-muscles').locator('input')).toBeChecked();
   await expect(control(page, 'AU12-muscles').locator('input')).not.toBeChecked();
   // AU6 takes a tenth of AU7's palpebral ring along with its orbital ring.
-  expect(await shown(page)).toEqual(['orbicularis-oculi-orbital-l', 'orbicularis-oculi-orbital-r', 'orbicularis-oculi-palpebral-l', 'orbicularis-oculi-palpebral-r', 'jaw']);
+  expect(await shown(page)).toEqual([
+    'orbicularis-oculi-orbital-l',
+    'orbicularis-oculi-orbital-r',
+    'orbicularis-oculi-palpebral-l',
+    'orbicularis-oculi-palpebral-r',
+    'jaw',
+  ]);
 
   const error = await page.evaluate(() => {
     try {

@@ -8,7 +8,9 @@ export function control(page: Page, name: string): Locator {
 
 /** Opens a closed top-level panel folder (Presets, Rendering, Light) by its title. */
 export async function openFolder(page: Page, title: string): Promise<void> {
-  const folder = page.locator('.softface-panels .lil-gui', { has: page.locator(':scope > .lil-title', { hasText: new RegExp(`^${title}$`) }) });
+  const folder = page.locator('.softface-panels .lil-gui', {
+    has: page.locator(':scope > .lil-title', { hasText: new RegExp(`^${title}$`) }),
+  });
   if (await folder.evaluate((e) => e.classList.contains('lil-closed'))) await folder.locator(':scope > .lil-title').click();
 }
 
@@ -134,7 +136,11 @@ export function pictureDifference(a: FaceCrop, b: FaceCrop): number {
  * then again at full resolution once nothing new has come for a while. A fixed wait before one screenshot caught the
  * lower one now and then.
  */
-export async function stillScreenshot(page: Page, options: { clip?: { x: number; y: number; width: number; height: number } } = {}, timeoutMs = 30_000): Promise<Buffer> {
+export async function stillScreenshot(
+  page: Page,
+  options: { clip?: { x: number; y: number; width: number; height: number } } = {},
+  timeoutMs = 30_000,
+): Promise<Buffer> {
   const end = Date.now() + timeoutMs;
   let last = await page.screenshot(options);
   for (;;) {

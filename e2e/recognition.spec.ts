@@ -36,7 +36,9 @@ test('neutral and the prototypes read as meant to an automatic recogniser, front
       const r = await recognizer.recognize(await renderView(page, 0));
       const meant = meantLabel(name)!;
       if (r.top === meant) hits++;
-      rows.push(`${name}: ${r.detected ? `${r.top} ${r.probability!.toFixed(2)}, ${meant} ${r.expressions![meant].toFixed(2)}` : 'no face found'}`);
+      rows.push(
+        `${name}: ${r.detected ? `${r.top} ${r.probability!.toFixed(2)}, ${meant} ${r.expressions![meant].toFixed(2)}` : 'no face found'}`,
+      );
     }
     console.log(rows.join('\n'));
     expect(hits, `faces that read as meant:\n${rows.join('\n')}`).toBeGreaterThanOrEqual(AT_LEAST);

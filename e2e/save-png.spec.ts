@@ -17,7 +17,15 @@ test('save PNG: face.savePNG() gives the canvas as a PNG, and the button downloa
     ctx.drawImage(image, 0, 0);
     const [r, g, b] = ctx.getImageData(image.width >> 1, image.height >> 1, 1, 1).data;
     const canvas = document.querySelector('#viewport canvas') as HTMLCanvasElement;
-    return { type: blob.type, size: blob.size, bytes, width: image.width, height: image.height, canvas: [canvas.width, canvas.height], centre: [r, g, b] };
+    return {
+      type: blob.type,
+      size: blob.size,
+      bytes,
+      width: image.width,
+      height: image.height,
+      canvas: [canvas.width, canvas.height],
+      centre: [r, g, b],
+    };
   });
   console.log(`PNG: ${png.width} x ${png.height}, ${png.size} bytes, centre pixel ${png.centre}`);
   expect(png.type).toBe('image/png');

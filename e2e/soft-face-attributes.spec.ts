@@ -5,26 +5,30 @@ test('<soft-face>: the attributes set the face and apply live, each change told 
   await openEmbedPage(page);
   await addElement(page, 'f', { resolution: 'low', expression: 'AU12=0.8&AU6L=0.5', preset: 'happiness:0.4' });
   expect(await takeEvents(page, 'f')).toEqual([{ type: 'ready' }]);
-  const face = () => page.evaluate(() => {
-    const f = document.querySelector('soft-face')!.face!;
-    return {
-      units: f.getActionUnits(),
-      presets: Object.fromEntries(f.listPresets().map((p) => [p.name, p.weight])),
-      eyes: f.getEyeSimulation(),
-      vertices: f.stats().vertices,
-    };
-  });
+  const face = () =>
+    page.evaluate(() => {
+      const f = document.querySelector('soft-face')!.face!;
+      return {
+        units: f.getActionUnits(),
+        presets: Object.fromEntries(f.listPresets().map((p) => [p.name, p.weight])),
+        eyes: f.getEyeSimulation(),
+        vertices: f.stats().vertices,
+      };
+    });
   const start = await face();
   expect(start.vertices).toBe(4284);
   expect([start.units.AU12L, start.units.AU12R, start.units.AU6L, start.units.AU6R]).toEqual([0.8, 0.8, 0.5, 0]);
   expect(start.presets.happiness).toBe(0.4);
 
   const set = (name: string, value: string | null) =>
-    page.evaluate(([name, value]) => {
-      const element = document.querySelector('soft-face')!;
-      if (value === null) element.removeAttribute(name!);
-      else element.setAttribute(name!, value);
-    }, [name, value]);
+    page.evaluate(
+      ([name, value]) => {
+        const element = document.querySelector('soft-face')!;
+        if (value === null) element.removeAttribute(name!);
+        else element.setAttribute(name!, value);
+      },
+      [name, value],
+    );
 
   // A new expression replaces the old one; the preset attribute still adds its weight.
   await set('expression', 'AU4R=0.3');

@@ -8,7 +8,13 @@ test('<soft-face>: a bad attribute value fires an error naming it, and the face 
   const state = () =>
     page.evaluate(() => {
       const f = document.querySelector('soft-face')!.face!;
-      return { units: f.getActionUnits(), presets: f.listPresets(), eyes: f.getEyeSimulation(), vertices: f.stats().vertices, mode: f.stats().mode };
+      return {
+        units: f.getActionUnits(),
+        presets: f.listPresets(),
+        eyes: f.getEyeSimulation(),
+        vertices: f.stats().vertices,
+        mode: f.stats().mode,
+      };
     });
   const before = await state();
   expect(before.units.AU12L).toBe(0.6);

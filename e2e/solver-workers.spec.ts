@@ -10,7 +10,8 @@ async function smileOpen(page: import('@playwright/test').Page) {
     await face.settle(60_000);
     const { rest, positions } = face.getSkin();
     let moved = 0;
-    for (let i = 0; i < rest.length; i += 3) moved = Math.max(moved, Math.hypot(positions[i] - rest[i], positions[i + 1] - rest[i + 1], positions[i + 2] - rest[i + 2]));
+    for (let i = 0; i < rest.length; i += 3)
+      moved = Math.max(moved, Math.hypot(positions[i] - rest[i], positions[i + 1] - rest[i + 1], positions[i + 2] - rest[i + 2]));
     let size = 0;
     for (let k = 0; k < 3; k++) {
       const axis = Array.from(rest).filter((_, i) => i % 3 === k);

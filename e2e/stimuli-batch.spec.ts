@@ -38,7 +38,12 @@ test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a s
         { name: 'smile', expression: { AU12: 1 }, intensity: [0.3, 1], camera: [{}, { yaw: 40, distance: 0.7 }] },
         {
           name: 'brows',
-          timeline: { format: 'softface-timeline', version: 1, tracks: {}, actions: [{ target: 'AU1', start: 0, intensity: 1, onset: 0.3, apex: 0.2, offset: 0.3 }] },
+          timeline: {
+            format: 'softface-timeline',
+            version: 1,
+            tracks: {},
+            actions: [{ target: 'AU1', start: 0, intensity: 1, onset: 0.3, apex: 0.2, offset: 0.3 }],
+          },
           fps: 5,
         },
       ],
@@ -60,7 +65,10 @@ test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a s
 
   // The pictures are of what the list asked: the stronger smile and the other camera each change the picture.
   const picture = (f: string): Buffer => readFileSync(join(out, f));
-  const differs = { intensity: (await comparePictures(page, picture(files[0]), picture(files[2]))).mean, camera: (await comparePictures(page, picture(files[0]), picture(files[1]))).mean };
+  const differs = {
+    intensity: (await comparePictures(page, picture(files[0]), picture(files[2]))).mean,
+    camera: (await comparePictures(page, picture(files[0]), picture(files[1]))).mean,
+  };
   console.log(`mean pixel difference: intensity 0.3 vs 1 ${differs.intensity.toFixed(2)}, front vs turned ${differs.camera.toFixed(2)}`);
   expect(differs.intensity).toBeGreaterThan(0.2);
   expect(differs.camera).toBeGreaterThan(2);

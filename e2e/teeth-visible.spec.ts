@@ -32,7 +32,9 @@ async function mouthBox(page: Page): Promise<Box> {
     const mouth = at('orbicularis-oris-tightener');
     const left = at('orbicularis-oculi-orbital-l');
     const right = at('orbicularis-oculi-orbital-r');
-    const perMetre = Math.hypot(left.x - right.x, left.y - right.y) / Math.abs(centre('orbicularis-oculi-orbital-l')[0] - centre('orbicularis-oculi-orbital-r')[0]);
+    const perMetre =
+      Math.hypot(left.x - right.x, left.y - right.y) /
+      Math.abs(centre('orbicularis-oculi-orbital-l')[0] - centre('orbicularis-oculi-orbital-r')[0]);
     return { x: mouth.x - 0.028 * perMetre, y: mouth.y - 0.012 * perMetre, width: 0.056 * perMetre, height: 0.04 * perMetre };
   });
 }
@@ -43,16 +45,21 @@ async function mouthBox(page: Page): Promise<Box> {
  */
 async function toothPixels(page: Page, box: Box): Promise<{ count: number; total: number }> {
   const png = await stillScreenshot(page, { clip: box });
-  return measurePNG(page, png, ({ pixels }) => {
-    const d = pixels.data;
-    let count = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      const [r, g, b] = [d[i], d[i + 1], d[i + 2]];
-      // Measured: enamel about (215, 209, 198); lit skin and lips (215, 187, 168) and redder.
-      if (g > 150 && r - g < 14 && r - b < 30) count++;
-    }
-    return { count, total: d.length / 4 };
-  }, {});
+  return measurePNG(
+    page,
+    png,
+    ({ pixels }) => {
+      const d = pixels.data;
+      let count = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        const [r, g, b] = [d[i], d[i + 1], d[i + 2]];
+        // Measured: enamel about (215, 209, 198); lit skin and lips (215, 187, 168) and redder.
+        if (g > 150 && r - g < 14 && r - b < 30) count++;
+      }
+      return { count, total: d.length / 4 };
+    },
+    {},
+  );
 }
 
 test('with the jaw open (AU26) the teeth show between the lips; closed at rest, no more than a hairline does', async ({ page }) => {
@@ -70,7 +77,10 @@ test('with the jaw open (AU26) the teeth show between the lips; closed at rest, 
   // The same open mouth with the teeth hidden: what is left of tooth colour is not the teeth.
   await page.evaluate(() => window.face.setRenderOptions({ showTeeth: false }));
   const hidden = await toothPixels(page, box);
-  console.log(`tooth-coloured pixels of ${open.total} in the mouth: rest ${rest.count}, AU26 ${open.count}, AU26 with the teeth hidden ${hidden.count}`);
+  console.log(
+    `tooth-coloured pixels of ${open.total} in the mouth: rest ${rest.count}, ` +
+      `AU26 ${open.count}, AU26 with the teeth hidden ${hidden.count}`,
+  );
 
   expect(hidden.count).toBe(0);
   // Closed, the lips meet along a parting line a fraction of a millimetre wide: at most a hairline of enamel shows

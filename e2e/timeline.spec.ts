@@ -12,8 +12,18 @@ const TIMELINE = {
   version: 1,
   duration: 3,
   tracks: {
-    AU12: { keys: [{ time: 0, value: 0 }, { time: 2, value: 1 }] },
-    'preset:happiness': { keys: [{ time: 0, value: 0, easing: 'ease-in-out' }, { time: 3, value: 0.4 }] },
+    AU12: {
+      keys: [
+        { time: 0, value: 0 },
+        { time: 2, value: 1 },
+      ],
+    },
+    'preset:happiness': {
+      keys: [
+        { time: 0, value: 0, easing: 'ease-in-out' },
+        { time: 3, value: 0.4 },
+      ],
+    },
   },
   actions: [{ target: 'AU6', start: 0.5, intensity: 0.6, onset: 0.5, apex: 1, offset: 0.5 }],
 };
@@ -41,7 +51,8 @@ test('the handle plays, pauses and seeks a timeline; the face and the sliders fo
     await window.face.settle(45_000);
     const { rest, positions } = window.face.getSkin();
     let m = 0;
-    for (let i = 0; i < rest.length; i += 3) m = Math.max(m, Math.hypot(positions[i] - rest[i], positions[i + 1] - rest[i + 1], positions[i + 2] - rest[i + 2]));
+    for (let i = 0; i < rest.length; i += 3)
+      m = Math.max(m, Math.hypot(positions[i] - rest[i], positions[i + 1] - rest[i + 1], positions[i + 2] - rest[i + 2]));
     return m;
   });
   expect(moved).toBeGreaterThan(0.002);
@@ -85,7 +96,11 @@ test('a bad timeline is refused with its path-named message and changes nothing,
     window.face.setTimeline(t);
     window.face.seek(1);
   }, TIMELINE);
-  const before = await page.evaluate(() => ({ timeline: window.face.getTimeline(), state: window.face.timelineState(), units: window.face.getActionUnits() }));
+  const before = await page.evaluate(() => ({
+    timeline: window.face.getTimeline(),
+    state: window.face.timelineState(),
+    units: window.face.getActionUnits(),
+  }));
 
   const bad = structuredClone(TIMELINE);
   bad.tracks.AU12.keys.push({ time: 1, value: 0.5 });
@@ -107,15 +122,31 @@ test('a bad timeline is refused with its path-named message and changes nothing,
     }
   }, TIMELINE);
   expect(nan).toBe('setTimeline: actions[0].intensity: expected a number, got NaN');
-  expect(await page.evaluate(() => ({ timeline: window.face.getTimeline(), state: window.face.timelineState(), units: window.face.getActionUnits() }))).toEqual(before);
+  expect(
+    await page.evaluate(() => ({
+      timeline: window.face.getTimeline(),
+      state: window.face.timelineState(),
+      units: window.face.getActionUnits(),
+    })),
+  ).toEqual(before);
 
   // The same through the panel's import: the message shows in the folder, and the timeline stays.
   await openFolder(page, 'Timeline');
   const wrong = structuredClone(TIMELINE) as Record<string, unknown>;
   (wrong.tracks as Record<string, unknown>).AU99 = { keys: [{ time: 0, value: 1 }] };
-  await control(page, 'timeline-file').setInputFiles({ name: 'wrong.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(wrong)) });
+  await control(page, 'timeline-file').setInputFiles({
+    name: 'wrong.json',
+    mimeType: 'application/json',
+    buffer: Buffer.from(JSON.stringify(wrong)),
+  });
   await expect(control(page, 'timeline-message')).toContainText('wrong.json: tracks.AU99: unknown Action Unit id "AU99"');
-  expect(await page.evaluate(() => ({ timeline: window.face.getTimeline(), state: window.face.timelineState(), units: window.face.getActionUnits() }))).toEqual(before);
+  expect(
+    await page.evaluate(() => ({
+      timeline: window.face.getTimeline(),
+      state: window.face.timelineState(),
+      units: window.face.getActionUnits(),
+    })),
+  ).toEqual(before);
 });
 
 test('the Timeline panel adds an action, plays and pauses, seeks with its slider, imports and exports files', async ({ page }) => {
@@ -149,7 +180,11 @@ test('the Timeline panel adds an action, plays and pauses, seeks with its slider
   expect(await page.evaluate(() => window.face.getActionUnits().AU26)).toBeCloseTo(0.8, 9);
 
   // Importing a file replaces the timeline.
-  await control(page, 'timeline-file').setInputFiles({ name: 'smile.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(TIMELINE)) });
+  await control(page, 'timeline-file').setInputFiles({
+    name: 'smile.json',
+    mimeType: 'application/json',
+    buffer: Buffer.from(JSON.stringify(TIMELINE)),
+  });
   await expect(control(page, 'timeline-message')).toHaveText('imported smile.json');
   expect(await page.evaluate(() => window.face.getTimeline())).toEqual(TIMELINE);
   await expect(control(page, 'timeline-keys')).toContainText('AU12: 0 s 0 → 2 s 1');
@@ -176,7 +211,13 @@ test('a short timeline round-trips through the URL hash', async ({ page }) => {
   const copy = await page.context().newPage();
   await openFace(copy, link);
   expect(await copy.evaluate(() => window.face.getTimeline())).toEqual(TIMELINE);
-  expect(await copy.evaluate(() => window.face.timelineState())).toEqual({ loaded: true, playing: false, time: 0, duration: 3, loop: false });
+  expect(await copy.evaluate(() => window.face.timelineState())).toEqual({
+    loaded: true,
+    playing: false,
+    time: 0,
+    duration: 3,
+    loop: false,
+  });
   await copy.close();
 
   // A long timeline stays out of the link (the expression still goes in).

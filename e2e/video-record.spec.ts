@@ -35,7 +35,9 @@ interface Decoded {
 async function decode(context: BrowserContext, webm: string, neutral: string): Promise<Decoded> {
   const page = await context.newPage();
   try {
-    await page.route(`${DECODER_ORIGIN}/**`, (route) => route.fulfill({ contentType: 'text/html', body: '<!doctype html><title>decode</title>' }));
+    await page.route(`${DECODER_ORIGIN}/**`, (route) =>
+      route.fulfill({ contentType: 'text/html', body: '<!doctype html><title>decode</title>' }),
+    );
     await page.goto(`${DECODER_ORIGIN}/`);
     await page.addScriptTag({ path: MEDIABUNNY });
     return await page.evaluate(
@@ -52,14 +54,25 @@ async function decode(context: BrowserContext, webm: string, neutral: string): P
         for await (const packet of new M.EncodedPacketSink(track).packets()) decoder.decode(packet.toEncodedVideoChunk());
         await decoder.flush();
         if (failure) throw failure;
-        const reference = await createImageBitmap(new Blob([Uint8Array.from(atob(neutral), (c) => c.charCodeAt(0))], { type: 'image/png' }));
+        const reference = await createImageBitmap(
+          new Blob([Uint8Array.from(atob(neutral), (c) => c.charCodeAt(0))], { type: 'image/png' }),
+        );
         const w = config.codedWidth!;
         const h = config.codedHeight!;
         const canvas = new OffscreenCanvas(w, h);
         const ctx = canvas.getContext('2d', { willReadFrequently: true })!;
         ctx.drawImage(reference, 0, 0);
         const base = ctx.getImageData(0, 0, w, h).data;
-        const out = { codec: config.codec, width: w, height: h, timestamps: [] as number[], hashes: [] as string[], meanDifference: [] as number[], changed: [] as number[], centroid: [] as [number, number][] };
+        const out = {
+          codec: config.codec,
+          width: w,
+          height: h,
+          timestamps: [] as number[],
+          hashes: [] as string[],
+          meanDifference: [] as number[],
+          changed: [] as number[],
+          centroid: [] as [number, number][],
+        };
         for (const frame of frames) {
           out.timestamps.push(frame.timestamp);
           ctx.drawImage(frame, 0, 0);
@@ -95,7 +108,10 @@ async function decode(context: BrowserContext, webm: string, neutral: string): P
 
 test.use({ viewport: { width: 320, height: 240 } });
 
-test('record video: 2 s at 10 fps decode to 20 frames from the neutral face, the smile in the middle, the same twice', async ({ page, context }) => {
+test('record video: 2 s at 10 fps decode to 20 frames from the neutral face, the smile in the middle, the same twice', async ({
+  page,
+  context,
+}) => {
   test.setTimeout(120_000);
   await openFace(page, '/?resolution=low');
   const recorded = await page.evaluate(async (timeline) => {
@@ -126,7 +142,10 @@ test('record video: 2 s at 10 fps decode to 20 frames from the neutral face, the
       playingAfter: face.timelineState().playing,
       mode: face.stats().mode,
       type: first.type,
-      canvas: [document.querySelector('#viewport canvas')!.clientWidth, (document.querySelector('#viewport canvas') as HTMLCanvasElement).width],
+      canvas: [
+        document.querySelector('#viewport canvas')!.clientWidth,
+        (document.querySelector('#viewport canvas') as HTMLCanvasElement).width,
+      ],
       progress,
       firstMs,
       neutral: await toBase64(neutral),
@@ -147,7 +166,10 @@ test('record video: 2 s at 10 fps decode to 20 frames from the neutral face, the
   expect(recorded.progress[19]).toBe(1);
 
   const first = await decode(context, recorded.first, recorded.neutral);
-  console.log(`${first.codec} ${first.width} x ${first.height}; mean difference from neutral ${first.meanDifference.map((d) => d.toFixed(1)).join(' ')}`);
+  console.log(
+    `${first.codec} ${first.width} x ${first.height}; mean difference from ` +
+      `neutral ${first.meanDifference.map((d) => d.toFixed(1)).join(' ')}`,
+  );
   console.log(`changed pixels ${first.changed.join(' ')}; middle centroid ${first.centroid[10].map((c) => c.toFixed(2))}`);
   expect(first.codec).toMatch(/^(vp09|vp8)/);
   expect([first.width, first.height]).toEqual([320, 240]);
@@ -201,7 +223,14 @@ test.describe('the Video panel', () => {
     const refused = await page.evaluate(async (timeline) => {
       const face = window.face;
       const messages: string[] = [];
-      for (const options of [{ timeline, fps: Number.NaN }, { timeline, width: 0 }, { timeline, width: 8192 }, { timeline, height: 241 }, {}, { timeline, format: 'gif' }]) {
+      for (const options of [
+        { timeline, fps: Number.NaN },
+        { timeline, width: 0 },
+        { timeline, width: 8192 },
+        { timeline, height: 241 },
+        {},
+        { timeline, format: 'gif' },
+      ]) {
         try {
           await face.recordVideo(options as never);
           messages.push('recorded');

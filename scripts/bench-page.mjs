@@ -75,7 +75,8 @@ async function timeItem(page, item, nearFrames = null) {
       const poll = () => {
         const s = face.stats();
         const n = s.frames - firstFrame;
-        if (n > 0 && (frames.length === 0 || frames[frames.length - 1].n !== n)) frames.push({ t: performance.now() - t0, n, x: nearFrames === null ? face.getSkin().positions : null });
+        if (n > 0 && (frames.length === 0 || frames[frames.length - 1].n !== n))
+          frames.push({ t: performance.now() - t0, n, x: nearFrames === null ? face.getSkin().positions : null });
         if (sleptAt === null && n > 0 && s.sleeping) sleptAt = { t: performance.now() - t0, n };
         for (const d of draws) {
           if (d.fence === null || gl.getSyncParameter(d.fence, gl.SYNC_STATUS) !== gl.SIGNALED) continue;
@@ -86,7 +87,12 @@ async function timeItem(page, item, nearFrames = null) {
         if (polling) setTimeout(poll, 2);
       };
       const sample = () => {
-        draws.push({ t: performance.now() - t0, n: face.stats().frames - firstFrame, fence: gl?.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0) ?? null, doneMs: null });
+        draws.push({
+          t: performance.now() - t0,
+          n: face.stats().frames - firstFrame,
+          fence: gl?.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0) ?? null,
+          doneMs: null,
+        });
         if (polling) requestAnimationFrame(sample);
       };
       if (item === 'reset') face.reset();
@@ -102,11 +108,15 @@ async function timeItem(page, item, nearFrames = null) {
       const final = item === 'reset' ? skin.rest : skin.positions;
       const farthest = (a, b) => {
         let worst = 0;
-        for (let i = 0; i < a.length; i += 3) worst = Math.max(worst, (a[i] - b[i]) ** 2 + (a[i + 1] - b[i + 1]) ** 2 + (a[i + 2] - b[i + 2]) ** 2);
+        for (let i = 0; i < a.length; i += 3)
+          worst = Math.max(worst, (a[i] - b[i]) ** 2 + (a[i + 1] - b[i + 1]) ** 2 + (a[i + 2] - b[i + 2]) ** 2);
         return Math.sqrt(worst);
       };
       const tolerance = item === 'reset' ? atRest : nearFinal * farthest(start, final);
-      const near = nearFrames === null ? (frames.find((f) => farthest(f.x, final) <= tolerance) ?? null) : (frames.find((f) => f.n >= nearFrames) ?? null);
+      const near =
+        nearFrames === null
+          ? (frames.find((f) => farthest(f.x, final) <= tolerance) ?? null)
+          : (frames.find((f) => f.n >= nearFrames) ?? null);
       /** When the GPU had drawn the first animation frame that saw solver frame `n` or a later one. */
       const shown = (n) => draws.find((d) => d.n >= n)?.doneMs ?? null;
       for (const d of draws) if (d.fence !== null) gl.deleteSync(d.fence);
@@ -125,7 +135,10 @@ async function timeItem(page, item, nearFrames = null) {
 }
 
 if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
-const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
+const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], {
+  stdio: 'ignore',
+  detached: true,
+});
 const browser = await launchBrowser();
 const results = [];
 /** The shape pass's frames to 2 % and to sleep, per item. */
@@ -145,7 +158,10 @@ try {
         continue;
       }
       if (r.sleepFrames !== shape.get(item).sleepFrames) {
-        throw new Error(`${item}: the solver slept after ${r.sleepFrames} frames, the shape pass after ${shape.get(item).sleepFrames}: the runs did not solve the same frames`);
+        throw new Error(
+          `${item}: the solver slept after ${r.sleepFrames} frames, the shape pass ` +
+            `after ${shape.get(item).sleepFrames}: the runs did not solve the same frames`,
+        );
       }
       results.push({ run, workers: stats.workers, mode: stats.mode, ...r });
     }
@@ -183,16 +199,27 @@ const rows = items.map((item) => {
   };
 });
 const fmt = (x) => (x === null ? '-' : String(Math.round(x)));
-const header = '| input | ms to 2 % (median, range) | frames to 2 % | first frame on screen, ms | 2 % on screen, ms | ms to sleep | frames to sleep |';
-console.log(`The page: ${resolution} head, ${results[0]?.workers ?? '?'} worker(s), ${results[0]?.mode ?? '?'} mode, ${runs} run(s), ${cpus().length} cores\n`);
+const header =
+  '| input | ms to 2 % (median, range) | frames to 2 % | first frame on screen, ms | 2 % on screen, ms | ms to sleep | frames to sleep |';
+console.log(
+  `The page: ${resolution} head, ${results[0]?.workers ?? '?'} worker(s), ` +
+    `${results[0]?.mode ?? '?'} mode, ${runs} run(s), ${cpus().length} cores\n`,
+);
 console.log(
   [
     header,
     header.replace(/[^|]+/g, ' --- '),
-    ...rows.map((r) => `| ${r.item} | ${fmt(r.medianNearMs)} (${r.nearMs}) | ${fmt(r.nearFrames)} | ${fmt(r.medianFirstShownMs)} (${r.firstShownMs}) | ${fmt(r.medianDrawnMs)} (${r.drawnMs}) | ${fmt(r.medianSleepMs)} (${r.sleepMs}) | ${fmt(r.sleepFrames)} |`),
+    ...rows.map(
+      (r) =>
+        `| ${r.item} | ${fmt(r.medianNearMs)} (${r.nearMs}) | ${fmt(r.nearFrames)} | ${fmt(r.medianFirstShownMs)} (${r.firstShownMs}) ` +
+        `| ${fmt(r.medianDrawnMs)} (${r.drawnMs}) | ${fmt(r.medianSleepMs)} (${r.sleepMs}) | ${fmt(r.sleepFrames)} |`,
+    ),
   ].join('\n'),
 );
 mkdirSync('bench-results', { recursive: true });
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length };
-writeFileSync('bench-results/page.json', JSON.stringify({ machine, date: new Date().toISOString(), resolution, runs, rows, results }, null, 2) + '\n');
+writeFileSync(
+  'bench-results/page.json',
+  JSON.stringify({ machine, date: new Date().toISOString(), resolution, runs, rows, results }, null, 2) + '\n',
+);
 console.log('\nwrote bench-results/page.json');

@@ -69,7 +69,9 @@ try {
   const { port } = server.address() as { port: number };
   await tab.goto(`http://127.0.0.1:${port}/`);
   await tab.waitForFunction(() => document.documentElement.dataset.state === 'ready');
-  const baked: { size: number; levels: number; halves: number[][] } = await tab.evaluate(() => (window as unknown as { bake(): never }).bake());
+  const baked: { size: number; levels: number; halves: number[][] } = await tab.evaluate(() =>
+    (window as unknown as { bake(): never }).bake(),
+  );
   const { size, levels } = baked;
   const faces = Array.from({ length: levels }, (_, l) => Array.from({ length: 6 }, (_, f) => Uint16Array.from(baked.halves[6 * l + f])));
   const bytes = gzipSync(encodeEnvironment({ size, levels, faces }), { level: 9 });

@@ -29,12 +29,19 @@ for (const level of levels) {
   const file = join(outDir, `head-${level.stats.name}.glb`);
   writeFileSync(file, bytes);
   const s = level.stats;
-  console.log(`${file}: ${s.skinVertices} skin vertices, ${s.renderVertices} render vertices, ${s.triangles} triangles, ${(bytes.length / 1e6).toFixed(2)} MB`);
+  console.log(
+    `${file}: ${s.skinVertices} skin vertices, ${s.renderVertices} render ` +
+      `vertices, ${s.triangles} triangles, ${(bytes.length / 1e6).toFixed(2)} MB`,
+  );
 }
 writeFileSync(join(outDir, 'CREDITS.md'), credits(levels.map((l) => l.stats)));
 
 function credits(stats: LevelStats[]): string {
-  const rows = stats.map((s) => `| \`head-${s.name}.glb\` | ${s.subdivisions} | ${s.skinVertices.toLocaleString('en-US')} | ${s.renderVertices.toLocaleString('en-US')} | ${s.quads.toLocaleString('en-US')} | ${s.triangles.toLocaleString('en-US')} |`);
+  const rows = stats.map(
+    (s) =>
+      `| \`head-${s.name}.glb\` | ${s.subdivisions} | ${s.skinVertices.toLocaleString('en-US')} | ` +
+      `${s.renderVertices.toLocaleString('en-US')} | ${s.quads.toLocaleString('en-US')} | ${s.triangles.toLocaleString('en-US')} |`,
+  );
   return `# Head models: credits and how they were made
 
 The head is derived from the **MakeHuman hm08 base mesh**, released under

@@ -81,7 +81,12 @@ const copy = (m: PolyMesh): PolyMesh => ({ ...m, positions: m.positions.slice() 
   const count = renumber.size;
   const compact = new Float32Array(3 * count);
   for (const [v, r] of renumber) compact.set(welded.subarray(3 * v, 3 * v + 3), 3 * r);
-  const geometry = { positions: compact, normals: vertexNormals(compact, compactIndices), uvs: new Float32Array(2 * count), indices: compactIndices };
+  const geometry = {
+    positions: compact,
+    normals: vertexNormals(compact, compactIndices),
+    uvs: new Float32Array(2 * count),
+    indices: compactIndices,
+  };
   // The eyes: spheres of the hm08 eye's radius (12 mm) times the head's scale, at the reshaped eye joints.
   const eyeball = sphereGeometry(0.012 * 1.08, 24, 16);
   const eyes = (['eye-l', 'eye-r'] as const).map((name) => ({
@@ -90,16 +95,24 @@ const copy = (m: PolyMesh): PolyMesh => ({ ...m, positions: m.positions.slice() 
     meshName: 'Eyeball',
     parts: [{ geometry: eyeball, material: MATERIALS.sclera }],
   }));
-  const bytes = await writeGlb({ name: 'Character', children: [{ name: 'Head_Geo', parts: [{ geometry, material: MATERIALS.skin }] }, ...eyes] }, {});
+  const bytes = await writeGlb(
+    { name: 'Character', children: [{ name: 'Head_Geo', parts: [{ geometry, material: MATERIALS.skin }] }, ...eyes] },
+    {},
+  );
   writeFileSync(join(outDir, 'wide-jaw.glb'), bytes);
-  console.log(`wide-jaw.glb: ${count} vertices, ${compactIndices.length / 3} triangles (from ${triangles.length / 3}), ${bytes.length} bytes`);
+  console.log(
+    `wide-jaw.glb: ${count} vertices, ${compactIndices.length / 3} triangles (from ${triangles.length / 3}), ${bytes.length} bytes`,
+  );
 }
 
 // (b) A longer face and a narrower head, as quads with UV seams, in centimetres, +z up, the face toward -y.
 {
   const mesh = copy(head);
   reshape(mesh, ([x, y, z]) => [0.95 * x, 0.691 + 1.07 * (y - 0.691), z]);
-  const lines = ['# softface test head: the MakeHuman hm08 head (CC0) with a longer face; centimetres, +z up, face toward -y', 'o LongFace'];
+  const lines = [
+    '# softface test head: the MakeHuman hm08 head (CC0) with a longer face; centimetres, +z up, face toward -y',
+    'o LongFace',
+  ];
   for (let v = 0; v < vertexCount(mesh); v++) {
     const [x, y, z] = [0, 1, 2].map((k) => mesh.positions[3 * v + k] * DECIMETRE * 100);
     lines.push(`v ${x.toFixed(4)} ${(-z).toFixed(4)} ${y.toFixed(4)}`);
@@ -148,7 +161,12 @@ function sphereGeometry(radius: number, segments: number, rings: number) {
       indices.push(a, b, a + 1, a + 1, b, b + 1);
     }
   }
-  return { positions: Float32Array.from(positions), normals: Float32Array.from(normals), uvs: Float32Array.from(uvs), indices: Uint32Array.from(indices) };
+  return {
+    positions: Float32Array.from(positions),
+    normals: Float32Array.from(normals),
+    uvs: Float32Array.from(uvs),
+    indices: Uint32Array.from(indices),
+  };
 }
 
 /** Area-weighted vertex normals of a triangle mesh. */

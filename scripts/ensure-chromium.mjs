@@ -21,7 +21,7 @@ if (!existsSync(path)) {
     );
     process.exit(1);
   }
-  console.log('No Chromium found: installing Debian\'s chromium package (apt-get install -y chromium)…');
+  console.log("No Chromium found: installing Debian's chromium package (apt-get install -y chromium)…");
   execSync('apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y chromium', { stdio: 'inherit' });
   if (!existsSync(chromiumPath())) {
     console.error('apt-get finished but no Chromium binary appeared at /usr/bin/chromium.');

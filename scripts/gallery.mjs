@@ -21,9 +21,7 @@ const option = (name, fallback) => {
   return i >= 0 && i + 1 < args.length ? args[i + 1] : fallback;
 };
 const resolution = args[0] && !args[0].startsWith('--') ? args[0] : 'medium';
-const only = option('only', '')
-  .split(',')
-  .filter(Boolean);
+const only = option('only', '').split(',').filter(Boolean);
 const out = option('out', 'docs/images/gallery.jpg');
 const columns = Number(option('columns', '6'));
 /** Page areas (CSS pixels of the 640 x 640 view) framing parts of the face; close-ups are shot at 3x. */
@@ -44,7 +42,10 @@ const PORT = 4180;
 const SETTLE_MS = 60_000;
 
 if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
-const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
+const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], {
+  stdio: 'ignore',
+  detached: true,
+});
 const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: 640, height: 640 }, deviceScaleFactor: region.scale });
@@ -55,7 +56,11 @@ try {
   const items =
     only.length > 0
       ? only
-      : await page.evaluate(() => ['neutral', ...window.face.listActionUnits().map((au) => au.id), ...window.face.listPresets().map((p) => p.name)]);
+      : await page.evaluate(() => [
+          'neutral',
+          ...window.face.listActionUnits().map((au) => au.id),
+          ...window.face.listPresets().map((p) => p.name),
+        ]);
   const tiles = [];
   for (const item of items) {
     const settled = await page.evaluate(

@@ -20,7 +20,10 @@ const VIEWPORT = { width: 1024, height: 768 };
 const CLOSEUP = { x: 256, y: 150, width: 512, height: 384 };
 
 if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
-const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], { stdio: 'ignore', detached: true });
+const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(PORT), '--strictPort'], {
+  stdio: 'ignore',
+  detached: true,
+});
 const browser = await launchBrowser();
 
 /** Opens the page (retrying while the server starts) and waits for the head. */
@@ -61,7 +64,8 @@ try {
     // the time to pose them (`hairMeanMs`, `hairMedianMs`).
     for (const hair of [true, false]) {
       await page.evaluate((on) => window.face.setAppearance({ brows: on, lashes: on }), hair);
-      for (let run = 0; run < 3; run++) console.log(`hair ${hair ? 'on ' : 'off'}`, JSON.stringify(await page.evaluate(() => window.face.measureRender(100))));
+      for (let run = 0; run < 3; run++)
+        console.log(`hair ${hair ? 'on ' : 'off'}`, JSON.stringify(await page.evaluate(() => window.face.measureRender(100))));
     }
     await page.close();
   }

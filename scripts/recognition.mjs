@@ -117,7 +117,10 @@ const FILES = {
   '/face-api.esm.js': { file: join(faceApiDir, 'dist', 'face-api.esm.js'), type: 'text/javascript' },
 };
 for (const model of ['ssd_mobilenetv1_model', 'tiny_face_detector_model', 'face_landmark_68_model', 'face_expression_model']) {
-  FILES[`/model/${model}-weights_manifest.json`] = { file: join(faceApiDir, 'model', `${model}-weights_manifest.json`), type: 'application/json' };
+  FILES[`/model/${model}-weights_manifest.json`] = {
+    file: join(faceApiDir, 'model', `${model}-weights_manifest.json`),
+    type: 'application/json',
+  };
   FILES[`/model/${model}.bin`] = { file: join(faceApiDir, 'model', `${model}.bin`), type: 'application/octet-stream' };
 }
 const PAGE = `<!doctype html>
@@ -212,7 +215,9 @@ export async function startRecognizer(browser, options = {}) {
           image.src = `data:image/png;base64,${data}`;
           await image.decode();
           const options =
-            detector === 'ssd' ? new faceapi.SsdMobilenetv1Options({ minConfidence: minScore }) : new faceapi.TinyFaceDetectorOptions({ inputSize: 416, scoreThreshold: minScore });
+            detector === 'ssd'
+              ? new faceapi.SsdMobilenetv1Options({ minConfidence: minScore })
+              : new faceapi.TinyFaceDetectorOptions({ inputSize: 416, scoreThreshold: minScore });
           // face-api's own pipelines: with landmarks, FaceExpressionNet reads the cut around the 68 points (as its
           // README's examples do); without, the detector's box.
           const detection = faceapi.detectSingleFace(image, options);

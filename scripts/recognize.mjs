@@ -16,7 +16,8 @@
  *   --backend cpu|webgl   tfjs's backend (default cpu)
  *   --crop aligned|box    what FaceExpressionNet reads: the detector's box (default) or the cut around the 68 landmarks
  *   --images DIR          also write each render to DIR/<preset>_<view>.png
- *   --sheet FILE          also write a sheet (JPEG, or PNG if FILE ends in .png) of neutral and the seven prototypes from the front, each labelled
+ *   --sheet FILE          also write a sheet (JPEG, or PNG if FILE ends in .png) of neutral and the seven prototypes from the front, each
+ * labelled
  *                         with what it is meant to show and what the recogniser read
  *   --no-build            serve the last build (dist/) as it is
  */
@@ -27,7 +28,16 @@ import { createServer } from 'node:net';
 import { cpus } from 'node:os';
 import { join } from 'node:path';
 import { launchBrowser, openApp } from './browser.mjs';
-import { DEFAULTS, FACE_API_VERSION, HIDE_PANELS_CSS, VIEWS, meantLabel, renderView, showExpression, startRecognizer } from './recognition.mjs';
+import {
+  DEFAULTS,
+  FACE_API_VERSION,
+  HIDE_PANELS_CSS,
+  VIEWS,
+  meantLabel,
+  renderView,
+  showExpression,
+  startRecognizer,
+} from './recognition.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -62,7 +72,10 @@ async function freePort() {
 const started = performance.now();
 if (!args.includes('--no-build')) execSync('npx vite build', { stdio: 'ignore' });
 const port = await freePort();
-const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(port), '--strictPort'], { stdio: 'ignore', detached: true });
+const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port', String(port), '--strictPort'], {
+  stdio: 'ignore',
+  detached: true,
+});
 const browser = await launchBrowser();
 const rows = [];
 /** Front renders kept for the sheet, by preset. */
@@ -97,7 +110,9 @@ try {
         box: r.box,
       };
       rows.push(row);
-      console.log(`${preset} ${view}: ${r.detected ? `${r.top} ${r.probability.toFixed(2)}` : 'no face found'}${settled ? '' : ' (not settled)'}`);
+      console.log(
+        `${preset} ${view}: ${r.detected ? `${r.top} ${r.probability.toFixed(2)}` : 'no face found'}${settled ? '' : ' (not settled)'}`,
+      );
     }
   }
   await recognizer.close();
@@ -105,7 +120,10 @@ try {
     const tiles = SHEET_PRESETS.filter((n) => fronts.has(n)).map((n) => {
       const { png, r, meant } = fronts.get(n);
       const read = r.detected ? `${r.top} ${r.probability.toFixed(2)}` : 'no face found';
-      const label = meant === null ? `read: ${read} (no class for it)` : `read: ${read}${r.top === meant ? '' : ` (${meant} ${(r.expressions?.[meant] ?? 0).toFixed(2)})`}`;
+      const label =
+        meant === null
+          ? `read: ${read} (no class for it)`
+          : `read: ${read}${r.top === meant ? '' : ` (${meant} ${(r.expressions?.[meant] ?? 0).toFixed(2)})`}`;
       return { name: n, label, hit: meant !== null && r.top === meant, data: png.toString('base64') };
     });
     const jpeg = await page.evaluate(
@@ -171,12 +189,24 @@ const summary = {
 const p = (x) => (x === null || x === undefined ? '-' : x.toFixed(2));
 const table = [
   ['preset', 'view', 'top', 'p', 'meant', 'p(meant)'],
-  ...rows.map((r) => [r.preset + (r.settled ? '' : ' (not settled)'), r.view, r.detected ? r.top : 'no face', p(r.probability), r.meant ?? '—', p(r.meantProbability)]),
+  ...rows.map((r) => [
+    r.preset + (r.settled ? '' : ' (not settled)'),
+    r.view,
+    r.detected ? r.top : 'no face',
+    p(r.probability),
+    r.meant ?? '—',
+    p(r.meantProbability),
+  ]),
 ];
 const widths = table[0].map((_, c) => Math.max(...table.map((row) => row[c].length)));
-console.log(`\nRecognition: ${resolution} head, ${SIZE} x ${SIZE} px, face-api ${FACE_API_VERSION} (${detector} detector, ${crop} crop, FaceExpressionNet, tfjs ${backend})\n`);
+console.log(
+  `\nRecognition: ${resolution} head, ${SIZE} x ${SIZE} px, face-api ${FACE_API_VERSION} ` +
+    `(${detector} detector, ${crop} crop, FaceExpressionNet, tfjs ${backend})\n`,
+);
 console.log(table.map((row) => row.map((cell, c) => cell.padEnd(widths[c])).join('  ')).join('\n'));
-const g = (x, n) => `${x.frontHits} of ${n} in front, ${x.allViewsHits} of ${n} in all three views, ${x.viewHits} of ${x.views} views; mean p(meant) ${p(x.meanMeantProbability)}`;
+const g = (x, n) =>
+  `${x.frontHits} of ${n} in front, ${x.allViewsHits} of ${n} in all three views, ` +
+  `${x.viewHits} of ${x.views} views; mean p(meant) ${p(x.meanMeantProbability)}`;
 const neutralLine = neutralRows.map((r) => `${r.view} ${hit(r) ? 'yes' : `no (${r.top})`} ${p(r.meantProbability)}`).join(', ');
 const summaryLines = [
   `neutral reads neutral: ${neutralLine}`,
@@ -193,7 +223,8 @@ const cell = (r) => {
 };
 const presets = rows.map((r) => r.preset).filter((x, i, all) => all.indexOf(x) === i);
 const markdown = [
-  'Each cell: the recogniser\'s top class and its probability, in bold where it is the meant class; otherwise the meant class\'s probability follows in brackets.',
+  "Each cell: the recogniser's top class and its probability, in bold where it is " +
+    "the meant class; otherwise the meant class's probability follows in brackets.",
   '',
   '| preset | meant | front | 30° left | 30° right |',
   '| --- | --- | --- | --- | --- |',

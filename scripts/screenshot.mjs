@@ -23,7 +23,10 @@ try {
   await openApp(page, url);
   if (headFile) {
     const bytes = [...readFileSync(headFile)];
-    await page.evaluate(async ({ name, bytes }) => window.face.loadHead(new File([new Uint8Array(bytes)], name)), { name: basename(headFile), bytes });
+    await page.evaluate(async ({ name, bytes }) => window.face.loadHead(new File([new Uint8Array(bytes)], name)), {
+      name: basename(headFile),
+      bytes,
+    });
   }
   // Let the skin settle first, so that an expression given in the URL hash is shown finished.
   await page.evaluate(() => window.face?.settle?.(60_000));

@@ -29,7 +29,8 @@ describe('edge loops and the cut', () => {
     const loops = boundaryLoops(cut.mesh);
     expect(loops).toHaveLength(1);
     expect(loops[0].map((v) => cut.sourceVertex[v]).sort((a, b) => a - b)).toEqual([...loop].sort((a, b) => a - b));
-    for (let v = 0; v < vertexCount(cut.mesh); v++) expect(cut.mesh.positions[3 * v + 1]).toBeGreaterThanOrEqual(tube.positions[3 * loop[0] + 1]);
+    for (let v = 0; v < vertexCount(cut.mesh); v++)
+      expect(cut.mesh.positions[3 * v + 1]).toBeGreaterThanOrEqual(tube.positions[3 * loop[0] + 1]);
   });
 
   it('says so when the loop does not separate the mesh', () => {

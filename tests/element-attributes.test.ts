@@ -5,8 +5,23 @@ const read = (attributes: Partial<Record<FaceAttribute, string>>) => readAttribu
 
 describe('<soft-face> attributes', () => {
   it('read as the options they ask for, absent ones as the defaults', () => {
-    expect(ATTRIBUTE_DEFAULTS).toMatchObject({ resolution: 'medium', solver: 'auto', panels: false, eyeSimulation: false, background: '#1d2024' });
-    expect(read({ resolution: 'low', panels: '', 'eye-simulation': 'eye-simulation', background: 'transparent', expression: '#AU12=0.8&preset:happiness=0.3', preset: 'surprise:0.5, fear' })).toEqual({
+    expect(ATTRIBUTE_DEFAULTS).toMatchObject({
+      resolution: 'medium',
+      solver: 'auto',
+      panels: false,
+      eyeSimulation: false,
+      background: '#1d2024',
+    });
+    expect(
+      read({
+        resolution: 'low',
+        panels: '',
+        'eye-simulation': 'eye-simulation',
+        background: 'transparent',
+        expression: '#AU12=0.8&preset:happiness=0.3',
+        preset: 'surprise:0.5, fear',
+      }),
+    ).toEqual({
       resolution: 'low',
       solver: 'auto',
       panels: true,
@@ -27,7 +42,9 @@ describe('<soft-face> attributes', () => {
     expect(() => read({ resolution: 'ultra' })).toThrow('<soft-face>: resolution must be one of low, medium, high, got "ultra"');
     expect(() => read({ panels: 'yes' })).toThrow('<soft-face>: panels must be present (on), "true" or "false", got "yes"');
     expect(() => read({ expression: 'AU12=' })).toThrow('<soft-face> expression: AU12 needs a finite number, got ""');
-    expect(() => readPresets('happiness:lots')).toThrow('<soft-face>: preset "happiness:lots" must be a preset name and a weight, like "happiness:0.5"');
+    expect(() => readPresets('happiness:lots')).toThrow(
+      '<soft-face>: preset "happiness:lots" must be a preset name and a weight, like "happiness:0.5"',
+    );
     expect(() => readPresets(':1')).toThrow('<soft-face>: preset ":1" must be a preset name');
   });
 });

@@ -1,11 +1,24 @@
 import { describe, expect, it } from 'vitest';
-import { appearanceChanges, decodeAppearance, decodeExpression, encodeExpression, expressionEntries, readExpression } from '../src/embed/expression-hash';
+import {
+  appearanceChanges,
+  decodeAppearance,
+  decodeExpression,
+  encodeExpression,
+  expressionEntries,
+  readExpression,
+} from '../src/embed/expression-hash';
 
 describe('the expression carried in the URL hash', () => {
   it('round-trips non-zero Action Units and preset weights, leaving zeros out', () => {
-    const hash = encodeExpression({ actionUnits: { AU12L: 0.5, AU12R: 0.5, AU17: 0, AU4R: 0.123456 }, presets: { happiness: 0.3, 'thesis-anger': 0, 'a b&c': 1 } });
+    const hash = encodeExpression({
+      actionUnits: { AU12L: 0.5, AU12R: 0.5, AU17: 0, AU4R: 0.123456 },
+      presets: { happiness: 0.3, 'thesis-anger': 0, 'a b&c': 1 },
+    });
     expect(hash).toBe('#AU12L=0.5&AU12R=0.5&AU4R=0.1235&preset%3Ahappiness=0.3&preset%3Aa+b%26c=1');
-    expect(decodeExpression(hash)).toEqual({ actionUnits: { AU12L: 0.5, AU12R: 0.5, AU4R: 0.1235 }, presets: { happiness: 0.3, 'a b&c': 1 } });
+    expect(decodeExpression(hash)).toEqual({
+      actionUnits: { AU12L: 0.5, AU12R: 0.5, AU4R: 0.1235 },
+      presets: { happiness: 0.3, 'a b&c': 1 },
+    });
   });
 
   it('is empty for the neutral face', () => {
@@ -14,7 +27,10 @@ describe('the expression carried in the URL hash', () => {
   });
 
   it('skips entries that are not finite numbers (the face checks the ids)', () => {
-    expect(decodeExpression('#AU1L=abc&AU2L=&AU4=Infinity&AU5L=0.2&preset:x=NaN&AU99=1')).toEqual({ actionUnits: { AU5L: 0.2, AU99: 1 }, presets: {} });
+    expect(decodeExpression('#AU1L=abc&AU2L=&AU4=Infinity&AU5L=0.2&preset:x=NaN&AU99=1')).toEqual({
+      actionUnits: { AU5L: 0.2, AU99: 1 },
+      presets: {},
+    });
   });
 });
 
@@ -32,7 +48,9 @@ describe('an expression given to createFace, setExpression or <soft-face>', () =
     expect(() => readExpression('AU12=abc', 'setExpression')).toThrow('setExpression: AU12 needs a finite number, got "abc"');
     expect(() => readExpression('AU12=', 'setExpression')).toThrow('setExpression: AU12 needs a finite number, got ""');
     expect(() => readExpression({ AU12: Infinity })).toThrow('expression: AU12 needs a finite number, got Infinity');
-    expect(() => readExpression(42 as unknown as string)).toThrow('expression: needs text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got 42');
+    expect(() => readExpression(42 as unknown as string)).toThrow(
+      'expression: needs text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got 42',
+    );
   });
 });
 
@@ -50,6 +68,10 @@ describe('appearance in the hash', () => {
   });
 
   it('keeps entries of the wrong form as given, for the face to refuse by name', () => {
-    expect(decodeAppearance('#appearance.browDensity=lots&appearance.brows=yes&appearance.beard=1', defaults)).toEqual({ browDensity: 'lots', brows: 'yes', beard: '1' });
+    expect(decodeAppearance('#appearance.browDensity=lots&appearance.brows=yes&appearance.beard=1', defaults)).toEqual({
+      browDensity: 'lots',
+      brows: 'yes',
+      beard: '1',
+    });
   });
 });

@@ -9,13 +9,16 @@ describe('every preset at full weight on the medium head', () => {
     sim = await loadHeadSimulation('medium');
   });
 
-  it.each(loadDefaultRig().presets.map((p) => p.name))('%s comes to rest with no NaN and no triangle turned over, and back to rest after a reset', (name) => {
-    const r = settleExpression(sim, name, MAX_SETTLE_FRAMES);
-    expect(r).toMatchObject({ sleeping: true, nonFinite: 0, inverted: 0 });
-    // Converged, not stopped by the safety net (anger's eye corner once circled until it).
-    expect(r.frames).toBeLessThan(LATE_MOTION);
-    const back = returnToRest(sim);
-    expect(back.sleeping).toBe(true);
-    expect(back.farthest).toBeLessThan(1e-5);
-  });
+  it.each(loadDefaultRig().presets.map((p) => p.name))(
+    '%s comes to rest with no NaN and no triangle turned over, and back to rest after a reset',
+    (name) => {
+      const r = settleExpression(sim, name, MAX_SETTLE_FRAMES);
+      expect(r).toMatchObject({ sleeping: true, nonFinite: 0, inverted: 0 });
+      // Converged, not stopped by the safety net (anger's eye corner once circled until it).
+      expect(r.frames).toBeLessThan(LATE_MOTION);
+      const back = returnToRest(sim);
+      expect(back.sleeping).toBe(true);
+      expect(back.farthest).toBeLessThan(1e-5);
+    },
+  );
 });

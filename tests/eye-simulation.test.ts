@@ -14,7 +14,15 @@ interface Run {
 /** Runs a simulation for `ms` in steps of `step` ms and records every blink and saccade it starts. */
 function run(seed: number, ms: number, step: number): Run {
   const sim = new EyeSimulation({ seed });
-  const out: Run = { blinkStarts: [], saccades: [], yaw: [Infinity, -Infinity], pitch: [Infinity, -Infinity], maxBlink: 0, maxLidClose: 0, maxLidRaise: 0 };
+  const out: Run = {
+    blinkStarts: [],
+    saccades: [],
+    yaw: [Infinity, -Infinity],
+    pitch: [Infinity, -Infinity],
+    maxBlink: 0,
+    maxLidClose: 0,
+    maxLidRaise: 0,
+  };
   for (let t = 0; t <= ms; t += step) {
     const blinks = sim.blinks;
     const saccades = sim.saccades;

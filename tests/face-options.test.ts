@@ -4,8 +4,26 @@ import { FACE_DEFAULTS, checkFaceOptions } from '../src/embed/face-options';
 describe('createFace options', () => {
   it('fill in the defaults, and keep what is given', () => {
     expect(checkFaceOptions(undefined)).toEqual(FACE_DEFAULTS);
-    const o = checkFaceOptions({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, motionResolution: 1, resolutionUnused: undefined });
-    expect(o).toMatchObject({ resolution: 'low', solver: 'transfer', panels: true, background: 'transparent', expression: 'AU12=0.8', light: { keyAzimuth: 90 }, motionResolution: 1, eyeSimulation: false });
+    const o = checkFaceOptions({
+      resolution: 'low',
+      solver: 'transfer',
+      panels: true,
+      background: 'transparent',
+      expression: 'AU12=0.8',
+      light: { keyAzimuth: 90 },
+      motionResolution: 1,
+      resolutionUnused: undefined,
+    });
+    expect(o).toMatchObject({
+      resolution: 'low',
+      solver: 'transfer',
+      panels: true,
+      background: 'transparent',
+      expression: 'AU12=0.8',
+      light: { keyAzimuth: 90 },
+      motionResolution: 1,
+      eyeSimulation: false,
+    });
   });
 
   it('reject a bad option with a message naming it and the value', () => {
@@ -23,7 +41,11 @@ describe('createFace options', () => {
       [{ light: { keyAzimuth: 400 } }, 'createFace: light: keyAzimuth must be within 0..360, got 400'],
       [{ expression: 'AU12=much' }, 'createFace: expression: AU12 needs a finite number, got "much"'],
       [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12 needs a finite number, got "0.5"'],
-      [{ resolutoin: 'low' }, 'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, expression, eyeSimulation, light, appearance, background, motionResolution, assetBase, onResolution, autosave)'],
+      [
+        { resolutoin: 'low' },
+        'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, ' +
+          'expression, eyeSimulation, light, appearance, background, motionResolution, assetBase, onResolution, autosave)',
+      ],
       [{ autosave: 1 }, 'createFace: autosave must be true, false or a key, got 1'],
       [{ appearance: { browDensity: 2 } }, 'createFace: appearance: browDensity must be within 0..1, got 2'],
       [{ appearance: { browColor: 'brown' } }, 'createFace: appearance: browColor needs a colour "#rrggbb", got "brown"'],

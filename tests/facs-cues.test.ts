@@ -1,6 +1,23 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { ACTION_UNIT_MEASURES, displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
-import { betweenBrows, crowsFeetFan, cueMarks, foldAcrossOverAlong, foreheadMiddleAndSides, innerBrowGap, lidMarginRoughness, lipBulges, loadIrisTops, nasolabialDeepening, noseSide, redRoughness, lowerLidSag, middleLidGap, scleraAboveIris, type CueMarks } from './fixtures/facs-cues';
+import {
+  betweenBrows,
+  crowsFeetFan,
+  cueMarks,
+  foldAcrossOverAlong,
+  foreheadMiddleAndSides,
+  innerBrowGap,
+  lidMarginRoughness,
+  lipBulges,
+  loadIrisTops,
+  nasolabialDeepening,
+  noseSide,
+  redRoughness,
+  lowerLidSag,
+  middleLidGap,
+  scleraAboveIris,
+  type CueMarks,
+} from './fixtures/facs-cues';
 import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
 

@@ -7,7 +7,18 @@ import type { LinearMuscle, MuscleSide, Rig } from '../src/core/rig-types';
 const DEFAULT_RIG = parseRigText(readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8'), 'default.json');
 
 function linear(name: string, side: MuscleSide): LinearMuscle {
-  return { name, side, type: 'linear', origin: [0, 0, 0], insertion: [0, 1, 0], angle: 20, falloffStart: 0.8, falloffEnd: 1.2, strength: 0.2, normalWeight: 0.2 };
+  return {
+    name,
+    side,
+    type: 'linear',
+    origin: [0, 0, 0],
+    insertion: [0, 1, 0],
+    angle: 20,
+    falloffStart: 0.8,
+    falloffEnd: 1.2,
+    strength: 0.2,
+    normalWeight: 0.2,
+  };
 }
 
 /** A small rig: AU12 on two muscles per side with different weights, AU26 and AU27 sharing one jaw-like muscle. */
@@ -44,12 +55,23 @@ function contractions(state: ExpressionState, rig: Rig = SMALL_RIG): Record<stri
 describe('the Action Unit catalogue', () => {
   it('has the 21 Action Units, with midline ones 9, 17, 18, 23, 24, 25, 26 and 27', () => {
     expect(ACTION_UNITS.map((a) => a.number)).toEqual([1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 43]);
-    expect(ACTION_UNITS.filter((a) => !a.bilateral).map((a) => a.id)).toEqual(['AU9', 'AU17', 'AU18', 'AU23', 'AU24', 'AU25', 'AU26', 'AU27']);
+    expect(ACTION_UNITS.filter((a) => !a.bilateral).map((a) => a.id)).toEqual([
+      'AU9',
+      'AU17',
+      'AU18',
+      'AU23',
+      'AU24',
+      'AU25',
+      'AU26',
+      'AU27',
+    ]);
     expect(ACTION_UNITS.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', bilateral: true });
   });
 
   it('matches the default rig (ids, names, sides)', () => {
-    expect(DEFAULT_RIG.actionUnits.map(({ id, name, bilateral }) => ({ id, name, bilateral }))).toEqual(ACTION_UNITS.map(({ id, name, bilateral }) => ({ id, name, bilateral })));
+    expect(DEFAULT_RIG.actionUnits.map(({ id, name, bilateral }) => ({ id, name, bilateral }))).toEqual(
+      ACTION_UNITS.map(({ id, name, bilateral }) => ({ id, name, bilateral })),
+    );
   });
 });
 
@@ -151,7 +173,9 @@ describe('ExpressionState presets', () => {
     const c = contractions(s, DEFAULT_RIG);
     expect(c['zygomaticus-major-r']).toBeCloseTo(0.25, 6);
     expect(c['buccinator-r']).toBeCloseTo(0.7, 6);
-    const driven = Object.entries(c).filter(([, v]) => v > 0).map(([name]) => name);
+    const driven = Object.entries(c)
+      .filter(([, v]) => v > 0)
+      .map(([name]) => name);
     expect(driven.sort()).toEqual(['buccinator-r', 'zygomaticus-major-r']);
   });
 
@@ -170,7 +194,9 @@ describe('ExpressionState presets', () => {
   });
 
   it('refuses presets naming Action Units outside the catalogue', () => {
-    expect(() => new ExpressionState([{ name: 'odd', source: 'test', actionUnits: { AU13: 0.5 } }])).toThrow(/preset "odd" names unknown Action Unit id "AU13"/);
+    expect(() => new ExpressionState([{ name: 'odd', source: 'test', actionUnits: { AU13: 0.5 } }])).toThrow(
+      /preset "odd" names unknown Action Unit id "AU13"/,
+    );
     expect(() => new ExpressionState([{ name: 'odd', source: 'test', actionUnits: { AU17R: 0.5 } }])).toThrow(/"AU17R"/);
   });
 });
@@ -218,7 +244,10 @@ describe('ExpressionState.muscleContractions', () => {
   });
 
   it('refuses a rig whose Action Units do not fit the catalogue', () => {
-    const odd: Rig = { ...SMALL_RIG, actionUnits: [{ ...SMALL_RIG.actionUnits[1], bilateral: true, muscles: [{ muscle: 'jaw', side: 'left', weight: 1 }] }] };
+    const odd: Rig = {
+      ...SMALL_RIG,
+      actionUnits: [{ ...SMALL_RIG.actionUnits[1], bilateral: true, muscles: [{ muscle: 'jaw', side: 'left', weight: 1 }] }],
+    };
     expect(() => new ExpressionState().muscleContractions(odd, new Float32Array(5))).toThrow(/AU26 as bilateral/);
   });
 });

@@ -83,15 +83,20 @@ describe('HeadExporter.buildScene', () => {
     // One clip, the same weights on every mesh with targets.
     expect(built.animations).toHaveLength(1);
     expect(built.animations[0].duration).toBe(1);
-    expect(built.animations[0].tracks.map((t) => t.name)).toEqual([`${skin.uuid}.morphTargetInfluences`, `${teeth.uuid}.morphTargetInfluences`]);
+    expect(built.animations[0].tracks.map((t) => t.name)).toEqual([
+      `${skin.uuid}.morphTargetInfluences`,
+      `${teeth.uuid}.morphTargetInfluences`,
+    ]);
     expect(Array.from(built.animations[0].tracks[1].values)).toEqual([0, 0, 1, 0.5]);
     built.dispose();
   });
 
-  it('refuses a shape whose vertex count is not the skin\'s', () => {
+  it("refuses a shape whose vertex count is not the skin's", () => {
     const head = smallHead();
     const rest = restOf(head.skin);
     const exporter = new HeadExporter(head, rest.positions, rest.normals);
-    expect(() => exporter.buildScene([{ name: 'AU12', positions: new Float32Array(3), normals: new Float32Array(3), jaw: null }], null)).toThrow(/the shape AU12 has 1 vertices/);
+    expect(() =>
+      exporter.buildScene([{ name: 'AU12', positions: new Float32Array(3), normals: new Float32Array(3), jaw: null }], null),
+    ).toThrow(/the shape AU12 has 1 vertices/);
   });
 });

@@ -51,7 +51,8 @@ describe.each(['low', 'medium', 'high'] as const)('hair placed on the %s head', 
     const { out } = rootsAndTips(lashes, skin.positions, skin.normals);
     let nearest = Infinity;
     for (let v = 0; v < out.length; v += 3) {
-      for (const eye of [skin.pivots['eye-l'], skin.pivots['eye-r']]) nearest = Math.min(nearest, Math.hypot(out[v] - eye[0], out[v + 1] - eye[1], out[v + 2] - eye[2]));
+      for (const eye of [skin.pivots['eye-l'], skin.pivots['eye-r']])
+        nearest = Math.min(nearest, Math.hypot(out[v] - eye[0], out[v + 1] - eye[1], out[v + 2] - eye[2]));
     }
     expect(nearest).toBeGreaterThan(skin.eyeRadius);
   });

@@ -9,9 +9,12 @@ function sheet(n: number) {
   const height = (x: number, y: number): number => 0.002 * Math.sin(40 * x) * Math.cos(30 * y);
   for (let j = 0; j < n; j++) {
     for (let i = 0; i < n; i++) {
-      const x = (i / (n - 1)) * 0.05, y = (j / (n - 1)) * 0.05, v = 3 * (j * n + i);
+      const x = (i / (n - 1)) * 0.05,
+        y = (j / (n - 1)) * 0.05,
+        v = 3 * (j * n + i);
       positions.set([x, y, height(x, y)], v);
-      const dx = 0.08 * Math.cos(40 * x) * Math.cos(30 * y), dy = -0.06 * Math.sin(40 * x) * Math.sin(30 * y);
+      const dx = 0.08 * Math.cos(40 * x) * Math.cos(30 * y),
+        dy = -0.06 * Math.sin(40 * x) * Math.sin(30 * y);
       const l = Math.hypot(dx, dy, 1);
       normals.set([-dx / l, -dy / l, 1 / l], v);
     }
@@ -35,11 +38,18 @@ function hairsOn(s: ReturnType<typeof sheet>, count: number, seed: number): { st
   const frame = new Float64Array(12);
   for (let k = 0; k < count; k++) {
     const t = Math.floor(random() * (s.triangles.length / 3));
-    const w0 = random(), w1 = random() * (1 - w0);
+    const w0 = random(),
+      w1 = random() * (1 - w0);
     const corners = [s.triangles[3 * t], s.triangles[3 * t + 1], s.triangles[3 * t + 2]] as [number, number, number];
     const weights = [w0, w1, 1 - w0 - w1] as [number, number, number];
     // The anchor's frame at rest, to stand the hair on: root on the skin, the rest off it along a random direction.
-    anchorFrame({ corners: Uint32Array.from(corners), weights: Float32Array.from(weights) } as HairStrands, 0, s.positions, s.normals, frame);
+    anchorFrame(
+      { corners: Uint32Array.from(corners), weights: Float32Array.from(weights) } as HairStrands,
+      0,
+      s.positions,
+      s.normals,
+      frame,
+    );
     const vertices = new Float32Array(3 * 2 * POINTS);
     const dir = [random() - 0.5, random() - 0.5, 0.3 + random()];
     for (let p = 0; p < POINTS; p++) {
@@ -72,7 +82,9 @@ describe('hair posed on a skin', () => {
   it('turns and moves with a skin that turns and moves as a whole', () => {
     // A turn of 50 degrees about a slanted axis, then a shift.
     const axis = [0.3, -0.5, 0.8].map((v, _i, a) => v / Math.hypot(...a));
-    const angle = (50 * Math.PI) / 180, c = Math.cos(angle), sn = Math.sin(angle);
+    const angle = (50 * Math.PI) / 180,
+      c = Math.cos(angle),
+      sn = Math.sin(angle);
     const turn = (v: ArrayLike<number>, o: number, shift: number[]): number[] => {
       const [x, y, z] = [v[o], v[o + 1], v[o + 2]];
       const d = axis[0] * x + axis[1] * y + axis[2] * z;
@@ -106,7 +118,9 @@ describe('hair posed on a skin', () => {
     const per = strands.verticesPerHair;
     let worst = 0;
     for (let h = 0; h < strands.count; h++) {
-      const anchor = [0, 1, 2].map((k) => [0, 1, 2].reduce((sum, c) => sum + strands.weights[3 * h + c] * moved[3 * strands.corners[3 * h + c] + k], 0));
+      const anchor = [0, 1, 2].map((k) =>
+        [0, 1, 2].reduce((sum, c) => sum + strands.weights[3 * h + c] * moved[3 * strands.corners[3 * h + c] + k], 0),
+      );
       const root = [0, 1, 2].map((k) => {
         let sum = 0;
         for (let r = 0; r < ROOT_VERTICES; r++) sum += out[3 * (h * per + r) + k];

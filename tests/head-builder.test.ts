@@ -46,7 +46,18 @@ describe('head model builder (on a synthetic hm08-like mesh)', () => {
     expect(extras.pivots['eye-l'][0]).toBeCloseTo(0.03, 9);
     expect(extras.pivots['eye-l'][1]).toBeCloseTo(0.73, 9);
     expect(extras.pivots['jaw-hinge'][1]).toBeCloseTo(0.69, 9);
-    expect(Object.keys(extras.pivots).sort()).toEqual(['chin', 'eye-l', 'eye-r', 'head', 'jaw-hinge', 'lowerlid-l', 'lowerlid-r', 'neck', 'upperlid-l', 'upperlid-r']);
+    expect(Object.keys(extras.pivots).sort()).toEqual([
+      'chin',
+      'eye-l',
+      'eye-r',
+      'head',
+      'jaw-hinge',
+      'lowerlid-l',
+      'lowerlid-r',
+      'neck',
+      'upperlid-l',
+      'upperlid-r',
+    ]);
   });
 
   it('names the missing group when the OBJ is not an hm08 base mesh', () => {

@@ -28,7 +28,11 @@ describe('thin-plate warp', () => {
   it('is an affine map where the landmarks differ by one, far from them too', () => {
     const affine = (p: readonly number[]): Vec3 => [1.2 * p[0] + 0.1 * p[1] + 0.02, 0.9 * p[1] - 0.05, 1.05 * p[2] + 0.1 * p[0]];
     const w = fitThinPlate(sources, sources.map(affine));
-    for (const p of [[0.3, -0.2, 0.5], [0, 0.7, 0.1], [-1, 2, 3]]) {
+    for (const p of [
+      [0.3, -0.2, 0.5],
+      [0, 0.7, 0.1],
+      [-1, 2, 3],
+    ]) {
       const q = warpPoint(w, p);
       const e = affine(p);
       for (let k = 0; k < 3; k++) expect(q[k]).toBeCloseTo(e[k], 9);
@@ -55,18 +59,34 @@ describe('thin-plate warp', () => {
 
   it('refuses too few or coplanar points, naming the problem', () => {
     expect(() => fitThinPlate(sources.slice(0, 3), targets.slice(0, 3))).toThrow('needs at least 4 point pairs, got 3');
-    const flat: Vec3[] = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]];
+    const flat: Vec3[] = [
+      [0, 0, 0],
+      [1, 0, 0],
+      [0, 1, 0],
+      [1, 1, 0],
+      [2, 1, 0],
+    ];
     expect(() => fitThinPlate(flat, flat)).toThrow('degenerate');
-    expect(() => fitThinPlate(sources, targets.map((p, i) => (i === 3 ? [Number.NaN, 0, 0] : p)))).toThrow('target point 3 is not finite');
+    expect(() =>
+      fitThinPlate(
+        sources,
+        targets.map((p, i) => (i === 3 ? [Number.NaN, 0, 0] : p)),
+      ),
+    ).toThrow('target point 3 is not finite');
   });
 });
 
 describe('carrying the rig over', () => {
   it('leaves the rig as it is under the identity warp', () => {
     const warped = warpRig(rig, fitThinPlate(sources, sources));
-    const flat = (x: unknown): number[] => (typeof x === 'number' ? [x] : Array.isArray(x) || (typeof x === 'object' && x) ? Object.values(x as object).flatMap(flat) : []);
+    const flat = (x: unknown): number[] =>
+      typeof x === 'number' ? [x] : Array.isArray(x) || (typeof x === 'object' && x) ? Object.values(x as object).flatMap(flat) : [];
     const a = flat(rig.muscles);
-    const b = flat(warped.muscles.map((m) => (m.type === 'jaw' && !rig.muscles.find((r) => r.name === m.name && r.type === 'jaw' && r.joint) ? { ...m, joint: undefined } : m)));
+    const b = flat(
+      warped.muscles.map((m) =>
+        m.type === 'jaw' && !rig.muscles.find((r) => r.name === m.name && r.type === 'jaw' && r.joint) ? { ...m, joint: undefined } : m,
+      ),
+    );
     expect(b.length).toBe(a.length);
     a.forEach((x, i) => expect(Math.abs(x - b[i])).toBeLessThan(2e-4));
   });
@@ -141,7 +161,9 @@ describe('head mesh checks and frame', () => {
     far[7] = 99999;
     expect(() => checkHeadMesh({ positions, indices: far }, 'x.glb')).toThrow('x.glb: triangle 2 uses vertex 99999, but the mesh has');
     expect(() => checkHeadMesh({ positions, indices: new Uint32Array(0) }, 'e.obj')).toThrow('e.obj: the mesh has no triangles');
-    expect(() => checkHeadMesh({ positions, indices: new Uint32Array(3 * 200_001) }, 'big.glb')).toThrow('big.glb: the mesh has 200,001 triangles, more than the 200,000');
+    expect(() => checkHeadMesh({ positions, indices: new Uint32Array(3 * 200_001) }, 'big.glb')).toThrow(
+      'big.glb: the mesh has 200,001 triangles, more than the 200,000',
+    );
     expect(() => checkHeadMesh({ positions, indices }, 'ok')).not.toThrow();
   });
 
@@ -185,7 +207,9 @@ describe('head mesh checks and frame', () => {
 
   it('refuses a mesh no unit makes head-sized', () => {
     const { positions, indices } = sphere(40, 8);
-    expect(() => findHeadFrame(positions, indices, {}, 'moon.obj')).toThrow('moon.obj: the mesh is 80.0 units across, not the size of a head in m, dm, cm or mm; give its units');
+    expect(() => findHeadFrame(positions, indices, {}, 'moon.obj')).toThrow(
+      'moon.obj: the mesh is 80.0 units across, not the size of a head in m, dm, cm or mm; give its units',
+    );
   });
 });
 

@@ -15,10 +15,16 @@ describe('loadHead options', () => {
   it('refuses a bad option, naming it and what it takes', () => {
     expect(() => checkLoadHeadOptions({ units: 'inch' })).toThrow('loadHead: units must be one of auto, m, dm, cm, mm, got "inch"');
     expect(() => checkLoadHeadOptions({ up: 'y' })).toThrow('loadHead: up must be one of auto, +x, -x, +y, -y, +z, -z, got "y"');
-    expect(() => checkLoadHeadOptions({ resolution: 'ultra' })).toThrow('loadHead: resolution must be one of low, medium, high, file, got "ultra"');
+    expect(() => checkLoadHeadOptions({ resolution: 'ultra' })).toThrow(
+      'loadHead: resolution must be one of low, medium, high, file, got "ultra"',
+    );
     expect(() => checkLoadHeadOptions({ landmarks: { nose: [0, 0, 0] } })).toThrow('loadHead: landmarks: unknown landmark "nose"');
-    expect(() => checkLoadHeadOptions({ landmarks: { chin: [0, Number.NaN, 0] } })).toThrow('loadHead: landmarks.chin must be [x, y, z] in metres, got [0,null,0]');
-    expect(() => checkLoadHeadOptions({ scale: 2 })).toThrow('loadHead: unknown option "scale" (options: skin, units, up, forward, landmarks, resolution)');
+    expect(() => checkLoadHeadOptions({ landmarks: { chin: [0, Number.NaN, 0] } })).toThrow(
+      'loadHead: landmarks.chin must be [x, y, z] in metres, got [0,null,0]',
+    );
+    expect(() => checkLoadHeadOptions({ scale: 2 })).toThrow(
+      'loadHead: unknown option "scale" (options: skin, units, up, forward, landmarks, resolution)',
+    );
   });
 
   it('refuses a file over the size limit before reading it', async () => {

@@ -15,7 +15,10 @@ describe.each(FILES)('public/models/head-$name.glb', ({ name, min, max }) => {
   let indices: Uint32Array;
   beforeAll(async () => {
     doc = await new NodeIO().readBinary(new Uint8Array(readFileSync(`public/models/head-${name}.glb`)));
-    const skin = doc.getRoot().listMeshes().find((m) => m.getName() === 'skin')!;
+    const skin = doc
+      .getRoot()
+      .listMeshes()
+      .find((m) => m.getName() === 'skin')!;
     const prim = skin.listPrimitives()[0];
     positions = prim.getAttribute('POSITION')!.getArray() as Float32Array;
     indices = Uint32Array.from(prim.getIndices()!.getArray()!);
@@ -68,20 +71,37 @@ describe.each(FILES)('public/models/head-$name.glb', ({ name, min, max }) => {
   });
 
   it('has eyes at the eye pivots (left at +x), upper and lower teeth, a tongue under the jaw, and named pivots', () => {
-    const node = (n: string) => doc.getRoot().listNodes().find((x) => x.getName() === n);
+    const node = (n: string) =>
+      doc
+        .getRoot()
+        .listNodes()
+        .find((x) => x.getName() === n);
     const extras = doc.getRoot().getDefaultScene()!.getExtras() as { softface: { pivots: Record<string, number[]> } };
     expect(node('eye-l')!.getTranslation()).toEqual(extras.softface.pivots['eye-l']);
     expect(node('eye-l')!.getTranslation()[0]).toBeGreaterThan(0.02);
     expect(node('eye-r')!.getTranslation()[0]).toBeLessThan(-0.02);
-    expect(node('eye-l')!.getMesh()!.listPrimitives().map((p) => p.getMaterial()!.getName())).toEqual(['sclera', 'iris', 'cornea']);
-    for (const n of ['teeth-upper', 'teeth-lower', 'tongue']) expect(node(n)!.getMesh()!.listPrimitives()[0].getAttribute('POSITION')!.getCount()).toBeGreaterThan(100);
-    expect(node('jaw')!.listChildren().map((c) => c.getName())).toEqual(['teeth-lower', 'tongue']);
+    expect(
+      node('eye-l')!
+        .getMesh()!
+        .listPrimitives()
+        .map((p) => p.getMaterial()!.getName()),
+    ).toEqual(['sclera', 'iris', 'cornea']);
+    for (const n of ['teeth-upper', 'teeth-lower', 'tongue'])
+      expect(node(n)!.getMesh()!.listPrimitives()[0].getAttribute('POSITION')!.getCount()).toBeGreaterThan(100);
+    expect(
+      node('jaw')!
+        .listChildren()
+        .map((c) => c.getName()),
+    ).toEqual(['teeth-lower', 'tongue']);
     for (const p of ['eye-l', 'eye-r', 'upperlid-l', 'lowerlid-r', 'jaw-hinge', 'chin']) expect(node(`pivot-${p}`)).toBeDefined();
   });
 
   it('places the lower teeth under the upper teeth and the tongue inside the arch, in world space', () => {
     const worldBox = (n: string) => {
-      const node = doc.getRoot().listNodes().find((x) => x.getName() === n)!;
+      const node = doc
+        .getRoot()
+        .listNodes()
+        .find((x) => x.getName() === n)!;
       const m = node.getWorldMatrix(); // translations only: column-major, translation in 12..14
       const p = node.getMesh()!.listPrimitives()[0].getAttribute('POSITION')!.getArray()!;
       const min = [Infinity, Infinity, Infinity];

@@ -21,13 +21,25 @@ describe('planTargets', () => {
 
   it('refuses an unknown id or preset, one listed twice, and nothing to export, naming the option', () => {
     expect(() => planTargets(['AU99'], [], PRESETS, null)).toThrow(/exportGLTF: actionUnits: unknown Action Unit id "AU99"/);
-    expect(() => planTargets([], ['joy'], PRESETS, null)).toThrow(/exportGLTF: presets: unknown preset "joy" \(presets: happiness, surprise\)/);
+    expect(() => planTargets([], ['joy'], PRESETS, null)).toThrow(
+      /exportGLTF: presets: unknown preset "joy" \(presets: happiness, surprise\)/,
+    );
     expect(() => planTargets(['AU12', 'AU12'], [], PRESETS, null)).toThrow(/actionUnits: AU12 is listed twice/);
     expect(() => planTargets([], [], PRESETS, null)).toThrow(/exportGLTF: actionUnits and presets are empty and there is no timeline/);
   });
 
   it("adds the timeline's targets that were not asked for, once", () => {
-    const t = timeline({ tracks: { AU12: { keys: [{ time: 0, value: 0 }, { time: 1, value: 1 }] } }, actions: [{ target: 'preset:surprise', start: 0, intensity: 1, onset: 0.2, apex: 0, offset: 0.2 }] });
+    const t = timeline({
+      tracks: {
+        AU12: {
+          keys: [
+            { time: 0, value: 0 },
+            { time: 1, value: 1 },
+          ],
+        },
+      },
+      actions: [{ target: 'preset:surprise', start: 0, intensity: 1, onset: 0.2, apex: 0, offset: 0.2 }],
+    });
     expect(planTargets(['AU12'], [], PRESETS, t).map((x) => x.name)).toEqual(['AU12', 'surprise']);
     expect(planTargets([], [], PRESETS, t).map((x) => x.name)).toEqual(['AU12', 'surprise']);
   });
@@ -47,7 +59,12 @@ describe('timelineWeights', () => {
   it("samples at fps up to the duration and gives each target its side's or preset's value", () => {
     const t = timeline({
       tracks: {
-        AU12L: { keys: [{ time: 0, value: 0 }, { time: 1, value: 1 }] },
+        AU12L: {
+          keys: [
+            { time: 0, value: 0 },
+            { time: 1, value: 1 },
+          ],
+        },
         'preset:happiness': { keys: [{ time: 0, value: 0.5 }] },
       },
     });
@@ -64,7 +81,16 @@ describe('timelineWeights', () => {
   });
 
   it('ends on the duration when it is not a whole number of frames, and refuses a bad fps', () => {
-    const t = timeline({ tracks: { AU17: { keys: [{ time: 0, value: 0 }, { time: 0.3, value: 1 }] } } });
+    const t = timeline({
+      tracks: {
+        AU17: {
+          keys: [
+            { time: 0, value: 0 },
+            { time: 0.3, value: 1 },
+          ],
+        },
+      },
+    });
     const w = timelineWeights(t, timelineTargets(t), 10);
     expect(w.times.length).toBe(4);
     expect(w.times[3]).toBeCloseTo(0.3, 6);
@@ -77,7 +103,13 @@ describe('timelineWeights', () => {
 describe('checkExportOptions', () => {
   it('fills in the defaults and refuses unknown options and bad values, naming them', () => {
     expect(checkExportOptions(undefined)).toEqual(GLTF_EXPORT_DEFAULTS);
-    expect(checkExportOptions({ actionUnits: ['AU12'], fps: 24 })).toMatchObject({ actionUnits: ['AU12'], presets: [], fps: 24, binary: true, timeline: null });
+    expect(checkExportOptions({ actionUnits: ['AU12'], fps: 24 })).toMatchObject({
+      actionUnits: ['AU12'],
+      presets: [],
+      fps: 24,
+      binary: true,
+      timeline: null,
+    });
     expect(() => checkExportOptions({ actionUnit: ['AU12'] })).toThrow(/exportGLTF: unknown option "actionUnit"/);
     expect(() => checkExportOptions({ fps: Number.NaN })).toThrow(/exportGLTF: fps must be a number above 0 and at most 120, got NaN/);
     expect(() => checkExportOptions({ actionUnits: 'AU12' })).toThrow(/exportGLTF: actionUnits must be an array of strings/);

@@ -74,13 +74,28 @@ describe('a muscle brush (rest-space spheres)', () => {
 
   it('works for a sphincter too, and refuses a brush that is not spheres', () => {
     const rest = sheet(0.002);
-    const ring: SphincterMuscle = { name: 'r', side: 'mid', type: 'sphincter', center: [0, 0, 0], rotation: [0, 0, 0], radii: [0.01, 0.01, 0.01], innerRadii: [0.005, 0.005, 0.005], scale: [1, 1, 0], strength: 0.5, normalWeight: 0.2 };
+    const ring: SphincterMuscle = {
+      name: 'r',
+      side: 'mid',
+      type: 'sphincter',
+      center: [0, 0, 0],
+      rotation: [0, 0, 0],
+      radii: [0.01, 0.01, 0.01],
+      innerRadii: [0.005, 0.005, 0.005],
+      scale: [1, 1, 0],
+      strength: 0.5,
+      normalWeight: 0.2,
+    };
     const v = at(rest, 0.02, 0);
     expect(solve(rest, ring).weights[v]).toBe(0);
     const added = solve(rest, { ...ring, brush: { add: [[0.02, 0, 0, 0.004]], remove: [] } });
     expect(added.weights[v]).toBe(1);
     expect(added.targets[3 * v]).toBeCloseTo(0.02 * (1 - 0.5 / 8) ** 8, 6);
-    expect(() => validateMuscle({ ...ring, brush: { add: [[0, 0, 0]], remove: [] } } as never)).toThrow('muscle r: brush.add[0] must be [x, y, z, radius]');
-    expect(() => validateMuscle({ ...ring, brush: { add: [], remove: [[0, 0, 0, 0]] } })).toThrow('brush.remove[0] radius must be greater than 0');
+    expect(() => validateMuscle({ ...ring, brush: { add: [[0, 0, 0]], remove: [] } } as never)).toThrow(
+      'muscle r: brush.add[0] must be [x, y, z, radius]',
+    );
+    expect(() => validateMuscle({ ...ring, brush: { add: [], remove: [[0, 0, 0, 0]] } })).toThrow(
+      'brush.remove[0] radius must be greater than 0',
+    );
   });
 });

@@ -83,7 +83,8 @@ describe('MuscleView', () => {
 
   it('brightens a contracted muscle and leaves the others', () => {
     const view = new MuscleView(RIG.muscles);
-    const mesh = (name: string): { color: { r: number } } => (view.group.getObjectByName(name)!.children[0] as unknown as { material: { color: { r: number } } }).material;
+    const mesh = (name: string): { color: { r: number } } =>
+      (view.group.getObjectByName(name)!.children[0] as unknown as { material: { color: { r: number } } }).material;
     const before = mesh('mentalis').color.r;
     const c = new Float32Array(RIG.muscles.length);
     c[RIG.muscles.findIndex((m) => m.name === 'mentalis')] = 1;

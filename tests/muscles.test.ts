@@ -26,7 +26,11 @@ function line(a: Vec3, b: Vec3, step: number): Float32Array {
 }
 
 function outputsFor(vertexCount: number): MuscleOutputs {
-  return { targets: new Float32Array(3 * vertexCount), weights: new Float32Array(vertexCount), normalWeights: new Float32Array(vertexCount) };
+  return {
+    targets: new Float32Array(3 * vertexCount),
+    weights: new Float32Array(vertexCount),
+    normalWeights: new Float32Array(vertexCount),
+  };
 }
 
 /** Largest change of the displacement (target - rest) between neighbouring points of a line. */
@@ -62,7 +66,11 @@ function fieldJumps(field: MuscleField, c: number, points: Float32Array): { jump
 
 const sub = (a: ArrayLike<number>, b: ArrayLike<number>): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const dot = (a: ArrayLike<number>, b: ArrayLike<number>): number => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const cross = (a: ArrayLike<number>, b: ArrayLike<number>): Vec3 => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const cross = (a: ArrayLike<number>, b: ArrayLike<number>): Vec3 => [
+  a[1] * b[2] - a[2] * b[1],
+  a[2] * b[0] - a[0] * b[2],
+  a[0] * b[1] - a[1] * b[0],
+];
 const norm = (a: ArrayLike<number>): number => Math.hypot(a[0], a[1], a[2]);
 
 // Origin at 0, pulling along -y; length 4 cm, so Rs = 2 cm and Rf = 4.8 cm.
@@ -208,8 +216,14 @@ describe('linear muscle (Waters)', () => {
   it('is continuous across Rs, Rf and the cone edge', () => {
     const step = 1e-4;
     for (const [a, b] of [
-      [[0, 0.001, 0], [0, 0.06, 0]],
-      [[-0.03, 0.03, 0.005], [0.03, 0.03, 0.005]],
+      [
+        [0, 0.001, 0],
+        [0, 0.06, 0],
+      ],
+      [
+        [-0.03, 0.03, 0.005],
+        [0.03, 0.03, 0.005],
+      ],
     ] as [Vec3, Vec3][]) {
       const { jump, largest } = fieldJumps(field, 1, line(a, b, step));
       expect(largest).toBeGreaterThan(0.005);
@@ -306,10 +320,16 @@ describe('sphincter muscle', () => {
 
   it('is continuous through the centre and across the inner and outer surfaces', () => {
     const step = 1e-4;
-    const { jump, largest } = fieldJumps(field, 1, line([c[0] - 0.035, c[1] + 0.004, c[2] + 0.002], [c[0] + 0.035, c[1] + 0.004, c[2] + 0.002], step));
+    const { jump, largest } = fieldJumps(
+      field,
+      1,
+      line([c[0] - 0.035, c[1] + 0.004, c[2] + 0.002], [c[0] + 0.035, c[1] + 0.004, c[2] + 0.002], step),
+    );
     expect(largest).toBeGreaterThan(0.003);
     expect(jump).toBeLessThan(2 * step);
-    expect(fieldJumps(field, 1, line([c[0] - 0.035, c[1] + 0.004, c[2] + 0.002], [c[0] + 0.035, c[1] + 0.004, c[2] + 0.002], step / 2)).jump).toBeLessThan(0.6 * jump);
+    expect(
+      fieldJumps(field, 1, line([c[0] - 0.035, c[1] + 0.004, c[2] + 0.002], [c[0] + 0.035, c[1] + 0.004, c[2] + 0.002], step / 2)).jump,
+    ).toBeLessThan(0.6 * jump);
   });
 });
 
@@ -341,7 +361,11 @@ describe('lid muscle (rotation)', () => {
     const next = random(5);
     for (let trial = 0; trial < 50; trial++) {
       // Within 0.5 of the radii of the centre: inside the inner region (0.6).
-      const p: Vec3 = [LID.center[0] + 0.004 * (next() - 0.5), LID.center[1] + 0.004 * (next() - 0.5), LID.center[2] + 0.004 * (next() - 0.5)];
+      const p: Vec3 = [
+        LID.center[0] + 0.004 * (next() - 0.5),
+        LID.center[1] + 0.004 * (next() - 0.5),
+        LID.center[2] + 0.004 * (next() - 0.5),
+      ];
       const c = 0.2 + 0.8 * next();
       expect(field.displace(c, p[0], p[1], p[2], out)).toBe(1);
       expect(turnAngle(p, out)).toBeCloseTo(c * LID.maxAngle, 10);
@@ -453,9 +477,18 @@ describe('jaw muscle (rotation)', () => {
   it('fades continuously to zero at its faces', () => {
     const step = 1e-4;
     for (const [a, b] of [
-      [[0.02, -0.06, 0.07], [0.07, -0.06, 0.07]],
-      [[0.01, -0.1, 0.07], [0.01, -0.01, 0.07]],
-      [[0.01, -0.06, 0.05], [0.01, -0.06, 0.11]],
+      [
+        [0.02, -0.06, 0.07],
+        [0.07, -0.06, 0.07],
+      ],
+      [
+        [0.01, -0.1, 0.07],
+        [0.01, -0.01, 0.07],
+      ],
+      [
+        [0.01, -0.06, 0.05],
+        [0.01, -0.06, 0.11],
+      ],
     ] as [Vec3, Vec3][]) {
       const { jump, largest } = fieldJumps(field, 1, line(a, b, step));
       expect(largest).toBeGreaterThan(0.01);
@@ -486,13 +519,27 @@ describe('jaw muscle lip fade', () => {
 describe('combining muscles into solver inputs', () => {
   // Two linear muscles whose zones overlap, pulling toward origins 3 cm apart.
   const A: LinearMuscle = { ...LINEAR, name: 'overlap-a' };
-  const B: LinearMuscle = { ...LINEAR, name: 'overlap-b', origin: [0.03, 0, 0], insertion: [0.015, 0.035, 0.005], angle: 40, strength: 0.6, normalWeight: 0.5 };
+  const B: LinearMuscle = {
+    ...LINEAR,
+    name: 'overlap-b',
+    origin: [0.03, 0, 0],
+    insertion: [0.015, 0.035, 0.005],
+    angle: 40,
+    strength: 0.6,
+    normalWeight: 0.5,
+  };
 
   it('gives a continuous field where two linear muscles overlap (0.1 mm apart: no jump)', () => {
     const step = 1e-4;
     for (const [a, b] of [
-      [[-0.03, 0.03, 0.001], [0.06, 0.03, 0.001]],
-      [[0.012, -0.005, 0.001], [0.012, 0.06, 0.001]],
+      [
+        [-0.03, 0.03, 0.001],
+        [0.06, 0.03, 0.001],
+      ],
+      [
+        [0.012, -0.005, 0.001],
+        [0.012, 0.06, 0.001],
+      ],
     ] as [Vec3, Vec3][]) {
       const rest = line(a, b, step);
       const o = outputsFor(rest.length / 3);
@@ -506,7 +553,8 @@ describe('combining muscles into solver inputs', () => {
       // fields' slopes (about 2 each, see above) allow a few tenths of a millimetre.
       expect(jump).toBeLessThan(5 * step);
       let weightJump = 0;
-      for (let v = 1; v < o.weights.length; v++) weightJump = Math.max(weightJump, Math.abs(o.weights[v] - o.weights[v - 1]), Math.abs(o.normalWeights[v] - o.normalWeights[v - 1]));
+      for (let v = 1; v < o.weights.length; v++)
+        weightJump = Math.max(weightJump, Math.abs(o.weights[v] - o.weights[v - 1]), Math.abs(o.normalWeights[v] - o.normalWeights[v - 1]));
       expect(weightJump).toBeLessThan(0.02);
       // Continuity, not just a small slope: halving the spacing halves the largest jump.
       const fine = line(a, b, step / 2);
@@ -628,7 +676,8 @@ describe('combining muscles into solver inputs', () => {
     const grid = (spacing: number): Float32Array => {
       const count = Math.round(0.12 / (spacing * 0.001)) + 1;
       const p = new Float32Array(3 * count * count);
-      for (let j = 0; j < count; j++) for (let i = 0; i < count; i++) p.set([(i * spacing) / 1000 - 0.05, (j * spacing) / 1000 - 0.06, 0.004], 3 * (j * count + i));
+      for (let j = 0; j < count; j++)
+        for (let i = 0; i < count; i++) p.set([(i * spacing) / 1000 - 0.05, (j * spacing) / 1000 - 0.06, 0.004], 3 * (j * count + i));
       return p;
     };
     const fine = grid(1);
@@ -794,14 +843,22 @@ describe('runtime checks', () => {
   });
 
   it('rejects muscles whose field would be undefined, naming them', () => {
-    expect(() => validateMuscle({ ...SPHINCTER, innerRadii: [0.01, 0.031, 0.007] })).toThrow('muscle test-sphincter: innerRadii[1] must not exceed radii[1] (0.03), got 0.031');
+    expect(() => validateMuscle({ ...SPHINCTER, innerRadii: [0.01, 0.031, 0.007] })).toThrow(
+      'muscle test-sphincter: innerRadii[1] must not exceed radii[1] (0.03), got 0.031',
+    );
     expect(() => validateMuscle({ ...SPHINCTER, innerRadii: [0.01, 0.01, 0.02] })).not.toThrow();
-    expect(() => validateMuscle({ ...LINEAR, falloffStart: 1.2 })).toThrow('muscle test-linear: falloffs must satisfy 0 < falloffStart < falloffEnd, got 1.2 and 1.2');
+    expect(() => validateMuscle({ ...LINEAR, falloffStart: 1.2 })).toThrow(
+      'muscle test-linear: falloffs must satisfy 0 < falloffStart < falloffEnd, got 1.2 and 1.2',
+    );
     expect(() => validateMuscle({ ...LINEAR, insertion: [0, 0, 0] })).toThrow('muscle test-linear: origin and insertion must differ');
-    expect(() => validateMuscle({ ...LINEAR, origin: [0, NaN, 0] })).toThrow('muscle test-linear: origin[1] must be a finite number, got NaN');
+    expect(() => validateMuscle({ ...LINEAR, origin: [0, NaN, 0] })).toThrow(
+      'muscle test-linear: origin[1] must be a finite number, got NaN',
+    );
     expect(() => validateMuscle({ ...LID, innerFraction: 1 })).toThrow(/muscle test-lid: innerFraction/);
     expect(() => validateMuscle({ ...JAW, fade: 0 })).toThrow('muscle test-jaw: fade must be greater than 0, got 0');
-    expect(() => new MuscleRig(rest, [LINEAR, { ...JAW, size: [0.1, -0.06, 0.1] }])).toThrow('muscle test-jaw: size[1] must be greater than 0, got -0.06');
+    expect(() => new MuscleRig(rest, [LINEAR, { ...JAW, size: [0.1, -0.06, 0.1] }])).toThrow(
+      'muscle test-jaw: size[1] must be greater than 0, got -0.06',
+    );
     expect(() => new MuscleRig(rest, [LINEAR], { substeps: 0 })).toThrow(/substeps/);
     const rig = new MuscleRig(rest, [LINEAR]);
     expect(() => rig.setMuscle(0, { ...LINEAR, angle: 120 })).toThrow('muscle test-linear: angle must be from 0 to 90, got 120');

@@ -94,7 +94,9 @@ describe('RigDocument edits', () => {
     const au12 = doc.rig.actionUnits.find((a) => a.id === 'AU12')!;
     expect(au12.muscles.map((l) => l.muscle)).toContain('smile-l');
     expect(changes).toEqual([{ kind: 'structure' }]);
-    expect(thrown(() => doc.renameMuscle('smile-l', 'zygomaticus-major-r')).message).toContain('duplicate muscle name "zygomaticus-major-r"');
+    expect(thrown(() => doc.renameMuscle('smile-l', 'zygomaticus-major-r')).message).toContain(
+      'duplicate muscle name "zygomaticus-major-r"',
+    );
   });
 
   it('adds, duplicates and removes muscles; removing the last muscle of a unit is refused', () => {
@@ -105,7 +107,10 @@ describe('RigDocument edits', () => {
     expect(doc.rig.actionUnits.find((a) => a.id === 'AU18')!.muscles.map((l) => l.muscle)).toContain('test-ring');
     const copy = doc.duplicateMuscle('zygomaticus-major-l');
     expect(copy).toBe('zygomaticus-major-copy-l');
-    expect((doc.muscle(copy) as LinearMuscle).insertion[1]).toBeCloseTo((doc.muscle('zygomaticus-major-l') as LinearMuscle).insertion[1] + 0.004, 9);
+    expect((doc.muscle(copy) as LinearMuscle).insertion[1]).toBeCloseTo(
+      (doc.muscle('zygomaticus-major-l') as LinearMuscle).insertion[1] + 0.004,
+      9,
+    );
     doc.removeMuscle('test-ring');
     expect(doc.rig.actionUnits.find((a) => a.id === 'AU18')!.muscles.map((l) => l.muscle)).not.toContain('test-ring');
     const e = thrown(() => doc.removeMuscle('mentalis'));
@@ -146,7 +151,9 @@ describe('mirroring across x = 0', () => {
     expect((doc.muscle('zygomaticus-major-r') as LinearMuscle).insertion).toEqual([-0.051, 0.65, 0.125]);
     expect(doc.historySizes().undo).toBe(1);
     doc.undo();
-    expect((doc.muscle('zygomaticus-major-r') as LinearMuscle).insertion).toEqual((defaultRig().muscles.find((m) => m.name === 'zygomaticus-major-r') as LinearMuscle).insertion);
+    expect((doc.muscle('zygomaticus-major-r') as LinearMuscle).insertion).toEqual(
+      (defaultRig().muscles.find((m) => m.name === 'zygomaticus-major-r') as LinearMuscle).insertion,
+    );
   });
 
   it('mirrors one muscle onto a new twin with mirrored links, and mirrors a whole side', () => {
@@ -178,7 +185,10 @@ describe('replacing the rig', () => {
     const old = defaultRig() as Partial<Rig>;
     delete old.version;
     old.muscles![0] = { ...old.muscles![0], name: 'renamed' } as LinearMuscle;
-    old.actionUnits = old.actionUnits!.map((a) => ({ ...a, muscles: a.muscles.map((l) => (l.muscle === 'frontalis-inner-l' ? { ...l, muscle: 'renamed' } : l)) }));
+    old.actionUnits = old.actionUnits!.map((a) => ({
+      ...a,
+      muscles: a.muscles.map((l) => (l.muscle === 'frontalis-inner-l' ? { ...l, muscle: 'renamed' } : l)),
+    }));
     doc.replace(old);
     expect(doc.rig.version).toBe(2);
     expect(doc.rig.muscles[0].name).toBe('renamed');

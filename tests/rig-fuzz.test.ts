@@ -35,29 +35,46 @@ function value(r: () => number, old: Json): Json {
   // Two in five are plausible tweaks of a number, which the schema often accepts; the rest are hostile.
   const pick = r() < 0.4 ? 4 + Math.floor(r() * 2) : Math.floor(r() * 16);
   switch (pick) {
-    case 0: return Number.NaN;
-    case 1: return Number.POSITIVE_INFINITY;
-    case 2: return 1e6 * (r() - 0.5); // a point up to 500 km away
-    case 3: return -r();
-    case 4: return typeof old === 'number' ? old * (1 + (r() - 0.5) * 0.2) : r(); // a plausible tweak, often accepted
-    case 5: return typeof old === 'number' ? old + (r() - 0.5) * 0.02 : 0.5;
-    case 6: return 'text';
-    case 7: return null;
-    case 8: return {};
-    case 9: return [];
-    case 10: return new Array(100_000).fill(0.1);
-    case 11: return deep(5_000);
-    case 12: return [r(), r()];
-    case 13: return true;
-    case 14: return typeof old === 'string' ? `${old}-x` : 'zygomaticus-major-r';
-    default: return { extra: r() };
+    case 0:
+      return Number.NaN;
+    case 1:
+      return Number.POSITIVE_INFINITY;
+    case 2:
+      return 1e6 * (r() - 0.5); // a point up to 500 km away
+    case 3:
+      return -r();
+    case 4:
+      return typeof old === 'number' ? old * (1 + (r() - 0.5) * 0.2) : r(); // a plausible tweak, often accepted
+    case 5:
+      return typeof old === 'number' ? old + (r() - 0.5) * 0.02 : 0.5;
+    case 6:
+      return 'text';
+    case 7:
+      return null;
+    case 8:
+      return {};
+    case 9:
+      return [];
+    case 10:
+      return new Array(100_000).fill(0.1);
+    case 11:
+      return deep(5_000);
+    case 12:
+      return [r(), r()];
+    case 13:
+      return true;
+    case 14:
+      return typeof old === 'string' ? `${old}-x` : 'zygomaticus-major-r';
+    default:
+      return { extra: r() };
   }
 }
 
 /** Rest points over the face (a box around the mouth, nose and brows) where accepted rigs are tried. */
 const REST = (() => {
   const p: number[] = [];
-  for (let x = -0.08; x <= 0.08; x += 0.01) for (let y = 0.6; y <= 0.84; y += 0.01) for (let z = 0.09; z <= 0.16; z += 0.01) p.push(x, y, z);
+  for (let x = -0.08; x <= 0.08; x += 0.01)
+    for (let y = 0.6; y <= 0.84; y += 0.01) for (let z = 0.09; z <= 0.16; z += 0.01) p.push(x, y, z);
   return Float32Array.from(p);
 })();
 
@@ -90,7 +107,8 @@ describe('setRig with 1,200 seeded mutations of the default rig', () => {
           expect(typeof p.path, `case ${c}`).toBe('string');
         }
         // Each line names the source and, for a problem inside the document, its path.
-        for (const p of problems.slice(0, 50)) expect((error as Error).message, `case ${c}`).toContain(p.path ? `setRig: ${p.path}: ` : 'setRig: ');
+        for (const p of problems.slice(0, 50))
+          expect((error as Error).message, `case ${c}`).toContain(p.path ? `setRig: ${p.path}: ` : 'setRig: ');
         expect((error as Error).message.startsWith('setRig: '), `case ${c}`).toBe(true);
         expect(JSON.stringify(doc.rig), `case ${c}`).toBe(before);
         refused++;
@@ -102,7 +120,8 @@ describe('setRig with 1,200 seeded mutations of the default rig', () => {
       const out = { targets: new Float32Array(3 * n), weights: new Float32Array(n), normalWeights: new Float32Array(n) };
       rig.compute(new Float32Array(doc.rig.muscles.length).fill(1), out);
       for (let i = 0; i < out.targets.length; i++) {
-        if (!Number.isFinite(out.targets[i]) || Math.abs(out.targets[i] - REST[i]) > 100) throw new Error(`case ${c}: target ${i} is ${out.targets[i]}`);
+        if (!Number.isFinite(out.targets[i]) || Math.abs(out.targets[i] - REST[i]) > 100)
+          throw new Error(`case ${c}: target ${i} is ${out.targets[i]}`);
       }
     }
     console.log(`fuzz: ${accepted} accepted, ${refused} refused`);

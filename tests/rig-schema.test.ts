@@ -43,7 +43,20 @@ describe('the default rig (public/rigs/default.json)', () => {
     expect(rig.muscles.length).toBeGreaterThan(30);
     expect(rig.actionUnits).toHaveLength(21);
     expect(rig.presets.map((p) => p.name)).toEqual(
-      expect.arrayContaining(['thesis-happiness', 'thesis-sadness', 'thesis-laughing', 'thesis-anger', 'thesis-surprise', 'happiness', 'sadness', 'surprise', 'fear', 'anger', 'disgust', 'contempt']),
+      expect.arrayContaining([
+        'thesis-happiness',
+        'thesis-sadness',
+        'thesis-laughing',
+        'thesis-anger',
+        'thesis-surprise',
+        'happiness',
+        'sadness',
+        'surprise',
+        'fear',
+        'anger',
+        'disgust',
+        'contempt',
+      ]),
     );
   });
 
@@ -123,8 +136,12 @@ describe('parseRig', () => {
       d.actionUnits[bilateral].muscles = d.actionUnits[bilateral].muscles.filter((m) => m.side === 'left');
       d.actionUnits[midline].muscles[0].side = 'left';
     });
-    expect(e.message).toContain(`rig: actionUnits[${bilateral}].muscles: bilateral ${doc.actionUnits[bilateral].id} has no muscle on the right side`);
-    expect(e.message).toContain(`rig: actionUnits[${midline}].muscles[0].side: expected "mid" for midline ${doc.actionUnits[midline].id}, got "left"`);
+    expect(e.message).toContain(
+      `rig: actionUnits[${bilateral}].muscles: bilateral ${doc.actionUnits[bilateral].id} has no muscle on the right side`,
+    );
+    expect(e.message).toContain(
+      `rig: actionUnits[${midline}].muscles[0].side: expected "mid" for midline ${doc.actionUnits[midline].id}, got "left"`,
+    );
   });
 
   it('rejects a preset naming an unknown Action Unit, or a side of a midline one', () => {
@@ -199,7 +216,9 @@ describe('parseRigText', () => {
   it('refuses a text over the size limit before parsing it', () => {
     const text = ' '.repeat(MAX_RIG_BYTES - 1) + '{}'; // valid JSON, one byte too long
     const e = textRejection(text, 'huge.json');
-    expect(e.message).toBe(`huge.json: the document is ${MAX_RIG_BYTES + 1} bytes (5 MiB), over the limit of ${MAX_RIG_BYTES} bytes (5 MiB) for rig documents`);
+    expect(e.message).toBe(
+      `huge.json: the document is ${MAX_RIG_BYTES + 1} bytes (5 MiB), over the limit of ${MAX_RIG_BYTES} bytes (5 MiB) for rig documents`,
+    );
   });
 
   it('counts the size in UTF-8 bytes', () => {

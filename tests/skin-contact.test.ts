@@ -11,7 +11,11 @@ function patch() {
       normals.push(0, 0, 1);
     }
   }
-  return { positions: Float32Array.from(positions), normals: Float32Array.from(normals), vertices: Uint32Array.from({ length: 441 }, (_, i) => i) };
+  return {
+    positions: Float32Array.from(positions),
+    normals: Float32Array.from(normals),
+    vertices: Uint32Array.from({ length: 441 }, (_, i) => i),
+  };
 }
 
 describe('skin contact', () => {
@@ -19,7 +23,7 @@ describe('skin contact', () => {
   const contact = new SkinContact(skin.vertices, 0.0015, 0.00005);
   contact.bin(skin.positions);
 
-  it("pushes a ribbon pair whose middle is behind the skin out to just in front of it, along the normal", () => {
+  it('pushes a ribbon pair whose middle is behind the skin out to just in front of it, along the normal', () => {
     const points = Float32Array.from([0.0011, -0.0007, -0.0005, 0.0013, -0.0007, -0.0003]);
     expect(contact.resolve(points, 0, 1, skin.positions, skin.normals)).toBe(1);
     expect(points[0]).toBeCloseTo(0.0011, 9);
@@ -30,7 +34,9 @@ describe('skin contact', () => {
   });
 
   it('leaves pairs in front of the skin, and pairs out of its reach, where they are', () => {
-    const points = Float32Array.from([0, 0, 0.0003, 0.0001, 0, 0.0003, 0.02, 0, -0.001, 0.0201, 0, -0.001, 0, 0, -0.002, 0.0001, 0, -0.002]);
+    const points = Float32Array.from([
+      0, 0, 0.0003, 0.0001, 0, 0.0003, 0.02, 0, -0.001, 0.0201, 0, -0.001, 0, 0, -0.002, 0.0001, 0, -0.002,
+    ]);
     const before = points.slice();
     expect(contact.resolve(points, 0, 3, skin.positions, skin.normals)).toBe(0);
     expect(Array.from(points)).toEqual(Array.from(before));

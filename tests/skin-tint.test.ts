@@ -24,7 +24,11 @@ describe('the default head’s skin tint', () => {
   let tint: Float32Array;
   beforeAll(async () => {
     const doc = await new NodeIO().readBinary(new Uint8Array(readFileSync(new URL('../public/models/head-medium.glb', import.meta.url))));
-    const prim = doc.getRoot().listMeshes().find((m) => m.getName() === 'skin')!.listPrimitives()[0];
+    const prim = doc
+      .getRoot()
+      .listMeshes()
+      .find((m) => m.getName() === 'skin')!
+      .listPrimitives()[0];
     positions = Float32Array.from(prim.getAttribute('POSITION')!.getArray()!);
     tint = skinTint(positions, prim.getAttribute('TEXCOORD_0')!.getArray()!);
   });

@@ -21,7 +21,8 @@ function settle(solver: { step(): boolean }, maxFrames = 1500): void {
 }
 
 /** Vertex v's xyz in `a` equal those in `b` bit for bit. */
-const sameAt = (a: Float32Array, b: Float32Array, v: number): boolean => a[3 * v] === b[3 * v] && a[3 * v + 1] === b[3 * v + 1] && a[3 * v + 2] === b[3 * v + 2];
+const sameAt = (a: Float32Array, b: Float32Array, v: number): boolean =>
+  a[3 * v] === b[3 * v] && a[3 * v + 1] === b[3 * v + 1] && a[3 * v + 2] === b[3 * v + 2];
 
 /**
  * How near the region's solve keeps to the whole-mesh one, times the mesh size: the region leaves out skin the
@@ -62,7 +63,8 @@ describe('the active region on the head', () => {
     expect(region.host.solver.activeVertexCount).toBeLessThan(0.6 * t.vertexCount);
     // The skin it did not solve is exactly at rest, positions and normals.
     let atRest = 0;
-    for (let v = 0; v < t.vertexCount; v++) if (sameAt(x, t.rest, v) && sameAt(region.host.solver.buffers.normals, t.restNormals, v)) atRest++;
+    for (let v = 0; v < t.vertexCount; v++)
+      if (sameAt(x, t.rest, v) && sameAt(region.host.solver.buffers.normals, t.restNormals, v)) atRest++;
     expect(atRest).toBeGreaterThan(0.3 * t.vertexCount);
   });
 
@@ -75,7 +77,8 @@ describe('the active region on the head', () => {
     expect(s.sleeping).toBe(true);
     expect(s.activeVertexCount).toBe(0);
     let off = 0;
-    for (let v = 0; v < t.vertexCount; v++) if (!sameAt(s.buffers.positions, t.rest, v) || !sameAt(s.buffers.normals, t.restNormals, v)) off++;
+    for (let v = 0; v < t.vertexCount; v++)
+      if (!sameAt(s.buffers.positions, t.rest, v) || !sameAt(s.buffers.normals, t.restNormals, v)) off++;
     expect(off).toBe(0);
   });
 

@@ -13,7 +13,12 @@ async function smile(warm: boolean): Promise<{ positions: Float32Array; pieces: 
   sim.expression.setActionUnit('AU12', 1);
   sim.apply();
   for (let f = 0; f < FRAMES; f++) sim.host.step();
-  return { positions: sim.host.solver.buffers.positions.slice(), pieces, hostFramesInWarmUp: sim.host.solver.frames - FRAMES - framesBefore, sleeping };
+  return {
+    positions: sim.host.solver.buffers.positions.slice(),
+    pieces,
+    hostFramesInWarmUp: sim.host.solver.frames - FRAMES - framesBefore,
+    sleeping,
+  };
 }
 
 describe('the solver host warm-up', () => {

@@ -21,7 +21,8 @@ function boundShare(a: PartArrays, t: number): number {
   const F = a.triangles.frames;
   const u = [x[j] - x[i], x[j + 1] - x[i + 1], x[j + 2] - x[i + 2]];
   const v = [x[k] - x[i], x[k + 1] - x[i + 1], x[k + 2] - x[i + 2]];
-  const area = F[4 * t] * (u[1] * v[2] - u[2] * v[1]) + F[4 * t + 1] * (u[2] * v[0] - u[0] * v[2]) + F[4 * t + 2] * (u[0] * v[1] - u[1] * v[0]);
+  const area =
+    F[4 * t] * (u[1] * v[2] - u[2] * v[1]) + F[4 * t + 1] * (u[2] * v[0] - u[0] * v[2]) + F[4 * t + 2] * (u[0] * v[1] - u[1] * v[0]);
   return area / F[4 * t + 3];
 }
 
@@ -91,7 +92,8 @@ describe('the watched set across inputs', () => {
     const t = buildTopology(g.positions, g.indices);
     const solver = new SkinSolver(t, { activeRegion: false, memory: 'shared' });
     const all = [...Array(t.vertexCount).keys()];
-    const at = (vertices: number[], dx: number): number[] => vertices.flatMap((v) => [t.rest[3 * v] + dx, t.rest[3 * v + 1], t.rest[3 * v + 2]]);
+    const at = (vertices: number[], dx: number): number[] =>
+      vertices.flatMap((v) => [t.rest[3 * v] + dx, t.rest[3 * v + 1], t.rest[3 * v + 2]]);
     const left = all.filter((v) => t.rest[3 * v] < 1e-5);
     const right = all.filter((v) => t.rest[3 * v] > 0.001 - 1e-5);
     solver.setMuscleTargets(right, at(right, 0), 1);

@@ -12,7 +12,10 @@ async function solve(threads: 1 | 2): Promise<{ shapes: Float32Array[]; threadsU
   const shapes: Float32Array[] = [];
   const threadsUsed: number[] = [];
   try {
-    for (const units of [{ AU12: 1, AU26: 1 }, { AU1: 1, AU2: 1, AU4: 0.6 }]) {
+    for (const units of [
+      { AU12: 1, AU26: 1 },
+      { AU1: 1, AU2: 1, AU4: 0.6 },
+    ]) {
       sim.expression.reset();
       for (const [unit, value] of Object.entries(units)) sim.expression.setActionUnit(unit, value);
       sim.apply();

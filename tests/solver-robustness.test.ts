@@ -36,7 +36,9 @@ describe('solver robustness', () => {
     for (let f = 0; f < 50; f++) s.step();
     const before = Float32Array.from(s.buffers.positions);
     const targetsBefore = Float32Array.from(s.buffers.targets);
-    expect(() => s.setMuscleTargets([2, 3], [0, 0, 0, NaN, 0, 0], 1)).toThrow('the target of vertex 3 (entry 1) has a non-finite x coordinate: NaN');
+    expect(() => s.setMuscleTargets([2, 3], [0, 0, 0, NaN, 0, 0], 1)).toThrow(
+      'the target of vertex 3 (entry 1) has a non-finite x coordinate: NaN',
+    );
     expect(() => s.setMuscleTargets([2], [Infinity, 0, 0], 1)).toThrow(/non-finite x coordinate: Infinity/);
     expect(() => s.setMuscleTargets([2], [0, 0, 0], NaN)).toThrow('weight must be a finite number from 0 to 1, got NaN');
     expect(() => s.setMuscleTargets([topology.vertexCount], [0, 0, 0], 1)).toThrow(

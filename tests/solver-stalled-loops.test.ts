@@ -8,7 +8,13 @@ import { loadHeadSimulation } from './fixtures/head-simulation';
 describe('skin that stalls instead of converging', () => {
   it('comes to rest well before the safety net, near where it was going round', async () => {
     const sim = await loadHeadSimulation('medium');
-    for (const [id, value] of [['AU4', 1], ['AU5', 0.5], ['AU7', 0.8], ['AU23', 0.8]] as const) sim.expression.setActionUnit(id, value);
+    for (const [id, value] of [
+      ['AU4', 1],
+      ['AU5', 0.5],
+      ['AU7', 0.8],
+      ['AU23', 0.8],
+    ] as const)
+      sim.expression.setActionUnit(id, value);
     sim.apply();
     const x = sim.host.solver.buffers.positions;
     let frames = 0;
@@ -22,7 +28,8 @@ describe('skin that stalls instead of converging', () => {
     // It came to rest about where it was going round (well within a millimetre), not somewhere new.
     expect(at150).not.toBeNull();
     let farthest = 0;
-    for (let i = 0; i < x.length; i += 3) farthest = Math.max(farthest, Math.hypot(x[i] - at150![i], x[i + 1] - at150![i + 1], x[i + 2] - at150![i + 2]));
+    for (let i = 0; i < x.length; i += 3)
+      farthest = Math.max(farthest, Math.hypot(x[i] - at150![i], x[i + 1] - at150![i + 1], x[i + 2] - at150![i + 2]));
     expect(farthest).toBeLessThan(0.0005);
   });
 });

@@ -22,7 +22,10 @@ function dragSheet(parameters: Partial<SkinParameters>, frames: number): Float32
 
 const same = (a: Float32Array, b: Float32Array) => a.every((x, i) => x === b[i]);
 
-/** thesis-laughing on the medium head: frames until every vertex is within 2 % (of the largest move) of where it comes to rest, and to sleep. */
+/**
+ * thesis-laughing on the medium head: frames until every vertex is within 2 % (of the largest move) of where it comes to rest, and to
+ * sleep.
+ */
 async function framesToShape(parameters: Partial<SkinParameters>) {
   const run = async () => {
     const sim = await loadHeadSimulation('medium', parameters);
@@ -37,7 +40,8 @@ async function framesToShape(parameters: Partial<SkinParameters>) {
   const final = first.host.solver.buffers.positions;
   const farthest = (x: Float32Array) => {
     let worst = 0;
-    for (let i = 0; i < x.length; i += 3) worst = Math.max(worst, Math.hypot(x[i] - final[i], x[i + 1] - final[i + 1], x[i + 2] - final[i + 2]));
+    for (let i = 0; i < x.length; i += 3)
+      worst = Math.max(worst, Math.hypot(x[i] - final[i], x[i + 1] - final[i + 1], x[i + 2] - final[i + 2]));
     return worst;
   };
   const tolerance = 0.02 * farthest(start);
@@ -50,7 +54,7 @@ async function framesToShape(parameters: Partial<SkinParameters>) {
   return { near, frames, sleeping: first.host.solver.sleeping };
 }
 
-describe('the start momentum (a larger carry in a motion\'s first frames)', () => {
+describe("the start momentum (a larger carry in a motion's first frames)", () => {
   it('carries startMomentum along the surface for the first START_MOMENTUM_FRAMES frames and momentum after', () => {
     const frames = START_MOMENTUM_FRAMES + 3;
     const scheduled = dragSheet({ momentum: 0.5, startMomentum: 0.7 }, frames);

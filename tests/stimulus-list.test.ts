@@ -30,7 +30,19 @@ describe('stimulus lists', () => {
   });
 
   it('a timeline entry becomes a WebM with its values scaled by the intensity', () => {
-    const timeline = { format: 'softface-timeline', version: 1, tracks: { AU12: { keys: [{ time: 0, value: 0 }, { time: 1, value: 0.8 }] } }, actions: [{ target: 'AU1', start: 0, intensity: 1, onset: 0.2, apex: 0.3, offset: 0.2 }] };
+    const timeline = {
+      format: 'softface-timeline',
+      version: 1,
+      tracks: {
+        AU12: {
+          keys: [
+            { time: 0, value: 0 },
+            { time: 1, value: 0.8 },
+          ],
+        },
+      },
+      actions: [{ target: 'AU1', start: 0, intensity: 1, onset: 0.2, apex: 0.3, offset: 0.2 }],
+    };
     const [s] = expandStimulusList({ ...base, stimuli: [{ name: 'clip', timeline, intensity: 0.5, fps: 10 }] });
     expect(s).toMatchObject({ file: 'clip_i0.5_l0_c0_medium.webm', format: 'webm', fps: 10, expression: null });
     expect(s.timeline!.tracks.AU12.keys.map((k) => k.value)).toEqual([0, 0.4]);
@@ -45,7 +57,22 @@ describe('stimulus lists', () => {
         { name: 'a', expression: { AU99: 1, AU12: 2 }, intensity: [0.5, Number.NaN] },
         { name: 'a', expression: { AU1: 1 }, camera: { yaw: 400 }, light: [{ keyColour: '#fff' }] },
         { name: 'b', expression: { AU1: 1 }, timeline: {} },
-        { name: 'c', timeline: { format: 'softface-timeline', version: 1, tracks: { AU12: { keys: [{ time: 1, value: 0 }, { time: 0.5, value: 1 }] } }, actions: [] } },
+        {
+          name: 'c',
+          timeline: {
+            format: 'softface-timeline',
+            version: 1,
+            tracks: {
+              AU12: {
+                keys: [
+                  { time: 1, value: 0 },
+                  { time: 0.5, value: 1 },
+                ],
+              },
+            },
+            actions: [],
+          },
+        },
         { name: 'bad name!', expression: {}, size: 3 },
       ],
     };
@@ -70,7 +97,8 @@ describe('stimulus lists', () => {
     expect(() => expandStimulusList(fixed, 'list.json')).toThrow(
       [
         'list.json: stimuli[0].expression.AU99: unknown Action Unit or preset "AU99"',
-        'list.json: stimuli[1].light[0]: unknown option "keyColour" (options: ambientIntensity, keyAzimuth, keyElevation, keyIntensity, keyColor)',
+        'list.json: stimuli[1].light[0]: unknown option "keyColour" (options: ' +
+          'ambientIntensity, keyAzimuth, keyElevation, keyIntensity, keyColor)',
         'list.json: stimuli[1].camera[0]: yaw must be within -180..180, got 400',
         'list.json: stimuli[1].name: a second stimulus named "a"',
         'list.json: stimuli[2]: expected either an expression (a PNG) or a timeline (a WebM)',
@@ -79,7 +107,10 @@ describe('stimulus lists', () => {
   });
 
   it('the manifest has a row per stimulus with what it was made from', () => {
-    const stimuli = expandStimulusList({ ...base, stimuli: [{ name: 'smile', expression: { AU12: 1 }, light: [{}, { keyColor: '#ff0000', keyIntensity: 2 }] }] });
+    const stimuli = expandStimulusList({
+      ...base,
+      stimuli: [{ name: 'smile', expression: { AU12: 1 }, light: [{}, { keyColor: '#ff0000', keyIntensity: 2 }] }],
+    });
     expect(stimulusManifest(stimuli).split('\n')).toEqual([
       'file,name,format,expression,timeline,intensity,light,camera,resolution,width,height,fps',
       'smile_i1_l0_c0_medium.png,smile,png,"{""AU12"":1}",no,1,{},{},medium,512,512,25',

@@ -31,7 +31,12 @@ describe('Catmull-Clark subdivision', () => {
       const x = g.positions[3 * v];
       const y = g.positions[3 * v + 1];
       const onBorder = Math.abs(x) < 1e-12 || Math.abs(x - 4) < 1e-12 || Math.abs(y) < 1e-12 || Math.abs(y - 3) < 1e-12;
-      const nearCorner = [[0, 0], [4, 0], [0, 3], [4, 3]].some(([cx, cy]) => Math.hypot(x - cx, y - cy) < 1);
+      const nearCorner = [
+        [0, 0],
+        [4, 0],
+        [0, 3],
+        [4, 3],
+      ].some(([cx, cy]) => Math.hypot(x - cx, y - cy) < 1);
       expect(x).toBeGreaterThanOrEqual(0);
       expect(y).toBeGreaterThanOrEqual(0);
       if (!nearCorner) expect(onBorder).toBe(true);

@@ -53,9 +53,16 @@ function crossings(P: ArrayLike<number>, I: ArrayLike<number>, o: number[], d: n
 // The low head: the teeth are the same at every resolution, and its skin makes the ray casts cheap.
 describe('the dental arches of the default head', () => {
   let doc: Document;
-  const node = (name: string): GltfNode => doc.getRoot().listNodes().find((n) => n.getName() === name)!;
+  const node = (name: string): GltfNode =>
+    doc
+      .getRoot()
+      .listNodes()
+      .find((n) => n.getName() === name)!;
   const part = (name: string, material: string) => {
-    const prim = node(name).getMesh()!.listPrimitives().find((p) => p.getMaterial()!.getName() === material)!;
+    const prim = node(name)
+      .getMesh()!
+      .listPrimitives()
+      .find((p) => p.getMaterial()!.getName() === material)!;
     return { prim, positions: worldPositions(node(name), prim), indices: prim.getIndices()!.getArray()! };
   };
   beforeAll(async () => {
@@ -63,7 +70,12 @@ describe('the dental arches of the default head', () => {
   });
 
   it.each(['teeth-upper', 'teeth-lower'])('%s holds 16 separate crowns and a gum band, a few thousand triangles in all', (name) => {
-    expect(node(name).getMesh()!.listPrimitives().map((p) => p.getMaterial()!.getName())).toEqual(['teeth', 'gums']);
+    expect(
+      node(name)
+        .getMesh()!
+        .listPrimitives()
+        .map((p) => p.getMaterial()!.getName()),
+    ).toEqual(['teeth', 'gums']);
     const teeth = part(name, 'teeth');
     const gums = part(name, 'gums');
     expect(pieces(teeth.indices, teeth.positions.length / 3)).toBe(16);
@@ -74,7 +86,8 @@ describe('the dental arches of the default head', () => {
     // Symmetric about the midline, about 5 cm across, as an adult arch.
     let minX = Infinity;
     let maxX = -Infinity;
-    for (let i = 0; i < teeth.positions.length; i += 3) (minX = Math.min(minX, teeth.positions[i])), (maxX = Math.max(maxX, teeth.positions[i]));
+    for (let i = 0; i < teeth.positions.length; i += 3)
+      (minX = Math.min(minX, teeth.positions[i])), (maxX = Math.max(maxX, teeth.positions[i]));
     expect(maxX + minX).toBeCloseTo(0, 4);
     expect(maxX - minX).toBeGreaterThan(0.045);
     expect(maxX - minX).toBeLessThan(0.065);
@@ -125,14 +138,18 @@ describe('the dental arches of the default head', () => {
    */
   const exposed = (skin: ArrayLike<number>, skinIndices: ArrayLike<number>, stride: number): string[] => {
     const out: string[] = [];
-    for (const [name, tilt] of [['teeth-upper', 0.3], ['teeth-lower', -0.3]] as const) {
+    for (const [name, tilt] of [
+      ['teeth-upper', 0.3],
+      ['teeth-lower', -0.3],
+    ] as const) {
       for (const material of ['teeth', 'gums']) {
         const p = part(name, material).positions;
         for (let i = 0; i < p.length; i += 3 * stride) {
           const dx = p[i];
           const dz = p[i + 2] - 0.1;
           const length = Math.hypot(dx, dz);
-          if (crossings(skin, skinIndices, [p[i], p[i + 1], p[i + 2]], [dx / length, tilt, dz / length]) === 0) out.push(`${name} ${material} vertex ${i / 3}`);
+          if (crossings(skin, skinIndices, [p[i], p[i + 1], p[i + 2]], [dx / length, tilt, dz / length]) === 0)
+            out.push(`${name} ${material} vertex ${i / 3}`);
         }
       }
     }
@@ -140,7 +157,11 @@ describe('the dental arches of the default head', () => {
   };
 
   it('keeps every crown and gum behind the lips and cheeks at rest: a ray outward through its own lip meets the skin', () => {
-    const skinPrim = doc.getRoot().listMeshes().find((m) => m.getName() === 'skin')!.listPrimitives()[0];
+    const skinPrim = doc
+      .getRoot()
+      .listMeshes()
+      .find((m) => m.getName() === 'skin')!
+      .listPrimitives()[0];
     expect(exposed(skinPrim.getAttribute('POSITION')!.getArray()!, skinPrim.getIndices()!.getArray()!, 2)).toEqual([]);
   });
 

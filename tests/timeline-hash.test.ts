@@ -7,7 +7,14 @@ const TIMELINE: Timeline = {
   format: 'softface-timeline',
   version: 1,
   loop: true,
-  tracks: { AU12: { keys: [{ time: 0, value: 0 }, { time: 1, value: 0.5, easing: 'ease-in-out' }] } },
+  tracks: {
+    AU12: {
+      keys: [
+        { time: 0, value: 0 },
+        { time: 1, value: 0.5, easing: 'ease-in-out' },
+      ],
+    },
+  },
   actions: [{ target: 'preset:happiness', start: 0.2, intensity: 0.7, onset: 0.3, apex: 0, offset: 0.3 }],
 };
 

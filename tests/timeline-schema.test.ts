@@ -9,9 +9,20 @@ function doc(): Record<string, any> {
     duration: 6,
     loop: true,
     tracks: {
-      AU12L: { keys: [{ time: 0, value: 0 }, { time: 1, value: 0.8, easing: 'ease-in-out' }, { time: 2, value: 0.2 }] },
+      AU12L: {
+        keys: [
+          { time: 0, value: 0 },
+          { time: 1, value: 0.8, easing: 'ease-in-out' },
+          { time: 2, value: 0.2 },
+        ],
+      },
       AU26: { keys: [{ time: 0.5, value: 0.3 }] },
-      'preset:happiness': { keys: [{ time: 0, value: 0 }, { time: 3, value: 1, easing: 'ease-out' }] },
+      'preset:happiness': {
+        keys: [
+          { time: 0, value: 0 },
+          { time: 3, value: 1, easing: 'ease-out' },
+        ],
+      },
     },
     actions: [{ target: 'AU6', start: 1, intensity: 0.6, onset: 0.4, apex: 1, offset: 0.8 }],
   };
@@ -44,15 +55,21 @@ describe('a valid timeline', () => {
   });
 
   it('accepts any preset name when no presets are given', () => {
-    expect(() => parseTimeline({ format: 'softface-timeline', tracks: { 'preset:whatever': { keys: [{ time: 0, value: 1 }] } } })).not.toThrow();
+    expect(() =>
+      parseTimeline({ format: 'softface-timeline', tracks: { 'preset:whatever': { keys: [{ time: 0, value: 1 }] } } }),
+    ).not.toThrow();
   });
 });
 
 describe('refusals name the path of what is wrong', () => {
   it('an unknown Action Unit id as a track or action target', () => {
-    expect(rejection((d) => (d.tracks.AU99 = { keys: [{ time: 0, value: 1 }] })).message).toMatch(/^test: tracks\.AU99: unknown Action Unit id "AU99"/);
+    expect(rejection((d) => (d.tracks.AU99 = { keys: [{ time: 0, value: 1 }] })).message).toMatch(
+      /^test: tracks\.AU99: unknown Action Unit id "AU99"/,
+    );
     expect(rejection((d) => (d.tracks.AU17L = { keys: [{ time: 0, value: 1 }] })).message).toMatch(/tracks\.AU17L: unknown Action Unit id/);
-    expect(rejection((d) => (d.actions[0].target = 'smile')).message).toMatch(/^test: actions\[0\]\.target: unknown Action Unit id "smile"/);
+    expect(rejection((d) => (d.actions[0].target = 'smile')).message).toMatch(
+      /^test: actions\[0\]\.target: unknown Action Unit id "smile"/,
+    );
   });
 
   it('an unknown preset, with the names the face has', () => {
@@ -62,18 +79,30 @@ describe('refusals name the path of what is wrong', () => {
   });
 
   it('NaN, infinite and non-number values', () => {
-    expect(rejection((d) => (d.tracks.AU12L.keys[1].value = Number.NaN)).message).toMatch(/tracks\.AU12L\.keys\[1\]\.value: expected a number, got NaN/);
-    expect(rejection((d) => (d.actions[0].start = Number.POSITIVE_INFINITY)).message).toMatch(/actions\[0\]\.start: expected a finite number, got Infinity/);
-    expect(rejection((d) => (d.tracks.AU26.keys[0].time = '1')).message).toMatch(/tracks\.AU26\.keys\[0\]\.time: expected a number, got "1"/);
+    expect(rejection((d) => (d.tracks.AU12L.keys[1].value = Number.NaN)).message).toMatch(
+      /tracks\.AU12L\.keys\[1\]\.value: expected a number, got NaN/,
+    );
+    expect(rejection((d) => (d.actions[0].start = Number.POSITIVE_INFINITY)).message).toMatch(
+      /actions\[0\]\.start: expected a finite number, got Infinity/,
+    );
+    expect(rejection((d) => (d.tracks.AU26.keys[0].time = '1')).message).toMatch(
+      /tracks\.AU26\.keys\[0\]\.time: expected a number, got "1"/,
+    );
   });
 
   it('values out of 0..1', () => {
-    expect(rejection((d) => (d.tracks.AU12L.keys[2].value = 1.2)).message).toMatch(/tracks\.AU12L\.keys\[2\]\.value: expected a number from 0 to 1, got 1\.2/);
-    expect(rejection((d) => (d.actions[0].intensity = -0.1)).message).toMatch(/actions\[0\]\.intensity: expected a number from 0 to 1, got -0\.1/);
+    expect(rejection((d) => (d.tracks.AU12L.keys[2].value = 1.2)).message).toMatch(
+      /tracks\.AU12L\.keys\[2\]\.value: expected a number from 0 to 1, got 1\.2/,
+    );
+    expect(rejection((d) => (d.actions[0].intensity = -0.1)).message).toMatch(
+      /actions\[0\]\.intensity: expected a number from 0 to 1, got -0\.1/,
+    );
   });
 
   it('negative times and durations, and a zero onset or offset', () => {
-    expect(rejection((d) => (d.tracks.AU12L.keys[0].time = -1)).message).toMatch(/tracks\.AU12L\.keys\[0\]\.time: expected a time from 0 to 3600 s, got -1/);
+    expect(rejection((d) => (d.tracks.AU12L.keys[0].time = -1)).message).toMatch(
+      /tracks\.AU12L\.keys\[0\]\.time: expected a time from 0 to 3600 s, got -1/,
+    );
     expect(rejection((d) => (d.actions[0].apex = -0.5)).message).toMatch(/actions\[0\]\.apex: expected a time from 0 to 3600 s, got -0\.5/);
     expect(rejection((d) => (d.actions[0].onset = 0)).message).toMatch(/actions\[0\]\.onset: expected a positive number of seconds/);
     expect(rejection((d) => (d.actions[0].offset = -2)).message).toMatch(/actions\[0\]\.offset: expected a positive number of seconds/);
@@ -82,18 +111,26 @@ describe('refusals name the path of what is wrong', () => {
 
   it('key times out of order or duplicated', () => {
     const unsorted = rejection((d) => (d.tracks.AU12L.keys[2].time = 0.5));
-    expect(unsorted.message).toBe("test: tracks.AU12L.keys[2].time: keys out of order: expected a time after the previous key's 1 s, got 0.5");
+    expect(unsorted.message).toBe(
+      "test: tracks.AU12L.keys[2].time: keys out of order: expected a time after the previous key's 1 s, got 0.5",
+    );
     const duplicate = rejection((d) => (d.tracks['preset:happiness'].keys[1].time = 0));
-    expect(duplicate.message).toBe('test: tracks["preset:happiness"].keys[1].time: a duplicate key time: expected a time after the previous key\'s 0 s, got 0');
+    expect(duplicate.message).toBe(
+      'test: tracks["preset:happiness"].keys[1].time: a duplicate key time: expected a time after the previous key\'s 0 s, got 0',
+    );
   });
 
   it('a duration shorter than the content', () => {
-    expect(rejection((d) => (d.duration = 2.5)).message).toBe('test: duration: expected at least 3.2 s (the end of the last key or action), got 2.5');
+    expect(rejection((d) => (d.duration = 2.5)).message).toBe(
+      'test: duration: expected at least 3.2 s (the end of the last key or action), got 2.5',
+    );
   });
 
   it('unknown fields, wrong kinds and missing parts', () => {
     expect(rejection((d) => (d.tracks.AU12L.keys[0].ease = 'linear')).message).toMatch(/tracks\.AU12L\.keys\[0\]\.ease: unknown field/);
-    expect(rejection((d) => (d.tracks.AU12L.keys[0].easing = 'bounce')).message).toMatch(/keys\[0\]\.easing: expected an easing: "linear", "ease-in", "ease-out", "ease-in-out", got "bounce"/);
+    expect(rejection((d) => (d.tracks.AU12L.keys[0].easing = 'bounce')).message).toMatch(
+      /keys\[0\]\.easing: expected an easing: "linear", "ease-in", "ease-out", "ease-in-out", got "bounce"/,
+    );
     expect(rejection((d) => (d.tracks.AU26.keys = [])).message).toMatch(/tracks\.AU26\.keys: expected at least one key/);
     expect(rejection((d) => delete d.actions[0].apex).message).toMatch(/actions\[0\]\.apex: missing/);
     expect(rejection((d) => (d.loop = 'yes')).message).toMatch(/loop: expected true or false, got "yes"/);
@@ -119,7 +156,9 @@ describe('refusals name the path of what is wrong', () => {
 
 describe('timeline text', () => {
   it('a JSON syntax error says where', () => {
-    expect(() => parseTimelineText('{"format": "softface-timeline",}', 'file.json')).toThrow(/^file\.json: invalid JSON at line 1, column 32: expected a property name in double quotes, got '}'$/);
+    expect(() => parseTimelineText('{"format": "softface-timeline",}', 'file.json')).toThrow(
+      /^file\.json: invalid JSON at line 1, column 32: expected a property name in double quotes, got '}'$/,
+    );
   });
 
   it('text that is not a document is refused', () => {

@@ -98,7 +98,12 @@ describe('keyframe tracks', () => {
       },
     });
     const s = sampleAt(both, 0);
-    expect(s).toEqual({ AU6L: expect.closeTo(0.8, 12), AU6R: expect.closeTo(0.3, 12), AU17: expect.closeTo(0.4, 12), 'preset:happiness': expect.closeTo(0.9, 12) });
+    expect(s).toEqual({
+      AU6L: expect.closeTo(0.8, 12),
+      AU6R: expect.closeTo(0.3, 12),
+      AU17: expect.closeTo(0.4, 12),
+      'preset:happiness': expect.closeTo(0.9, 12),
+    });
     expect(targetSides('AU12')).toEqual(['AU12L', 'AU12R']);
     expect(targetSides('AU12R')).toEqual(['AU12R']);
     expect(targetSides('AU26')).toEqual(['AU26']);
@@ -106,7 +111,10 @@ describe('keyframe tracks', () => {
   });
 
   it('clamps sums over 1', () => {
-    const over = timeline({ tracks: { AU12: { keys: [{ time: 0, value: 0.8 }] } }, actions: [{ target: 'AU12L', start: 0, intensity: 0.9, onset: 1, apex: 1, offset: 1 }] });
+    const over = timeline({
+      tracks: { AU12: { keys: [{ time: 0, value: 0.8 }] } },
+      actions: [{ target: 'AU12L', start: 0, intensity: 0.9, onset: 1, apex: 1, offset: 1 }],
+    });
     expect(sampleAt(over, 1.5)).toEqual({ AU12L: 1, AU12R: expect.closeTo(0.8, 12) });
   });
 });
@@ -155,11 +163,20 @@ describe('onset / apex / offset actions', () => {
 });
 
 describe('duration, looping and time', () => {
-  const keys = { AU26: { keys: [{ time: 0, value: 0 }, { time: 2, value: 1 }] } };
+  const keys = {
+    AU26: {
+      keys: [
+        { time: 0, value: 0 },
+        { time: 2, value: 1 },
+      ],
+    },
+  };
 
   it('the duration is the end of the last key or action unless given', () => {
     expect(timelineDuration(timeline({ tracks: keys }))).toBe(2);
-    expect(timelineDuration(timeline({ tracks: keys, actions: [{ target: 'AU1', start: 1, intensity: 1, onset: 1, apex: 1, offset: 1.5 }] }))).toBe(4.5);
+    expect(
+      timelineDuration(timeline({ tracks: keys, actions: [{ target: 'AU1', start: 1, intensity: 1, onset: 1, apex: 1, offset: 1.5 }] })),
+    ).toBe(4.5);
     expect(timelineDuration(timeline({ tracks: keys, duration: 3 }))).toBe(3);
     expect(timelineDuration(timeline({}))).toBe(0);
   });
@@ -190,5 +207,4 @@ describe('duration, looping and time', () => {
     const other = timeline({ tracks: keys });
     expect(() => sampleTimeline(other, 1, out)).toThrow(/another timeline/);
   });
-
 });

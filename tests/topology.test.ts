@@ -88,7 +88,10 @@ describe('skin topology', () => {
     perm.forEach((p, i) => shuffled.set(g.positions.subarray(3 * p, 3 * p + 3), 3 * i));
     const inv = new Uint32Array(n);
     perm.forEach((p, i) => (inv[p] = i));
-    const t = buildTopology(shuffled, Uint32Array.from(g.indices, (v) => inv[v]));
+    const t = buildTopology(
+      shuffled,
+      Uint32Array.from(g.indices, (v) => inv[v]),
+    );
     let bandwidth = 0;
     for (let e = 0; e < t.restLength.length; e++) bandwidth = Math.max(bandwidth, Math.abs(t.edges[2 * e] - t.edges[2 * e + 1]));
     expect(bandwidth).toBeLessThanOrEqual(2 * g.nx + 2);
@@ -102,9 +105,15 @@ describe('skin topology', () => {
     const [a, b, c] = Array.from(g.indices.subarray(0, 3));
     const indices = Uint32Array.from([
       ...g.indices,
-      a, a, b, // repeated vertex
-      a, b, c, // duplicate of the first triangle
-      a, c, apex, // a third triangle on the cell's diagonal a-c, which has two already: non-manifold
+      a,
+      a,
+      b, // repeated vertex
+      a,
+      b,
+      c, // duplicate of the first triangle
+      a,
+      c,
+      apex, // a third triangle on the cell's diagonal a-c, which has two already: non-manifold
     ]);
     const t = buildTopology(positions, indices);
     expect(t.report).toMatchObject({ degenerateTriangles: 1, duplicateTriangles: 1, nonManifoldTriangles: 1, isolatedVertices: 2 });
@@ -139,8 +148,24 @@ describe('vertex normals', () => {
 
 /** An octahedron subdivided `levels` times with every vertex projected onto the unit sphere. */
 function icosphere(levels: number) {
-  let P: number[][] = [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]];
-  let T: number[][] = [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]];
+  let P: number[][] = [
+    [1, 0, 0],
+    [-1, 0, 0],
+    [0, 1, 0],
+    [0, -1, 0],
+    [0, 0, 1],
+    [0, 0, -1],
+  ];
+  let T: number[][] = [
+    [0, 2, 4],
+    [2, 1, 4],
+    [1, 3, 4],
+    [3, 0, 4],
+    [2, 0, 5],
+    [1, 2, 5],
+    [3, 1, 5],
+    [0, 3, 5],
+  ];
   for (let l = 0; l < levels; l++) {
     const mid = new Map<string, number>();
     const m = (a: number, b: number) => {
@@ -155,7 +180,12 @@ function icosphere(levels: number) {
     };
     T = T.flatMap(([a, b, c]) => {
       const [ab, bc, ca] = [m(a, b), m(b, c), m(c, a)];
-      return [[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]];
+      return [
+        [a, ab, ca],
+        [ab, b, bc],
+        [ca, bc, c],
+        [ab, bc, ca],
+      ];
     });
     P = P.slice();
   }

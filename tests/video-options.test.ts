@@ -5,7 +5,15 @@ describe('recordVideo options', () => {
   it('fills in the defaults and keeps what is given', () => {
     expect(checkVideoOptions({})).toEqual(VIDEO_DEFAULTS);
     const onProgress = (): void => {};
-    const o = checkVideoOptions({ fps: 10, width: 320, height: 240, seconds: 2, format: 'png-zip', onProgress, solverFramesPerVideoFrame: undefined });
+    const o = checkVideoOptions({
+      fps: 10,
+      width: 320,
+      height: 240,
+      seconds: 2,
+      format: 'png-zip',
+      onProgress,
+      solverFramesPerVideoFrame: undefined,
+    });
     expect(o).toMatchObject({ fps: 10, width: 320, height: 240, seconds: 2, format: 'png-zip', solverFramesPerVideoFrame: 6 });
     expect(o.onProgress).toBe(onProgress);
   });

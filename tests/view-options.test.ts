@@ -1,12 +1,24 @@
 import { describe, expect, it } from 'vitest';
-import { LIGHT_DEFAULTS, LIGHT_RANGES, RENDER_DEFAULTS, checkOptions, type LightOptions, type RenderOptions } from '../src/render/view-options';
+import {
+  LIGHT_DEFAULTS,
+  LIGHT_RANGES,
+  RENDER_DEFAULTS,
+  checkOptions,
+  type LightOptions,
+  type RenderOptions,
+} from '../src/render/view-options';
 
 const light = (partial: unknown): Partial<LightOptions> => checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, LIGHT_RANGES);
 const render = (partial: unknown): Partial<RenderOptions> => checkOptions<RenderOptions>('setRenderOptions', partial, RENDER_DEFAULTS);
 
 describe('light and render option checks', () => {
   it('accept known options of the right type within range', () => {
-    expect(light({ keyAzimuth: 360, keyElevation: -90, keyColor: '#A0b0c0', ambientIntensity: 0 })).toEqual({ keyAzimuth: 360, keyElevation: -90, keyColor: '#A0b0c0', ambientIntensity: 0 });
+    expect(light({ keyAzimuth: 360, keyElevation: -90, keyColor: '#A0b0c0', ambientIntensity: 0 })).toEqual({
+      keyAzimuth: 360,
+      keyElevation: -90,
+      keyColor: '#A0b0c0',
+      ambientIntensity: 0,
+    });
     expect(render({ wireframe: true })).toEqual({ wireframe: true });
     expect(light({})).toEqual({});
   });

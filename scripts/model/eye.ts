@@ -68,16 +68,26 @@ export function buildEyeball(options: Pick<EyeballOptions, 'radius'> & Partial<E
   const rand = mulberry32(o.seed);
   const streak = Array.from({ length: S }, () => rand());
   // Rings: 4 across the pupil, 14 across the iris, so the pupil edge falls on a ring.
-  const irisRings = [...steps(4).map((t) => t * pupilT), ...steps(14).slice(1).map((t) => pupilT + t * (1 - pupilT))];
+  const irisRings = [
+    ...steps(4).map((t) => t * pupilT),
+    ...steps(14)
+      .slice(1)
+      .map((t) => pupilT + t * (1 - pupilT)),
+  ];
   // The iris is a flat cone whose pupil edge stands a little forward (the lens pushes it), meeting the sclera at the limbus.
   const irisZ = (t: number): number => zi + 0.03 * r * Math.min(1, (1 - t) / (1 - pupilT));
-  const iris = revolve(S, irisRings, (t) => ({ rho: ri * t, z: irisZ(t), nRho: 0, nZ: 1 }), (seg, t) => {
-    if (t <= pupilT + 1e-9) return [0.01, 0.01, 0.012];
-    const u = (t - pupilT) / (1 - pupilT);
-    const s = 0.72 + 0.5 * streak[seg % S] * (1 - u);
-    const limbal = u > 0.85 ? 1 - 3.5 * (u - 0.85) : 1;
-    return [0, 1, 2].map((k) => (o.irisInner[k] * (1 - u) + o.irisOuter[k] * u) * s * limbal) as [number, number, number];
-  });
+  const iris = revolve(
+    S,
+    irisRings,
+    (t) => ({ rho: ri * t, z: irisZ(t), nRho: 0, nZ: 1 }),
+    (seg, t) => {
+      if (t <= pupilT + 1e-9) return [0.01, 0.01, 0.012];
+      const u = (t - pupilT) / (1 - pupilT);
+      const s = 0.72 + 0.5 * streak[seg % S] * (1 - u);
+      const limbal = u > 0.85 ? 1 - 3.5 * (u - 0.85) : 1;
+      return [0, 1, 2].map((k) => (o.irisInner[k] * (1 - u) + o.irisOuter[k] * u) * s * limbal) as [number, number, number];
+    },
+  );
 
   // Cornea: the sphere through the limbus ring and the apex.
   const za = r * (1 + o.corneaBulge);
@@ -159,4 +169,3 @@ function revolve(
 
 /** n + 1 evenly spaced values from 0 to 1. */
 const steps = (n: number): number[] => Array.from({ length: n + 1 }, (_, i) => i / n);
-

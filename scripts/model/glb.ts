@@ -52,7 +52,11 @@ export async function writeGlb(root: NodeSpec, sceneExtras: Record<string, unkno
   };
 
   const accessor = (type: 'VEC2' | 'VEC3' | 'SCALAR', array: Float32Array | Uint32Array | Uint16Array) =>
-    doc.createAccessor().setType(type).setArray(array as Float32Array<ArrayBuffer>).setBuffer(buffer);
+    doc
+      .createAccessor()
+      .setType(type)
+      .setArray(array as Float32Array<ArrayBuffer>)
+      .setBuffer(buffer);
 
   const build = (spec: NodeSpec): Node => {
     const node = doc.createNode(spec.name);

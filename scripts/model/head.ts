@@ -134,7 +134,9 @@ export function cutHead(source: SourceMesh, front = NECK_CUT_FRONT): HeadCut {
   const head = cutAlongLoop(body.mesh, loop, seed);
   const boundary = boundaryLoops(head.mesh);
   if (boundary.length !== 1 || boundary[0].length !== loop.length) {
-    throw new Error(`the neck cut should leave one boundary loop of ${loop.length} vertices, found ${boundary.map((b) => b.length).join(', ')}`);
+    throw new Error(
+      `the neck cut should leave one boundary loop of ${loop.length} vertices, found ${boundary.map((b) => b.length).join(', ')}`,
+    );
   }
   return { mesh: head.mesh, neckLoop: boundary[0] };
 }
@@ -178,7 +180,9 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
   const eyeCentre = groupCentre(source, 'joint-l-eye');
   let radius = 0;
   for (let v = 0; v < vertexCount(helperEye); v++) {
-    radius += Math.hypot(...([0, 1, 2].map((k) => helperEye.positions[3 * v + k] - eyeCentre[k]) as [number, number, number])) / vertexCount(helperEye);
+    radius +=
+      Math.hypot(...([0, 1, 2].map((k) => helperEye.positions[3 * v + k] - eyeCentre[k]) as [number, number, number])) /
+      vertexCount(helperEye);
   }
   const eyeball = buildEyeball({ radius: radius * DECIMETRE });
   const eyeParts = [
@@ -229,7 +233,13 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
       name: 'head',
       children: [
         { name: HEAD_NODES.skin, parts: [{ geometry: skin, material: MATERIALS.skin }] },
-        ...HEAD_NODES.eyes.map((eye) => ({ name: eye, translation: pivots[eye], meshName: 'eyeball', parts: eyeParts, extras: { softface: { pivot: eye } } })),
+        ...HEAD_NODES.eyes.map((eye) => ({
+          name: eye,
+          translation: pivots[eye],
+          meshName: 'eyeball',
+          parts: eyeParts,
+          extras: { softface: { pivot: eye } },
+        })),
         { name: HEAD_NODES.upperTeeth, parts: archParts(upperArch) },
         {
           name: HEAD_NODES.jaw,
@@ -242,7 +252,11 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
         },
         {
           name: 'pivots',
-          children: Object.entries(pivots).map(([pivot, at]) => ({ name: `pivot-${pivot}`, translation: at, extras: { softface: { pivot } } })),
+          children: Object.entries(pivots).map(([pivot, at]) => ({
+            name: `pivot-${pivot}`,
+            translation: at,
+            extras: { softface: { pivot } },
+          })),
         },
       ],
     };
@@ -253,7 +267,7 @@ export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
         units: 'metres',
         up: '+y',
         forward: '+z',
-        left: '+x (the subject\'s left)',
+        left: "+x (the subject's left)",
         source: 'MakeHuman hm08 base mesh (CC0 1.0)',
         level: stats,
         eyeRadius: radius * DECIMETRE,

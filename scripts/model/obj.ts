@@ -29,13 +29,15 @@ export function parseObj(text: string, source = 'OBJ'): ObjMesh {
     switch (parts[0]) {
       case 'v': {
         const xyz = parts.slice(1, 4).map(Number);
-        if (xyz.length < 3 || xyz.some((x) => !Number.isFinite(x))) throw new Error(`${where}: a vertex needs three finite numbers, got "${line}"`);
+        if (xyz.length < 3 || xyz.some((x) => !Number.isFinite(x)))
+          throw new Error(`${where}: a vertex needs three finite numbers, got "${line}"`);
         positions.push(...xyz);
         break;
       }
       case 'vt': {
         const uv = parts.slice(1, 3).map(Number);
-        if (uv.length < 2 || uv.some((x) => !Number.isFinite(x))) throw new Error(`${where}: a texture coordinate needs two finite numbers, got "${line}"`);
+        if (uv.length < 2 || uv.some((x) => !Number.isFinite(x)))
+          throw new Error(`${where}: a texture coordinate needs two finite numbers, got "${line}"`);
         uvs.push(...uv);
         break;
       }

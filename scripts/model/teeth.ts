@@ -235,7 +235,13 @@ class Builder {
       const l = Math.hypot(normals[v], normals[v + 1], normals[v + 2]) || 1;
       for (let k = 0; k < 3; k++) normals[v + k] /= l;
     }
-    return { positions: Float32Array.from(P), normals, uvs: Float32Array.from(this.uvs), colors: Float32Array.from(this.colors), indices: Uint32Array.from(I) };
+    return {
+      positions: Float32Array.from(P),
+      normals,
+      uvs: Float32Array.from(this.uvs),
+      colors: Float32Array.from(this.colors),
+      indices: Uint32Array.from(I),
+    };
   }
 }
 
@@ -276,7 +282,12 @@ const ROWS = [-0.3, 0, 0.2, 0.4, 0.58, 0.74, 0.87, 0.96, 1];
  * the plane the rows meet on (y = a + b z, metres), `up` +1 for the upper arch (crowns point down) and -1 for the
  * lower.
  */
-export function buildArch(outline: ArchCurve, occlusal: { a: number; b: number }, up: 1 | -1, options: ArchOptions = ARCH_DEFAULTS): DentalArch {
+export function buildArch(
+  outline: ArchCurve,
+  occlusal: { a: number; b: number },
+  up: 1 | -1,
+  options: ArchOptions = ARCH_DEFAULTS,
+): DentalArch {
   const specs = up > 0 ? UPPER_TEETH : LOWER_TEETH;
   const S = options.segments;
   const teeth = new Builder();
@@ -331,16 +342,34 @@ export function buildArch(outline: ArchCurve, occlusal: { a: number; b: number }
       // Caps: the root end (hidden in the gum) and the biting surface, its middle a little sunk on back teeth.
       const axis = section(spec.kind, 1);
       const axisAcross = -d * axis.b - axis.back * MM;
-      const root = teeth.vertex(cx + axisAcross * nx, tipY + up * (1 - ROWS[0]) * h, mid.z + axisAcross * nz, 0.5, ROWS[0], occlusion(arc, 0.5, 0));
+      const root = teeth.vertex(
+        cx + axisAcross * nx,
+        tipY + up * (1 - ROWS[0]) * h,
+        mid.z + axisAcross * nz,
+        0.5,
+        ROWS[0],
+        occlusion(arc, 0.5, 0),
+      );
       const sink = spec.kind === 'molar' || spec.kind === 'premolar' ? 0.1 : 0;
-      const tip = teeth.vertex(cx + axisAcross * nx, tipY + up * sink * h, mid.z + axisAcross * nz, 0.5, 1, occlusion(arc, 0.5, 1 - sink * 4));
+      const tip = teeth.vertex(
+        cx + axisAcross * nx,
+        tipY + up * sink * h,
+        mid.z + axisAcross * nz,
+        0.5,
+        1,
+        occlusion(arc, 0.5, 1 - sink * 4),
+      );
       const last = first + (ROWS.length - 1) * S;
       for (let j = 0; j < S; j++) {
         teeth.indices.push(root, first + j, first + ((j + 1) % S));
         teeth.indices.push(tip, last + j, last + ((j + 1) % S));
       }
       const axisMid = section(spec.kind, 0.4);
-      const centre: [number, number, number] = [cx - (d * axisMid.b + axisMid.back * MM) * nx, tipY + up * 0.5 * h, mid.z - (d * axisMid.b + axisMid.back * MM) * nz];
+      const centre: [number, number, number] = [
+        cx - (d * axisMid.b + axisMid.back * MM) * nx,
+        tipY + up * 0.5 * h,
+        mid.z - (d * axisMid.b + axisMid.back * MM) * nz,
+      ];
       for (let i = first; i <= tip; i++) centres[i] = centre;
     });
   }
@@ -367,7 +396,14 @@ function insetCurve(curve: ArchCurve, by: number): ArchCurve {
  * The gum: a band round the necks of the crowns, from a scalloped edge just outside them (rising to a papilla between
  * neighbours) up and over toward the root on both sides, across the midline from the back of one side to the other.
  */
-function buildGum(labial: ArchCurve, specs: ToothSpec[], starts: number[], occlusal: { a: number; b: number }, up: 1 | -1, options: ArchOptions): TriGeometry {
+function buildGum(
+  labial: ArchCurve,
+  specs: ToothSpec[],
+  starts: number[],
+  occlusal: { a: number; b: number },
+  up: 1 | -1,
+  options: ArchOptions,
+): TriGeometry {
   const gum = new Builder();
   const K = options.gumSamples;
   const end = starts[starts.length - 1] + 0.6 * MM;
@@ -392,7 +428,13 @@ function buildGum(labial: ArchCurve, specs: ToothSpec[], starts: number[], occlu
   ];
   const rows: number[][] = [];
   const inner: [number, number, number][] = [];
-  const ordered = [...along.slice(1).reverse().map((a) => ({ ...a, side: -1 })), ...along.map((a) => ({ ...a, side: 1 }))];
+  const ordered = [
+    ...along
+      .slice(1)
+      .reverse()
+      .map((a) => ({ ...a, side: -1 })),
+    ...along.map((a) => ({ ...a, side: 1 })),
+  ];
   for (const sample of ordered) {
     const spec = specs[sample.tooth];
     const next = specs[Math.min(sample.tooth + 1, specs.length - 1)];

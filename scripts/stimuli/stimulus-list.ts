@@ -10,7 +10,15 @@ import { isActionUnitId } from '../../src/core/facs';
 import { pathStep, problemOf, type RigProblem } from '../../src/core/rig-schema';
 import { parseTimeline, TimelineError } from '../../src/core/timeline-schema';
 import { PRESET_TARGET_PREFIX, type Timeline } from '../../src/core/timeline';
-import { CAMERA_DEFAULTS, CAMERA_RANGES, LIGHT_DEFAULTS, LIGHT_RANGES, checkOptions, type CameraOptions, type LightOptions } from '../../src/render/view-options';
+import {
+  CAMERA_DEFAULTS,
+  CAMERA_RANGES,
+  LIGHT_DEFAULTS,
+  LIGHT_RANGES,
+  checkOptions,
+  type CameraOptions,
+  type LightOptions,
+} from '../../src/render/view-options';
 
 export const STIMULI_FORMAT = 'softface-stimuli';
 export const STIMULI_VERSION = 1;
@@ -57,9 +65,22 @@ const oneOrMore = <T extends v.GenericSchema>(item: T) =>
     v.array(item),
     v.minLength(1, 'expected at least one value'),
   );
-const name = v.pipe(v.string('expected a name'), v.regex(/^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$/, 'expected a name of letters, digits, "-" and "_" (up to 64)'));
-const intensity = v.pipe(v.number('expected a number'), v.finite('expected a finite number'), v.minValue(0, 'expected 0..1'), v.maxValue(1, 'expected 0..1'));
-const size = v.pipe(v.number('expected a number of pixels'), v.integer('expected a whole number of pixels'), v.minValue(16, 'expected 16..4096 pixels'), v.maxValue(4096, 'expected 16..4096 pixels'));
+const name = v.pipe(
+  v.string('expected a name'),
+  v.regex(/^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$/, 'expected a name of letters, digits, "-" and "_" (up to 64)'),
+);
+const intensity = v.pipe(
+  v.number('expected a number'),
+  v.finite('expected a finite number'),
+  v.minValue(0, 'expected 0..1'),
+  v.maxValue(1, 'expected 0..1'),
+);
+const size = v.pipe(
+  v.number('expected a number of pixels'),
+  v.integer('expected a whole number of pixels'),
+  v.minValue(16, 'expected 16..4096 pixels'),
+  v.maxValue(4096, 'expected 16..4096 pixels'),
+);
 const options = v.record(v.string(), v.unknown(), 'expected an object of options');
 
 const Settings = {
@@ -69,13 +90,31 @@ const Settings = {
   resolution: v.optional(oneOrMore(v.picklist(RESOLUTIONS, `expected one of ${RESOLUTIONS.join(', ')}`))),
   width: v.optional(size),
   height: v.optional(size),
-  fps: v.optional(v.pipe(v.number('expected frames per second'), v.finite('expected a finite number'), v.minValue(1, 'expected 1..60 frames per second'), v.maxValue(60, 'expected 1..60 frames per second'))),
+  fps: v.optional(
+    v.pipe(
+      v.number('expected frames per second'),
+      v.finite('expected a finite number'),
+      v.minValue(1, 'expected 1..60 frames per second'),
+      v.maxValue(60, 'expected 1..60 frames per second'),
+    ),
+  ),
 };
 
 const Entry = v.strictObject(
   {
     name,
-    expression: v.optional(v.record(v.string(), v.pipe(v.number('expected a number'), v.finite('expected a finite number'), v.minValue(0, 'expected 0..1'), v.maxValue(1, 'expected 0..1')), 'expected an object of Action Unit ids and preset weights')),
+    expression: v.optional(
+      v.record(
+        v.string(),
+        v.pipe(
+          v.number('expected a number'),
+          v.finite('expected a finite number'),
+          v.minValue(0, 'expected 0..1'),
+          v.maxValue(1, 'expected 0..1'),
+        ),
+        'expected an object of Action Unit ids and preset weights',
+      ),
+    ),
     timeline: v.optional(v.unknown()),
     ...Settings,
   },
@@ -89,7 +128,15 @@ const ListSchema = v.strictObject({
   stimuli: v.pipe(v.array(Entry, 'expected a list of stimuli'), v.minLength(1, 'expected at least one stimulus')),
 });
 
-type Settings = { intensity?: number[]; light?: object[]; camera?: object[]; resolution?: Resolution[]; width?: number; height?: number; fps?: number };
+type Settings = {
+  intensity?: number[];
+  light?: object[];
+  camera?: object[];
+  resolution?: Resolution[];
+  width?: number;
+  height?: number;
+  fps?: number;
+};
 const list = <T>(x: T[] | undefined, fallback: T[]): T[] => x ?? fallback;
 
 /** Checks a parsed stimulus list and expands it into stimuli; throws StimulusListError naming every problem. */
@@ -117,7 +164,11 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
         timeline = parseTimeline(entry.timeline, at('timeline'));
       } catch (error) {
         if (!(error instanceof TimelineError)) throw error;
-        for (const p of error.problems) problems.push({ path: p.path ? `${at('timeline')}${p.path.startsWith('[') ? '' : '.'}${p.path}` : at('timeline'), message: p.message });
+        for (const p of error.problems)
+          problems.push({
+            path: p.path ? `${at('timeline')}${p.path.startsWith('[') ? '' : '.'}${p.path}` : at('timeline'),
+            message: p.message,
+          });
       }
     }
     const merged: Settings = { ...defaults, ...(entry as Settings) };
@@ -142,7 +193,8 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
     const format = timeline ? 'webm' : 'png';
     // Video frames are whole 2 x 2 blocks of colour samples (4:2:0).
     for (const side of ['width', 'height'] as const) {
-      if (timeline && (merged[side] ?? 512) % 2 === 1) problems.push({ path: at(side), message: `a video needs an even ${side}, got ${merged[side]}` });
+      if (timeline && (merged[side] ?? 512) % 2 === 1)
+        problems.push({ path: at(side), message: `a video needs an even ${side}, got ${merged[side]}` });
     }
     for (const i of list(merged.intensity, [1])) {
       for (let l = 0; l < lights.length; l++) {
@@ -180,7 +232,20 @@ export function scaleTimeline(t: Timeline, k: number): Timeline {
   return { ...t, tracks, actions: t.actions.map((a) => ({ ...a, intensity: a.intensity * k })) };
 }
 
-const CSV_COLUMNS = ['file', 'name', 'format', 'expression', 'timeline', 'intensity', 'light', 'camera', 'resolution', 'width', 'height', 'fps'] as const;
+const CSV_COLUMNS = [
+  'file',
+  'name',
+  'format',
+  'expression',
+  'timeline',
+  'intensity',
+  'light',
+  'camera',
+  'resolution',
+  'width',
+  'height',
+  'fps',
+] as const;
 
 /** The manifest: one CSV row per stimulus with everything it was rendered from (JSON in the object columns). */
 export function stimulusManifest(stimuli: readonly Stimulus[]): string {

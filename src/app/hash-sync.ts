@@ -1,5 +1,12 @@
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
-import { appearanceChanges, decodeAppearance, decodeExpression, decodeTimeline, encodeExpression, MAX_HASH_TIMELINE_CHARS } from '../embed/expression-hash';
+import {
+  appearanceChanges,
+  decodeAppearance,
+  decodeExpression,
+  decodeTimeline,
+  encodeExpression,
+  MAX_HASH_TIMELINE_CHARS,
+} from '../embed/expression-hash';
 import { APPEARANCE_DEFAULTS, type AppearanceOptions } from '../render/view-options';
 
 /** Options of the URL hash sync. */
@@ -12,7 +19,8 @@ export const HASH_SYNC_DEFAULTS: Required<HashSyncOptions> = { intervalMs: 250 }
 
 /**
  * Keeps the current expression (Action Unit sliders and preset weights) and appearance (where it differs from the
- * defaults) in the URL hash, with the loaded timeline when its JSON is short (`MAX_HASH_TIMELINE_CHARS`), so that a copied link reopens the same face: applies the hash the
+ * defaults) in the URL hash, with the loaded timeline when its JSON is short (`MAX_HASH_TIMELINE_CHARS`), so that a copied link reopens the
+ * same face: applies the hash the
  * page opened with (and any the user types later), and rewrites it with `history.replaceState` after changes, at most
  * every `intervalMs` and always after the last one. Replacing, not pushing, keeps slider moves out of the back
  * button's history.
@@ -64,7 +72,8 @@ export class HashSync {
       if (replace) this.face.reset();
       // A hash without appearance entries means the default look.
       const look = replace ? { ...APPEARANCE_DEFAULTS, ...appearance } : appearance;
-      for (const [key, value] of Object.entries(look)) attempt(() => this.face.setAppearance({ [key]: value } as Partial<AppearanceOptions>));
+      for (const [key, value] of Object.entries(look))
+        attempt(() => this.face.setAppearance({ [key]: value } as Partial<AppearanceOptions>));
       for (const [id, value] of Object.entries(actionUnits)) attempt(() => this.face.setActionUnit(id, value));
       for (const [name, weight] of Object.entries(presets)) attempt(() => this.face.applyPreset(name, weight));
       if (timeline !== null) attempt(() => this.face.setTimeline(timeline, 'URL hash timeline'));
@@ -82,7 +91,11 @@ export class HashSync {
     const timeline = this.face.getTimeline();
     const text = timeline ? JSON.stringify(timeline) : undefined;
     const look = appearanceChanges({ ...this.face.getAppearance() }, APPEARANCE_DEFAULTS);
-    return encodeExpression({ actionUnits: this.face.getActionUnits(), presets }, text !== undefined && text.length <= MAX_HASH_TIMELINE_CHARS ? text : undefined, look);
+    return encodeExpression(
+      { actionUnits: this.face.getActionUnits(), presets },
+      text !== undefined && text.length <= MAX_HASH_TIMELINE_CHARS ? text : undefined,
+      look,
+    );
   }
 
   /** Writes the hash now, dropping any write that was waiting. */

@@ -59,7 +59,8 @@ export function encodeEnvironment(environment: EnvironmentLevels): Uint8Array {
   for (let l = 0; l < levels; l++) {
     for (let f = 0; f < 6; f++) {
       const face = faces[l][f];
-      if (face.length !== 4 * (size >> l) ** 2) throw new Error(`environment level ${l} face ${f}: ${face.length} values, expected ${4 * (size >> l) ** 2}`);
+      if (face.length !== 4 * (size >> l) ** 2)
+        throw new Error(`environment level ${l} face ${f}: ${face.length} values, expected ${4 * (size >> l) ** 2}`);
       for (let i = 0; i < face.length; i += 4) {
         rgb[o++] = face[i];
         rgb[o++] = face[i + 1];
@@ -81,18 +82,21 @@ export function encodeEnvironment(environment: EnvironmentLevels): Uint8Array {
 
 /** Reads what encodeEnvironment wrote; throws naming the problem if the bytes are not such a file. */
 export function decodeEnvironment(bytes: Uint8Array): EnvironmentLevels {
-  if (bytes.length < 4 * HEADER_WORDS) throw new Error(`a baked environment has a ${4 * HEADER_WORDS}-byte header; this file has ${bytes.length} bytes`);
+  if (bytes.length < 4 * HEADER_WORDS)
+    throw new Error(`a baked environment has a ${4 * HEADER_WORDS}-byte header; this file has ${bytes.length} bytes`);
   const header = new DataView(bytes.buffer, bytes.byteOffset, 4 * HEADER_WORDS);
   const word = (k: number): number => header.getUint32(4 * k, true);
   if (word(0) !== ENVIRONMENT_MAGIC) throw new Error('not a baked environment (its first bytes are not "PREM")');
-  if (word(1) !== ENVIRONMENT_VERSION) throw new Error(`baked environment version ${word(1)}; this build reads version ${ENVIRONMENT_VERSION}`);
+  if (word(1) !== ENVIRONMENT_VERSION)
+    throw new Error(`baked environment version ${word(1)}; this build reads version ${ENVIRONMENT_VERSION}`);
   const size = word(2);
   const levels = word(3);
   if (!(size >= 1 && size <= 4096 && (size & (size - 1)) === 0 && levels >= 1 && size >> (levels - 1) >= 1)) {
     throw new Error(`baked environment with face size ${size} and ${levels} levels: not a power of two with that many halvings`);
   }
   const n = 3 * texelCount(size, levels);
-  if (bytes.length !== 4 * HEADER_WORDS + 2 * n) throw new Error(`baked environment of ${bytes.length} bytes; its header asks for ${4 * HEADER_WORDS + 2 * n}`);
+  if (bytes.length !== 4 * HEADER_WORDS + 2 * n)
+    throw new Error(`baked environment of ${bytes.length} bytes; its header asks for ${4 * HEADER_WORDS + 2 * n}`);
   const planes = 4 * HEADER_WORDS;
   const rgb = new Uint16Array(n);
   walk(size, levels, rgb, (i, predicted) => {

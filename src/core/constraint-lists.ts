@@ -155,7 +155,14 @@ export function createTriangleLists(topology: SkinTopology, memory: Memory = 'lo
  * in mesh order within a part; writes each triangle's place in the list into `places` (-1 if not listed) and returns
  * how many are listed.
  */
-export function fillTriangleLists(into: TriangleLists, triangles: Uint32Array, frames: Float32Array, included: Uint8Array | null, places: Int32Array, blocks: Uint32Array): number {
+export function fillTriangleLists(
+  into: TriangleLists,
+  triangles: Uint32Array,
+  frames: Float32Array,
+  included: Uint8Array | null,
+  places: Int32Array,
+  blocks: Uint32Array,
+): number {
   const count = triangles.length / 3;
   const C = into.corners;
   const F = into.frames;

@@ -119,8 +119,10 @@ export class EyeSimulation {
   constructor(options: Partial<EyeSimulationOptions> = {}) {
     this.o = { ...EYE_SIMULATION_DEFAULTS, ...options };
     const o = this.o;
-    if (!(o.blinkIntervalMin > o.blinkClose + o.blinkHold + o.blinkOpen + o.saccadeMax)) throw new Error('EyeSimulation: blink intervals must be longer than a blink and a saccade');
-    if (!(o.blinkIntervalMax >= o.blinkIntervalMin && o.holdMax >= o.holdMin && o.saccadeMax >= o.saccadeMin && o.saccadeMin > 0)) throw new Error('EyeSimulation: a range has its maximum below its minimum');
+    if (!(o.blinkIntervalMin > o.blinkClose + o.blinkHold + o.blinkOpen + o.saccadeMax))
+      throw new Error('EyeSimulation: blink intervals must be longer than a blink and a saccade');
+    if (!(o.blinkIntervalMax >= o.blinkIntervalMin && o.holdMax >= o.holdMin && o.saccadeMax >= o.saccadeMin && o.saccadeMin > 0))
+      throw new Error('EyeSimulation: a range has its maximum below its minimum');
     this.random = new SeededRandom(o.seed);
     this.reset();
   }

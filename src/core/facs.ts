@@ -169,7 +169,8 @@ export class ExpressionState {
   setActionUnit(id: string, value: number): void {
     const slots = SLOTS_OF.get(id);
     if (!slots) throw new Error(`setActionUnit: unknown Action Unit id ${show(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
-    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`setActionUnit: ${id} needs a finite number, got ${show(value)}`);
+    if (typeof value !== 'number' || !Number.isFinite(value))
+      throw new Error(`setActionUnit: ${id} needs a finite number, got ${show(value)}`);
     for (const s of slots) this.sliders[s] = clamp01(value);
     this.dirty = true;
   }
@@ -181,7 +182,8 @@ export class ExpressionState {
   setOverlay(id: string, value: number): boolean {
     const slots = SLOTS_OF.get(id);
     if (!slots) throw new Error(`setOverlay: unknown Action Unit id ${show(id)} (expected e.g. "AU43", "AU43L" or "AU43R")`);
-    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`setOverlay: ${id} needs a finite number, got ${show(value)}`);
+    if (typeof value !== 'number' || !Number.isFinite(value))
+      throw new Error(`setOverlay: ${id} needs a finite number, got ${show(value)}`);
     const v = clamp01(value);
     let changed = false;
     for (let i = 0; i < slots.length; i++) {
@@ -227,8 +229,10 @@ export class ExpressionState {
   /** Sets a preset's weight (clamped to 0..1; 0 turns it off). */
   applyPreset(name: string, weight: number): void {
     const index = this.presets.findIndex((p) => p.name === name);
-    if (index < 0) throw new Error(`applyPreset: unknown preset ${show(name)} (presets: ${this.presets.map((p) => p.name).join(', ') || 'none'})`);
-    if (typeof weight !== 'number' || !Number.isFinite(weight)) throw new Error(`applyPreset: ${name} needs a finite weight, got ${show(weight)}`);
+    if (index < 0)
+      throw new Error(`applyPreset: unknown preset ${show(name)} (presets: ${this.presets.map((p) => p.name).join(', ') || 'none'})`);
+    if (typeof weight !== 'number' || !Number.isFinite(weight))
+      throw new Error(`applyPreset: ${name} needs a finite weight, got ${show(weight)}`);
     this.presetWeights[index] = clamp01(weight);
     this.dirty = true;
   }
@@ -267,7 +271,12 @@ export class ExpressionState {
 
   /** The presets, in rig order, with their current weights. */
   listPresets(): PresetListing[] {
-    return this.presets.map((p, i) => ({ name: p.name, source: p.source, ...(p.note === undefined ? {} : { note: p.note }), weight: this.presetWeights[i] }));
+    return this.presets.map((p, i) => ({
+      name: p.name,
+      source: p.source,
+      ...(p.note === undefined ? {} : { note: p.note }),
+      weight: this.presetWeights[i],
+    }));
   }
 
   /** Every slider and preset weight back to 0 (the overlay is the page's, and stays). */
@@ -292,7 +301,8 @@ export class ExpressionState {
    */
   muscleContractions(rig: Rig, into: Float32Array): Float32Array {
     const plan = planFor(rig);
-    if (into.length < plan.muscleCount) throw new RangeError(`muscleContractions: needs room for ${plan.muscleCount} muscles, got ${into.length}`);
+    if (into.length < plan.muscleCount)
+      throw new RangeError(`muscleContractions: needs room for ${plan.muscleCount} muscles, got ${into.length}`);
     const e = this.effectiveIntensities();
     into.fill(0, 0, plan.muscleCount);
     for (let k = 0; k < plan.slot.length; k++) into[plan.muscle[k]] += e[plan.slot[k]] * plan.weight[k];
@@ -321,7 +331,8 @@ function presetToSlots(p: PresetDefinition): Float64Array {
   for (const [id, value] of Object.entries(p.actionUnits)) {
     const slots = SLOTS_OF.get(id);
     if (!slots) throw new Error(`ExpressionState: preset ${show(p.name)} names unknown Action Unit id ${show(id)}`);
-    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`ExpressionState: preset ${show(p.name)} gives ${id} a non-finite value ${show(value)}`);
+    if (typeof value !== 'number' || !Number.isFinite(value))
+      throw new Error(`ExpressionState: preset ${show(p.name)} gives ${id} a non-finite value ${show(value)}`);
     for (const s of slots) values[s] += value;
   }
   return values;
@@ -345,7 +356,11 @@ function buildPlan(rig: Rig): ContractionPlan {
   for (const au of rig.actionUnits) {
     const known = CATALOGUE_BY_ID.get(au.id);
     if (!known) throw new Error(`muscleContractions: rig Action Unit ${au.id} is not in the catalogue`);
-    if (known.bilateral !== au.bilateral) throw new Error(`muscleContractions: rig has ${au.id} as ${au.bilateral ? 'bilateral' : 'midline'}, the catalogue as ${known.bilateral ? 'bilateral' : 'midline'}`);
+    if (known.bilateral !== au.bilateral)
+      throw new Error(
+        `muscleContractions: rig has ${au.id} as ${au.bilateral ? 'bilateral' : 'midline'}, ` +
+          `the catalogue as ${known.bilateral ? 'bilateral' : 'midline'}`,
+      );
     for (const link of au.muscles) {
       const m = muscleIndex.get(link.muscle);
       if (m === undefined) throw new Error(`muscleContractions: ${au.id} names unknown muscle ${show(link.muscle)}`);
@@ -356,5 +371,10 @@ function buildPlan(rig: Rig): ContractionPlan {
       weight.push(link.weight);
     }
   }
-  return { muscleCount: rig.muscles.length, slot: Int32Array.from(slot), muscle: Int32Array.from(muscle), weight: Float64Array.from(weight) };
+  return {
+    muscleCount: rig.muscles.length,
+    slot: Int32Array.from(slot),
+    muscle: Int32Array.from(muscle),
+    weight: Float64Array.from(weight),
+  };
 }

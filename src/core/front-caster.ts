@@ -30,7 +30,10 @@ export class FrontCaster {
     private readonly triangles: ArrayLike<number>,
     private readonly cell = 0.002,
   ) {
-    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    let minX = Infinity,
+      minY = Infinity,
+      maxX = -Infinity,
+      maxY = -Infinity;
     for (let i = 0; i < positions.length; i += 3) {
       minX = Math.min(minX, positions[i]);
       maxX = Math.max(maxX, positions[i]);
@@ -63,7 +66,10 @@ export class FrontCaster {
   /** The cells a triangle's extent in x and y covers: first and last column, first and last row. */
   private extent(t: number): [number, number, number, number] {
     const p = this.positions;
-    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    let x0 = Infinity,
+      x1 = -Infinity,
+      y0 = Infinity,
+      y1 = -Infinity;
     for (let k = 0; k < 3; k++) {
       const v = 3 * this.triangles[3 * t + k];
       x0 = Math.min(x0, p[v]);
@@ -95,9 +101,16 @@ export class FrontCaster {
     let best = -Infinity;
     for (let e = this.starts[k]; e < this.starts[k + 1]; e++) {
       const t = this.entries[e];
-      const a = 3 * this.triangles[3 * t], b = 3 * this.triangles[3 * t + 1], d = 3 * this.triangles[3 * t + 2];
+      const a = 3 * this.triangles[3 * t],
+        b = 3 * this.triangles[3 * t + 1],
+        d = 3 * this.triangles[3 * t + 2];
       // Barycentric weights of (x, y) in the triangle's projection onto the xy plane.
-      const ax = p[a], ay = p[a + 1], bx = p[b], by = p[b + 1], dx = p[d], dy = p[d + 1];
+      const ax = p[a],
+        ay = p[a + 1],
+        bx = p[b],
+        by = p[b + 1],
+        dx = p[d],
+        dy = p[d + 1];
       const det = (by - dy) * (ax - dx) + (dx - bx) * (ay - dy);
       if (Math.abs(det) < 1e-18) continue;
       const w0 = ((by - dy) * (x - dx) + (dx - bx) * (y - dy)) / det;

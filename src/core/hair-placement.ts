@@ -113,7 +113,8 @@ interface EyeFrame {
 }
 
 function eyeFrame(inner: Vec3, outer: Vec3): EyeFrame {
-  const dx = outer[0] - inner[0], dy = outer[1] - inner[1];
+  const dx = outer[0] - inner[0],
+    dy = outer[1] - inner[1];
   const width = Math.hypot(dx, dy);
   const u: [number, number] = [dx / width, dy / width];
   // Up: the perpendicular that points to +y, whichever side the eye is on.
@@ -134,7 +135,9 @@ function smooth(t: number): number {
 /** The surface's unit normal at a hit, interpolated from its vertex normals. */
 function hitNormal(s: HairSurface, hit: FrontHit, out: number[]): void {
   const t = 3 * hit.triangle;
-  let x = 0, y = 0, z = 0;
+  let x = 0,
+    y = 0,
+    z = 0;
   const w = [hit.w0, hit.w1, hit.w2];
   for (let k = 0; k < 3; k++) {
     const v = 3 * s.triangles[t + k];
@@ -194,14 +197,21 @@ function browBand(a: number): { low: number; thick: number } {
     s <= BROW.archAt
       ? BROW.lowHead + (BROW.lowArch - BROW.lowHead) * smooth(s / BROW.archAt)
       : BROW.lowArch + (BROW.lowTail - BROW.lowArch) * smooth((s - BROW.archAt) / (1 - BROW.archAt));
-  let thick = s <= 0.5 ? BROW.thickHead + (BROW.thickArch - BROW.thickHead) * (s / 0.5) : BROW.thickArch + (BROW.thickTail - BROW.thickArch) * ((s - 0.5) / 0.5);
+  let thick =
+    s <= 0.5
+      ? BROW.thickHead + (BROW.thickArch - BROW.thickHead) * (s / 0.5)
+      : BROW.thickArch + (BROW.thickTail - BROW.thickArch) * ((s - 0.5) / 0.5);
   // The head is rounded, not cut square.
   if (s < 0.06) thick *= Math.sqrt(Math.max(0, 1 - ((0.06 - s) / 0.06) ** 2));
   return { low, thick };
 }
 
 /** Eyebrow hairs over both eyes of a skin: `BROW.hairs` per brow, shuffled between the two. */
-export function placeBrows(surface: HairSurface, landmarks: HairLandmarks, caster = new FrontCaster(surface.positions, surface.triangles)): HairStrands {
+export function placeBrows(
+  surface: HairSurface,
+  landmarks: HairLandmarks,
+  caster = new FrontCaster(surface.positions, surface.triangles),
+): HairStrands {
   const random = mulberry32(BROW.seed);
   const hairs: LaidHair[] = [];
   const hit: FrontHit = { triangle: 0, w0: 0, w1: 0, w2: 0, z: 0 };
@@ -233,8 +243,13 @@ export function placeBrows(surface: HairSurface, landmarks: HairLandmarks, caste
       angle += (random() - 0.5) * 18;
       const rad = (angle * Math.PI) / 180;
       const d2 = [Math.cos(rad) * e.u[0] + Math.sin(rad) * e.v[0], Math.cos(rad) * e.u[1] + Math.sin(rad) * e.v[1]];
-      const length = e.width * (BROW.lengthHead + (BROW.lengthBody - BROW.lengthHead) * smooth(s / 0.3)) * (1 + BROW.lengthSpread * (random() - 0.5));
-      const laid: LaidHair = { ...anchor(surface, hit), vertices: new Float32Array(3 * VERTICES_PER_HAIR), shade: new Float32Array(VERTICES_PER_HAIR) };
+      const length =
+        e.width * (BROW.lengthHead + (BROW.lengthBody - BROW.lengthHead) * smooth(s / 0.3)) * (1 + BROW.lengthSpread * (random() - 0.5));
+      const laid: LaidHair = {
+        ...anchor(surface, hit),
+        vertices: new Float32Array(3 * VERTICES_PER_HAIR),
+        shade: new Float32Array(VERTICES_PER_HAIR),
+      };
       // The centre line follows the skin, lifting a little toward the tip; a point off the skin ends the hair there.
       const line: number[] = [];
       const point: FrontHit = { ...hit };
@@ -246,11 +261,16 @@ export function placeBrows(surface: HairSurface, landmarks: HairLandmarks, caste
         }
         hitNormal(surface, point, n);
         const lift = BROW.liftRoot + (BROW.liftTip - BROW.liftRoot) * f * f;
-        const px = x0 + d2[0] * length * f, py = y0 + d2[1] * length * f;
+        const px = x0 + d2[0] * length * f,
+          py = y0 + d2[1] * length * f;
         line.push(px + lift * n[0], py + lift * n[1], point.z + lift * n[2]);
       }
       hitNormal(surface, hit, n);
-      const along = normalize([line[3 * (POINTS - 1)] - line[0], line[3 * (POINTS - 1) + 1] - line[1], line[3 * (POINTS - 1) + 2] - line[2]]);
+      const along = normalize([
+        line[3 * (POINTS - 1)] - line[0],
+        line[3 * (POINTS - 1) + 1] - line[1],
+        line[3 * (POINTS - 1) + 2] - line[2],
+      ]);
       ribbon(line, normalize(cross(n, along)), BROW.width, 0.85 + 0.3 * random(), laid);
       hairs.push(laid);
       made++;
@@ -293,7 +313,8 @@ export function findLidMargin(caster: FrontCaster, e: EyeFrame, columns = 40): L
       else if (deep(-r)) start = -r;
     }
     if (Number.isNaN(start)) continue;
-    let top = start, bottom = start;
+    let top = start,
+      bottom = start;
     while (top < steps && deep(top + 1)) top++;
     while (bottom > -steps && deep(bottom - 1)) bottom--;
     if (top === steps || bottom === -steps) continue;
@@ -309,7 +330,16 @@ export function findLidMargin(caster: FrontCaster, e: EyeFrame, columns = 40): L
  * to `tipAngle`, leaning `fan` toward `lateral`; null if a point of it lies behind the skin's front surface (inside the
  * lid) by more than 0.05 mm.
  */
-function lashLine(caster: FrontCaster, root: number[], length: number, rootAngle: number, tipAngle: number, up: number[], lateral: number[], fan: number): number[] | null {
+function lashLine(
+  caster: FrontCaster,
+  root: number[],
+  length: number,
+  rootAngle: number,
+  tipAngle: number,
+  up: number[],
+  lateral: number[],
+  fan: number,
+): number[] | null {
   const line = [...root];
   const segment = length / (POINTS - 1);
   const hit: FrontHit = { triangle: 0, w0: 0, w1: 0, w2: 0, z: 0 };
@@ -317,7 +347,9 @@ function lashLine(caster: FrontCaster, root: number[], length: number, rootAngle
     const angle = ((rootAngle + (tipAngle - rootAngle) * ((p - 0.5) / (POINTS - 1)) ** 1.5) * Math.PI) / 180;
     const d = normalize([Math.sin(angle) * up[0] + fan * lateral[0], Math.sin(angle) * up[1] + fan * lateral[1], Math.cos(angle)]);
     const o = 3 * (p - 1);
-    const x = line[o] + segment * d[0], y = line[o + 1] + segment * d[1], z = line[o + 2] + segment * d[2];
+    const x = line[o] + segment * d[0],
+      y = line[o + 1] + segment * d[1],
+      z = line[o + 2] + segment * d[2];
     if (caster.cast(x, y, hit) && z < hit.z - 0.00005) return null;
     line.push(x, y, z);
   }
@@ -336,7 +368,8 @@ function lidLine(surface: HairSurface, caster: FrontCaster, x: number, y: number
   const line: number[] = [];
   for (let p = 0; p < POINTS; p++) {
     const f = p / (POINTS - 1);
-    const px = x + (direction[0] / d) * length * f, py = y + (direction[1] / d) * length * f;
+    const px = x + (direction[0] / d) * length * f,
+      py = y + (direction[1] / d) * length * f;
     if (!caster.cast(px, py, hit)) return null;
     hitNormal(surface, hit, n);
     const lift = p === 0 ? 0 : LASHES.lowerLiftRoot + (LASHES.lowerLiftTip - LASHES.lowerLiftRoot) * f;
@@ -405,7 +438,8 @@ export function placeLashes(
         const s = (a - margin.a[0]) / (margin.a[margin.a.length - 1] - margin.a[0]);
         // Longest two thirds of the way out, short at the inner corner.
         const bump = Math.sin(Math.PI * Math.min(1, s / 0.66) * 0.5) * (s > 0.66 ? 1 - 0.5 * ((s - 0.66) / 0.34) : 1);
-        const length = e.width * (lid === 'upper' ? LASHES.upperLength : LASHES.lowerLength) * (0.45 + 0.55 * bump) * (0.85 + 0.3 * random());
+        const length =
+          e.width * (lid === 'upper' ? LASHES.upperLength : LASHES.lowerLength) * (0.45 + 0.55 * bump) * (0.85 + 0.3 * random());
 
         // Fanned: the inner lashes lean toward the nose a little, the outer ones out, more so the further out.
         const fan = (s - 0.3) * 0.55 + (random() - 0.5) * 0.15;
@@ -413,14 +447,19 @@ export function placeLashes(
         // forward; one that cannot is left out.
         let line: number[] | null = null;
         if (lid === 'upper') {
-          for (let turn = 1; turn >= 0.2 && !line; turn -= 0.2) line = lashLine(caster, [x, y, hit.z], length, LASHES.upperRootAngle * turn, LASHES.upperTipAngle * turn, up, lateral, fan);
+          for (let turn = 1; turn >= 0.2 && !line; turn -= 0.2)
+            line = lashLine(caster, [x, y, hit.z], length, LASHES.upperRootAngle * turn, LASHES.upperTipAngle * turn, up, lateral, fan);
         } else {
           // Down the lower lid's front, close to it: where the closed upper lid comes down over the lower margin, the
           // lower lashes are already below it rather than standing out into it.
           line = lidLine(surface, caster, x, y, length, [-up[0] + fan * lateral[0], -up[1] + fan * lateral[1]]);
         }
         if (!line) continue;
-        const laid: LaidHair = { ...anchor(surface, hit), vertices: new Float32Array(3 * VERTICES_PER_HAIR), shade: new Float32Array(VERTICES_PER_HAIR) };
+        const laid: LaidHair = {
+          ...anchor(surface, hit),
+          vertices: new Float32Array(3 * VERTICES_PER_HAIR),
+          shade: new Float32Array(VERTICES_PER_HAIR),
+        };
         ribbon(line, lateral, lid === 'upper' ? LASHES.width : LASHES.lowerWidth, 0.9 + 0.2 * random(), laid);
         hairs.push(laid);
       }

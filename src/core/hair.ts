@@ -32,17 +32,31 @@ export const ROOT_VERTICES = 2;
  * the unit normal (interpolated from the vertex normals). The tangent is the triangle's first edge made
  * perpendicular to the normal, so the frame turns with the skin patch around the hair.
  */
-export function anchorFrame(h: HairStrands, hair: number, positions: ArrayLike<number>, normals: ArrayLike<number>, out: Float64Array): void {
-  const i0 = 3 * h.corners[3 * hair], i1 = 3 * h.corners[3 * hair + 1], i2 = 3 * h.corners[3 * hair + 2];
-  const w0 = h.weights[3 * hair], w1 = h.weights[3 * hair + 1], w2 = h.weights[3 * hair + 2];
+export function anchorFrame(
+  h: HairStrands,
+  hair: number,
+  positions: ArrayLike<number>,
+  normals: ArrayLike<number>,
+  out: Float64Array,
+): void {
+  const i0 = 3 * h.corners[3 * hair],
+    i1 = 3 * h.corners[3 * hair + 1],
+    i2 = 3 * h.corners[3 * hair + 2];
+  const w0 = h.weights[3 * hair],
+    w1 = h.weights[3 * hair + 1],
+    w2 = h.weights[3 * hair + 2];
   let nx = w0 * normals[i0] + w1 * normals[i1] + w2 * normals[i2];
   let ny = w0 * normals[i0 + 1] + w1 * normals[i1 + 1] + w2 * normals[i2 + 1];
   let nz = w0 * normals[i0 + 2] + w1 * normals[i1 + 2] + w2 * normals[i2 + 2];
   let n = Math.hypot(nx, ny, nz);
   if (!(n > 1e-12)) {
     // No usable vertex normals (a sliver, or zero normals): the triangle's own.
-    const ax = positions[i1] - positions[i0], ay = positions[i1 + 1] - positions[i0 + 1], az = positions[i1 + 2] - positions[i0 + 2];
-    const bx = positions[i2] - positions[i0], by = positions[i2 + 1] - positions[i0 + 1], bz = positions[i2 + 2] - positions[i0 + 2];
+    const ax = positions[i1] - positions[i0],
+      ay = positions[i1 + 1] - positions[i0 + 1],
+      az = positions[i1 + 2] - positions[i0 + 2];
+    const bx = positions[i2] - positions[i0],
+      by = positions[i2 + 1] - positions[i0 + 1],
+      bz = positions[i2 + 2] - positions[i0 + 2];
     nx = ay * bz - az * by;
     ny = az * bx - ax * bz;
     nz = ax * by - ay * bx;
@@ -51,7 +65,9 @@ export function anchorFrame(h: HairStrands, hair: number, positions: ArrayLike<n
   nx /= n;
   ny /= n;
   nz /= n;
-  let tx = positions[i1] - positions[i0], ty = positions[i1 + 1] - positions[i0 + 1], tz = positions[i1 + 2] - positions[i0 + 2];
+  let tx = positions[i1] - positions[i0],
+    ty = positions[i1 + 1] - positions[i0 + 1],
+    tz = positions[i1 + 2] - positions[i0 + 2];
   const along = tx * nx + ty * ny + tz * nz;
   tx -= along * nx;
   ty -= along * ny;
@@ -104,13 +120,23 @@ export function poseHair(
   const local = h.local;
   for (let hair = 0; hair < count; hair++) {
     anchorFrame(h, hair, positions, normals, frame);
-    const ax = frame[0], ay = frame[1], az = frame[2];
-    const tx = frame[3], ty = frame[4], tz = frame[5];
-    const bx = frame[6], by = frame[7], bz = frame[8];
-    const nx = frame[9], ny = frame[10], nz = frame[11];
+    const ax = frame[0],
+      ay = frame[1],
+      az = frame[2];
+    const tx = frame[3],
+      ty = frame[4],
+      tz = frame[5];
+    const bx = frame[6],
+      by = frame[7],
+      bz = frame[8];
+    const nx = frame[9],
+      ny = frame[10],
+      nz = frame[11];
     const end = 3 * (hair + 1) * per;
     for (let o = 3 * hair * per; o < end; o += 3) {
-      const lt = local[o], lb = local[o + 1], ln = local[o + 2];
+      const lt = local[o],
+        lb = local[o + 1],
+        ln = local[o + 2];
       outPositions[o] = ax + lt * tx + lb * bx + ln * nx;
       outPositions[o + 1] = ay + lt * ty + lb * by + ln * ny;
       outPositions[o + 2] = az + lt * tz + lb * bz + ln * nz;
@@ -127,7 +153,12 @@ export function poseHair(
  */
 export function strandsAtRest(
   rest: { positions: ArrayLike<number>; normals: ArrayLike<number> },
-  hairs: readonly { corners: readonly [number, number, number]; weights: readonly [number, number, number]; vertices: ArrayLike<number>; shade: ArrayLike<number> }[],
+  hairs: readonly {
+    corners: readonly [number, number, number];
+    weights: readonly [number, number, number];
+    vertices: ArrayLike<number>;
+    shade: ArrayLike<number>;
+  }[],
   verticesPerHair: number,
   ribbon: readonly (readonly [number, number, number])[],
 ): HairStrands {
@@ -150,13 +181,20 @@ export function strandsAtRest(
   hairs.forEach((hair, k) => {
     anchorFrame(h, k, rest.positions, rest.normals, f);
     for (let v = 0; v < verticesPerHair; v++) {
-      const dx = hair.vertices[3 * v] - f[0], dy = hair.vertices[3 * v + 1] - f[1], dz = hair.vertices[3 * v + 2] - f[2];
+      const dx = hair.vertices[3 * v] - f[0],
+        dy = hair.vertices[3 * v + 1] - f[1],
+        dz = hair.vertices[3 * v + 2] - f[2];
       const o = 3 * (k * verticesPerHair + v);
       h.local[o] = dx * f[3] + dy * f[4] + dz * f[5];
       h.local[o + 1] = dx * f[6] + dy * f[7] + dz * f[8];
       h.local[o + 2] = dx * f[9] + dy * f[10] + dz * f[11];
     }
-    ribbon.forEach((tri, i) => h.indices.set([k * verticesPerHair + tri[0], k * verticesPerHair + tri[1], k * verticesPerHair + tri[2]], 3 * (k * ribbon.length + i)));
+    ribbon.forEach((tri, i) =>
+      h.indices.set(
+        [k * verticesPerHair + tri[0], k * verticesPerHair + tri[1], k * verticesPerHair + tri[2]],
+        3 * (k * ribbon.length + i),
+      ),
+    );
   });
   return h;
 }

@@ -108,7 +108,8 @@ function triangulate(mesh: PolyMesh, withUvs: boolean): TriangleMesh {
     }
     render[c] = r;
   }
-  const d2 = (a: number, b: number): number => (P[3 * a] - P[3 * b]) ** 2 + (P[3 * a + 1] - P[3 * b + 1]) ** 2 + (P[3 * a + 2] - P[3 * b + 2]) ** 2;
+  const d2 = (a: number, b: number): number =>
+    (P[3 * a] - P[3 * b]) ** 2 + (P[3 * a + 1] - P[3 * b + 1]) ** 2 + (P[3 * a + 2] - P[3 * b + 2]) ** 2;
   const triangles: number[] = [];
   for (let f = 0; f < faceCount(mesh); f++) {
     const s = mesh.faceStart[f];
@@ -118,5 +119,9 @@ function triangulate(mesh: PolyMesh, withUvs: boolean): TriangleMesh {
     if (n === 4 && d2(v(1), v(3)) < d2(v(0), v(2))) triangles.push(c(0), c(1), c(3), c(1), c(2), c(3));
     else for (let i = 1; i + 1 < n; i++) triangles.push(c(0), c(i), c(i + 1));
   }
-  return { positions: Float32Array.from(positions), indices: Uint32Array.from(triangles), uvs: withUvs ? Float32Array.from(uvs) : undefined };
+  return {
+    positions: Float32Array.from(positions),
+    indices: Uint32Array.from(triangles),
+    uvs: withUvs ? Float32Array.from(uvs) : undefined,
+  };
 }

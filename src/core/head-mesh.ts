@@ -22,7 +22,10 @@ export function checkHeadMesh(mesh: TriangleMesh, source: string): void {
   const vertices = Math.floor(mesh.positions.length / 3);
   if (triangles === 0 || vertices < 4) throw new Error(`${source}: the mesh has no triangles`);
   if (triangles > MAX_HEAD_TRIANGLES) {
-    throw new Error(`${source}: the mesh has ${triangles.toLocaleString('en-US')} triangles, more than the ${MAX_HEAD_TRIANGLES.toLocaleString('en-US')} a head may have (decimate it first)`);
+    throw new Error(
+      `${source}: the mesh has ${triangles.toLocaleString('en-US')} triangles, more than ` +
+        `the ${MAX_HEAD_TRIANGLES.toLocaleString('en-US')} a head may have (decimate it first)`,
+    );
   }
   for (let i = 0; i < 3 * vertices; i++) {
     if (!Number.isFinite(mesh.positions[i])) {
@@ -30,7 +33,8 @@ export function checkHeadMesh(mesh: TriangleMesh, source: string): void {
     }
   }
   for (let i = 0; i < mesh.indices.length; i++) {
-    if (mesh.indices[i] >= vertices) throw new Error(`${source}: triangle ${Math.floor(i / 3)} uses vertex ${mesh.indices[i]}, but the mesh has ${vertices}`);
+    if (mesh.indices[i] >= vertices)
+      throw new Error(`${source}: triangle ${Math.floor(i / 3)} uses vertex ${mesh.indices[i]}, but the mesh has ${vertices}`);
   }
 }
 
@@ -91,7 +95,9 @@ export function mergeVertices(mesh: TriangleMesh): TriangleMesh {
   const outUvs: number[] = [];
   const remap = new Uint32Array(P.length / 3);
   for (let v = 0; v < remap.length; v++) {
-    const key = uvs ? `${P[3 * v]},${P[3 * v + 1]},${P[3 * v + 2]},${uvs[2 * v]},${uvs[2 * v + 1]}` : `${P[3 * v]},${P[3 * v + 1]},${P[3 * v + 2]}`;
+    const key = uvs
+      ? `${P[3 * v]},${P[3 * v + 1]},${P[3 * v + 2]},${uvs[2 * v]},${uvs[2 * v + 1]}`
+      : `${P[3 * v]},${P[3 * v + 1]},${P[3 * v + 2]}`;
     let r = index.get(key);
     if (r === undefined) {
       r = positions.length / 3;
@@ -145,16 +151,25 @@ const HEAD_SIZE = 0.25;
  *   the surface comes to a point (the nose) rather than a broad cap (the back of the head).
  * Throws, naming the size, if no unit makes the mesh head-sized.
  */
-export function findHeadFrame(positions: Float32Array, indices: Uint32Array, options: HeadFrameOptions = {}, source = 'the head'): HeadFrame {
+export function findHeadFrame(
+  positions: Float32Array,
+  indices: Uint32Array,
+  options: HeadFrameOptions = {},
+  source = 'the head',
+): HeadFrame {
   const { min, max } = positionBounds(positions);
   const extent = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
   let units: Unit;
   if (options.units && options.units !== 'auto') units = options.units;
   else {
-    units = (Object.keys(UNITS) as Unit[]).reduce((a, b) => (Math.abs(Math.log(extent * UNITS[b] / HEAD_SIZE)) < Math.abs(Math.log(extent * UNITS[a] / HEAD_SIZE)) ? b : a));
+    units = (Object.keys(UNITS) as Unit[]).reduce((a, b) =>
+      Math.abs(Math.log((extent * UNITS[b]) / HEAD_SIZE)) < Math.abs(Math.log((extent * UNITS[a]) / HEAD_SIZE)) ? b : a,
+    );
     const size = extent * UNITS[units];
     if (size < 0.1 || size > 0.6) {
-      throw new Error(`${source}: the mesh is ${extent.toPrecision(3)} units across, not the size of a head in m, dm, cm or mm; give its units`);
+      throw new Error(
+        `${source}: the mesh is ${extent.toPrecision(3)} units across, not the size of a head in m, dm, cm or mm; give its units`,
+      );
     }
   }
   const scale = UNITS[units];

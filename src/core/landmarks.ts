@@ -47,7 +47,8 @@ export const LANDMARK_LABELS: Readonly<Record<LandmarkName, string>> = Object.fr
 
 /**
  * The default head's landmarks (the low head, as `findLandmarks` finds them; the medium head's are within 4 mm, the
- * chin sliding most along its flat profile): the rig in `public/rigs/default.json` was made on this head, so a warp from these points carries it over.
+ * chin sliding most along its flat profile): the rig in `public/rigs/default.json` was made on this head, so a warp from these points
+ * carries it over.
  */
 export const DEFAULT_LANDMARKS: Readonly<Landmarks> = Object.freeze({
   'nose-tip': [0, 0.691, 0.1681],
@@ -147,7 +148,10 @@ export function findLandmarks(positions: ArrayLike<number>, triangles: ArrayLike
   let eyeY = 0;
   let eyeTop = 0;
   if (eyes) {
-    for (const [pit, side] of [[eyes[0], 'l'], [eyes[1], 'r']] as const) {
+    for (const [pit, side] of [
+      [eyes[0], 'l'],
+      [eyes[1], 'r'],
+    ] as const) {
       let inner = pit.cells[0];
       let outer = pit.cells[0];
       for (const c of pit.cells) {
@@ -159,7 +163,11 @@ export function findLandmarks(positions: ArrayLike<number>, triangles: ArrayLike
     }
     eyeY = (eyes[0].cy + eyes[1].cy) / 2;
     eyeTop = Math.max(...eyes.flatMap((p) => p.cells.map(Y)));
-  } else miss(['eye-inner-l', 'eye-outer-l', 'eye-inner-r', 'eye-outer-r', 'brow-l', 'brow-r'], 'no pair of eye openings was found above the nose');
+  } else
+    miss(
+      ['eye-inner-l', 'eye-outer-l', 'eye-inner-r', 'eye-outer-r', 'brow-l', 'brow-r'],
+      'no pair of eye openings was found above the nose',
+    );
 
   // Mouth: the largest pit below the nose near the midline, with the pits level with it (the slit may be broken
   // where the lips touch).
@@ -187,7 +195,11 @@ export function findLandmarks(positions: ArrayLike<number>, triangles: ArrayLike
     for (const side of ['l', 'r'] as const) {
       const column = Math.round((found[`eye-inner-${side}`]![0] - image.x0) / cell);
       let brow = -1;
-      for (let row = Math.ceil((eyeTop + 0.003 - image.y0) / cell); row <= Math.floor((eyeTop + 0.03 - image.y0) / cell) && row < H; row++) {
+      for (
+        let row = Math.ceil((eyeTop + 0.003 - image.y0) / cell);
+        row <= Math.floor((eyeTop + 0.03 - image.y0) / cell) && row < H;
+        row++
+      ) {
         const i = row * W + column;
         if (Number.isFinite(closed[i]) && (brow < 0 || closed[i] > closed[brow])) brow = i;
       }
@@ -290,9 +302,15 @@ function depthImage(P: ArrayLike<number>, T: ArrayLike<number>): DepthImage {
     const a = 3 * T[t];
     const b = 3 * T[t + 1];
     const c = 3 * T[t + 2];
-    const ax = (P[a] - x0) / cell, ay = (P[a + 1] - y0) / cell, az = P[a + 2];
-    const bx = (P[b] - x0) / cell, by = (P[b + 1] - y0) / cell, bz = P[b + 2];
-    const cx = (P[c] - x0) / cell, cy = (P[c + 1] - y0) / cell, cz = P[c + 2];
+    const ax = (P[a] - x0) / cell,
+      ay = (P[a + 1] - y0) / cell,
+      az = P[a + 2];
+    const bx = (P[b] - x0) / cell,
+      by = (P[b + 1] - y0) / cell,
+      bz = P[b + 2];
+    const cx = (P[c] - x0) / cell,
+      cy = (P[c + 1] - y0) / cell,
+      cz = P[c + 2];
     const d = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
     if (Math.abs(d) < 1e-12) continue;
     const i0 = Math.max(0, Math.ceil(Math.min(ax, bx, cx)));
@@ -361,7 +379,12 @@ function findPits(image: DepthImage, closed: Float32Array): Pit[] {
       const i = cells[k];
       const x = i % W;
       const y = Math.floor(i / W);
-      for (const [nx, ny] of [[x - 1, y], [x + 1, y], [x, y - 1], [x, y + 1]]) {
+      for (const [nx, ny] of [
+        [x - 1, y],
+        [x + 1, y],
+        [x, y - 1],
+        [x, y + 1],
+      ]) {
         if (nx < 0 || ny < 0 || nx >= W || ny >= H) continue;
         const j = ny * W + nx;
         if (pit[j] && !seen[j]) {

@@ -29,19 +29,29 @@ export const MAX_EXPORT_FPS = 120;
  * `timelineTargets`) that are not among them. Each id and preset is checked first: an unknown one, one listed twice,
  * a preset named like an Action Unit, or nothing to export at all throws naming the option.
  */
-export function planTargets(actionUnits: readonly string[], presets: readonly string[], known: readonly string[], timeline: Timeline | null, what = 'exportGLTF'): MorphTarget[] {
+export function planTargets(
+  actionUnits: readonly string[],
+  presets: readonly string[],
+  known: readonly string[],
+  timeline: Timeline | null,
+  what = 'exportGLTF',
+): MorphTarget[] {
   if (!Array.isArray(actionUnits)) throw new Error(`${what}: actionUnits must be an array of Action Unit ids, got ${String(actionUnits)}`);
   if (!Array.isArray(presets)) throw new Error(`${what}: presets must be an array of preset names, got ${String(presets)}`);
   const targets: MorphTarget[] = [];
   const names = new Set<string>();
   for (const id of actionUnits) {
-    if (typeof id !== 'string' || !isActionUnitId(id)) throw new Error(`${what}: actionUnits: unknown Action Unit id ${JSON.stringify(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
+    if (typeof id !== 'string' || !isActionUnitId(id))
+      throw new Error(
+        `${what}: actionUnits: unknown Action Unit id ${JSON.stringify(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`,
+      );
     if (names.has(id)) throw new Error(`${what}: actionUnits: ${id} is listed twice`);
     names.add(id);
     targets.push({ name: id, kind: 'actionUnit', id });
   }
   for (const name of presets) {
-    if (typeof name !== 'string' || !known.includes(name)) throw new Error(`${what}: presets: unknown preset ${JSON.stringify(name)} (presets: ${known.join(', ') || 'none'})`);
+    if (typeof name !== 'string' || !known.includes(name))
+      throw new Error(`${what}: presets: unknown preset ${JSON.stringify(name)} (presets: ${known.join(', ') || 'none'})`);
     // A preset's target takes the preset's name: it must not be taken for an Action Unit's.
     if (isActionUnitId(name)) throw new Error(`${what}: presets: the preset ${JSON.stringify(name)} is named like an Action Unit`);
     if (names.has(name)) throw new Error(`${what}: presets: ${name} is listed twice`);
@@ -73,7 +83,8 @@ export function timelineTargets(timeline: Timeline): MorphTarget[] {
     return /[LR]$/.test(name) && isActionUnitId(base) ? base : null;
   };
   const sided = new Set<string>();
-  for (const name of named) if (!name.startsWith(PRESET_TARGET_PREFIX) && unitOf(name) !== null && unitOf(name) !== name) sided.add(unitOf(name)!);
+  for (const name of named)
+    if (!name.startsWith(PRESET_TARGET_PREFIX) && unitOf(name) !== null && unitOf(name) !== name) sided.add(unitOf(name)!);
   const out: MorphTarget[] = [];
   const seen = new Set<string>();
   const add = (kind: MorphTarget['kind'], id: string): void => {
@@ -102,7 +113,8 @@ export function timelineTargets(timeline: Timeline): MorphTarget[] {
  * Targets that `timelineTargets` does not give for it stay at 0.
  */
 export function timelineWeights(timeline: Timeline, targets: readonly MorphTarget[], fps: number): MorphWeights {
-  if (typeof fps !== 'number' || !Number.isFinite(fps) || fps <= 0 || fps > MAX_EXPORT_FPS) throw new Error(`fps must be a number above 0 and at most ${MAX_EXPORT_FPS}, got ${String(fps)}`);
+  if (typeof fps !== 'number' || !Number.isFinite(fps) || fps <= 0 || fps > MAX_EXPORT_FPS)
+    throw new Error(`fps must be a number above 0 and at most ${MAX_EXPORT_FPS}, got ${String(fps)}`);
   const duration = timelineDuration(timeline);
   const sample = createTimelineSample(timeline);
   // Only the targets the timeline itself needs move: an `AU12` asked for beside a timeline of `AU12L` stays at 0,

@@ -22,9 +22,12 @@ const CATALOGUE_ORDER: ReadonlyMap<string, number> = new Map(ACTION_UNITS.map((a
  */
 export function nextMuscleDisplay(current: MuscleDisplay, partial: unknown): MuscleDisplay {
   const where = 'setMuscleDisplay';
-  if (typeof partial !== 'object' || partial === null || Array.isArray(partial)) throw new Error(`${where}: needs an object like { all: true } or { actionUnits: ["AU12"] }, got ${String(partial)}`);
+  if (typeof partial !== 'object' || partial === null || Array.isArray(partial))
+    throw new Error(`${where}: needs an object like { all: true } or { actionUnits: ["AU12"] }, got ${String(partial)}`);
   const p = partial as Record<string, unknown>;
-  for (const key of Object.keys(p)) if (key !== 'all' && key !== 'actionUnits') throw new Error(`${where}: unknown option ${JSON.stringify(key)} (expected "all" or "actionUnits")`);
+  for (const key of Object.keys(p))
+    if (key !== 'all' && key !== 'actionUnits')
+      throw new Error(`${where}: unknown option ${JSON.stringify(key)} (expected "all" or "actionUnits")`);
   let all = current.all;
   if (p.all !== undefined) {
     if (typeof p.all !== 'boolean') throw new Error(`${where}: all needs a boolean, got ${String(p.all)}`);
@@ -32,10 +35,14 @@ export function nextMuscleDisplay(current: MuscleDisplay, partial: unknown): Mus
   }
   let actionUnits = current.actionUnits;
   if (p.actionUnits !== undefined) {
-    if (!Array.isArray(p.actionUnits)) throw new Error(`${where}: actionUnits needs an array of Action Unit ids, got ${String(p.actionUnits)}`);
+    if (!Array.isArray(p.actionUnits))
+      throw new Error(`${where}: actionUnits needs an array of Action Unit ids, got ${String(p.actionUnits)}`);
     for (const id of p.actionUnits as unknown[]) {
       if (typeof id !== 'string' || !CATALOGUE_ORDER.has(id)) {
-        throw new Error(`${where}: unknown Action Unit id ${typeof id === 'string' ? JSON.stringify(id) : String(id)} (expected one like "AU12", without a side)`);
+        throw new Error(
+          `${where}: unknown Action Unit id ${typeof id === 'string' ? JSON.stringify(id) : String(id)} ` +
+            `(expected one like "AU12", without a side)`,
+        );
       }
     }
     actionUnits = [...new Set(p.actionUnits as string[])].sort((a, b) => CATALOGUE_ORDER.get(a)! - CATALOGUE_ORDER.get(b)!);

@@ -102,7 +102,8 @@ export function validateMuscle(m: Muscle): void {
       // An inner ellipsoid poking out of the outer one would make the pull stop in a step over a patch of skin. Equal
       // radii on an axis are allowed (a rig may want no fade along the depth): the step is then only at that axis's
       // two poles, the outer ellipsoid's tips, and the fade is steep only near them.
-      for (let i = 0; i < 3; i++) if (!(inner[i] <= radii[i])) fail(`innerRadii[${i}] must not exceed radii[${i}] (${radii[i]}), got ${inner[i]}`);
+      for (let i = 0; i < 3; i++)
+        if (!(inner[i] <= radii[i])) fail(`innerRadii[${i}] must not exceed radii[${i}] (${radii[i]}), got ${inner[i]}`);
       vector(m.scale, 'scale');
       if (finite(m.strength, 'strength') < 0) fail(`strength must not be negative, got ${m.strength}`);
       within(m.normalWeight, 'normalWeight', 0, 1);
@@ -280,7 +281,16 @@ function turnAt(P: Float64Array, o: number, c: number, qx: number, qy: number, q
 }
 
 /** The offset of (x, y, z) turned by rotation muscle `o` by the turn in `turn[at..at+2]` (see turnAt), into `out`. */
-function turnPoint(P: Float64Array, o: number, x: number, y: number, z: number, turn: Float64Array, at: number, out: Float64Array | number[]): void {
+function turnPoint(
+  P: Float64Array,
+  o: number,
+  x: number,
+  y: number,
+  z: number,
+  turn: Float64Array,
+  at: number,
+  out: Float64Array | number[],
+): void {
   const F = o + FRAME;
   rotationOffsetBy(x, y, z, P[o + JOINT], P[o + JOINT + 1], P[o + JOINT + 2], P[F], P[F + 3], P[F + 6], turn[at], turn[at + 1], out);
 }
@@ -298,7 +308,21 @@ interface TurnCache {
 }
 
 /** displace, with the turn of a rotation muscle `m` (at `o`) for vertex `v` taken from `cache` once displace found it. */
-function displaceVertex(P: Float64Array, o: number, m: number, v: number, c: number, x: number, y: number, z: number, out: Float64Array, rx: number, ry: number, rz: number, cache: TurnCache): number {
+function displaceVertex(
+  P: Float64Array,
+  o: number,
+  m: number,
+  v: number,
+  c: number,
+  x: number,
+  y: number,
+  z: number,
+  out: Float64Array,
+  rx: number,
+  ry: number,
+  rz: number,
+  cache: TurnCache,
+): number {
   const type = P[o + TYPE];
   if (type !== LID && type !== JAW) return displace(P, o, c, x, y, z, out, rx, ry, rz);
   if (cache.vertex[m] !== v) {
@@ -354,7 +378,15 @@ function displaceLinear(P: Float64Array, o: number, c: number, dx: number, dy: n
  * between the ellipsoids R = cos((rho - rho_s) / (1 - rho_s) pi/2), rho the outer normalised distance and rho_s = rho / t
  * that of the inner surface along the same ray, so it falls from full on the inner surface to zero on the outer one.
  */
-function displaceSphincter(P: Float64Array, o: number, c: number, qx: number, qy: number, qz: number, out: Float64Array | number[]): number {
+function displaceSphincter(
+  P: Float64Array,
+  o: number,
+  c: number,
+  qx: number,
+  qy: number,
+  qz: number,
+  out: Float64Array | number[],
+): number {
   const ox = qx * P[o + INVERSE_RADII];
   const oy = qy * P[o + INVERSE_RADII + 1];
   const oz = qz * P[o + INVERSE_RADII + 2];
@@ -392,7 +424,18 @@ function displaceSphincter(P: Float64Array, o: number, c: number, qx: number, qy
  * is its falloff times this (the turn's angle, for the rotation muscles), so `c` times a falloff gives the field at
  * that falloff. Used where a brush sets the falloff, also outside the muscle's zone. Allocates nothing.
  */
-function displaceAtFalloff(P: Float64Array, o: number, c: number, x: number, y: number, z: number, out: Float64Array | number[], rx: number, ry: number, rz: number): void {
+function displaceAtFalloff(
+  P: Float64Array,
+  o: number,
+  c: number,
+  x: number,
+  y: number,
+  z: number,
+  out: Float64Array | number[],
+  rx: number,
+  ry: number,
+  rz: number,
+): void {
   const type = P[o + TYPE];
   const F = o + FRAME;
   if (type === LINEAR) {
@@ -503,7 +546,11 @@ function reaches(P: Float64Array, o: number, margin: number, x: number, y: numbe
   const qy = P[F + 1] * dx + P[F + 4] * dy + P[F + 7] * dz;
   const qz = P[F + 2] * dx + P[F + 5] * dy + P[F + 8] * dz;
   if (type === JAW) {
-    return Math.abs(qx) <= P[o + HALF_SIZE] + margin && Math.abs(qy) <= P[o + HALF_SIZE + 1] + margin && Math.abs(qz) <= P[o + HALF_SIZE + 2] + margin;
+    return (
+      Math.abs(qx) <= P[o + HALF_SIZE] + margin &&
+      Math.abs(qy) <= P[o + HALF_SIZE + 1] + margin &&
+      Math.abs(qz) <= P[o + HALF_SIZE + 2] + margin
+    );
   }
   // Ellipsoids: dividing by the radii stretches distances by at most 1 / (smallest radius), so a point within
   // `margin` of the ellipsoid has a normalised distance of at most 1 + margin / (smallest radius).
@@ -516,13 +563,18 @@ function reaches(P: Float64Array, o: number, margin: number, x: number, y: numbe
 }
 
 /** Copies contractions into `out` clamped to 0..1; throws, naming the muscle and changing nothing, if one is not finite. */
-export function clampContractions(muscles: readonly Muscle[], contractions: ArrayLike<number>, out: Float64Array | Float32Array | number[]): void {
+export function clampContractions(
+  muscles: readonly Muscle[],
+  contractions: ArrayLike<number>,
+  out: Float64Array | Float32Array | number[],
+): void {
   if (contractions.length !== muscles.length) {
     throw new Error(`contractions: the rig has ${muscles.length} muscles, got ${contractions.length} contractions`);
   }
   for (let m = 0; m < muscles.length; m++) {
     const c = contractions[m];
-    if (typeof c !== 'number' || !Number.isFinite(c)) throw new Error(`muscle ${muscles[m].name}: contraction must be a finite number, got ${String(c)}`);
+    if (typeof c !== 'number' || !Number.isFinite(c))
+      throw new Error(`muscle ${muscles[m].name}: contraction must be a finite number, got ${String(c)}`);
   }
   for (let m = 0; m < muscles.length; m++) {
     const c = contractions[m];
@@ -651,12 +703,16 @@ export class MuscleRig {
   constructor(rest: Float32Array, muscles: readonly Muscle[], options: MuscleRigOptions = {}) {
     if (rest.length % 3 !== 0) throw new Error(`rest positions: ${rest.length} numbers is not a whole number of xyz triples`);
     for (let i = 0; i < rest.length; i++) {
-      if (!Number.isFinite(rest[i])) throw new Error(`rest positions: vertex ${Math.floor(i / 3)} has a non-finite coordinate (${rest[i]})`);
+      if (!Number.isFinite(rest[i]))
+        throw new Error(`rest positions: vertex ${Math.floor(i / 3)} has a non-finite coordinate (${rest[i]})`);
     }
     const o = { ...MUSCLE_RIG_DEFAULTS, ...options };
-    if (!Number.isInteger(o.substeps) || o.substeps < 1 || o.substeps > 64) throw new Error(`substeps must be a whole number from 1 to 64, got ${o.substeps}`);
-    if (!Number.isFinite(o.margin) || o.margin < 0) throw new Error(`margin must be a finite number of metres, at least 0, got ${o.margin}`);
-    if (!Number.isFinite(o.holdFadeIn) || o.holdFadeIn < 0 || o.holdFadeIn > 1) throw new Error(`holdFadeIn must be a number from 0 to 1, got ${o.holdFadeIn}`);
+    if (!Number.isInteger(o.substeps) || o.substeps < 1 || o.substeps > 64)
+      throw new Error(`substeps must be a whole number from 1 to 64, got ${o.substeps}`);
+    if (!Number.isFinite(o.margin) || o.margin < 0)
+      throw new Error(`margin must be a finite number of metres, at least 0, got ${o.margin}`);
+    if (!Number.isFinite(o.holdFadeIn) || o.holdFadeIn < 0 || o.holdFadeIn > 1)
+      throw new Error(`holdFadeIn must be a number from 0 to 1, got ${o.holdFadeIn}`);
     for (const m of muscles) validateMuscle(m);
     this.substeps = o.substeps;
     this.margin = o.margin;
@@ -701,7 +757,8 @@ export class MuscleRig {
 
   /** Replaces muscle `index` (an editor dragging it) and re-chooses its candidates; throws, changing nothing, if invalid. */
   setMuscle(index: number, muscle: Muscle): void {
-    if (!Number.isInteger(index) || index < 0 || index >= this.muscleList.length) throw new Error(`muscle index ${index} is not one of the ${this.muscleList.length} muscles`);
+    if (!Number.isInteger(index) || index < 0 || index >= this.muscleList.length)
+      throw new Error(`muscle index ${index} is not one of the ${this.muscleList.length} muscles`);
     validateMuscle(muscle);
     this.place(index, muscle);
     this.indexByVertex();
@@ -726,7 +783,10 @@ export class MuscleRig {
     const n = this.vertexCount;
     const { targets, weights, normalWeights } = out;
     if (targets.length !== 3 * n || weights.length !== n || normalWeights.length !== n) {
-      throw new Error(`muscle outputs must hold ${n} vertices (targets ${3 * n}, weights ${n}, normalWeights ${n}), got ${targets.length}, ${weights.length}, ${normalWeights.length}`);
+      throw new Error(
+        `muscle outputs must hold ${n} vertices (targets ${3 * n}, weights ${n}, ` +
+          `normalWeights ${n}), got ${targets.length}, ${weights.length}, ${normalWeights.length}`,
+      );
     }
     clampContractions(this.muscleList, contractions, this.contraction);
     const turns = this.turns;
@@ -818,11 +878,37 @@ export class MuscleRig {
           const anyBrush = rowBrushed[v] === 1;
           for (let a = 0; a < activeCount; a++) {
             const m = this.active[a];
-            const falloff = displaceVertex(P, m * STRIDE, m, v, stepContraction[m], x, y, z, step, rest[i], rest[i + 1], rest[i + 2], turns);
+            const falloff = displaceVertex(
+              P,
+              m * STRIDE,
+              m,
+              v,
+              stepContraction[m],
+              x,
+              y,
+              z,
+              step,
+              rest[i],
+              rest[i + 1],
+              rest[i + 2],
+              turns,
+            );
             // A brush on this vertex for this muscle (found in its row; rows are short) sets the falloff here too.
             for (let j = anyBrush ? j0 : j1; j < j1; j++) {
               if (row[j] !== m) continue;
-              if (rowAdd[j] !== 0 || rowKeep[j] !== 1) displaceAtFalloff(P, m * STRIDE, stepContraction[m] * brushed(falloff, rowAdd[j], rowKeep[j]), x, y, z, step, rest[i], rest[i + 1], rest[i + 2]);
+              if (rowAdd[j] !== 0 || rowKeep[j] !== 1)
+                displaceAtFalloff(
+                  P,
+                  m * STRIDE,
+                  stepContraction[m] * brushed(falloff, rowAdd[j], rowKeep[j]),
+                  x,
+                  y,
+                  z,
+                  step,
+                  rest[i],
+                  rest[i + 1],
+                  rest[i + 2],
+                );
               break;
             }
             sx += step[0];
@@ -901,7 +987,8 @@ export class MuscleRig {
       return w;
     };
     const candidate = (v: number): boolean =>
-      reaches(P, o, this.margin, X[3 * v], X[3 * v + 1], X[3 * v + 2]) || (add.length > 0 && painted(X[3 * v], X[3 * v + 1], X[3 * v + 2]) > 0);
+      reaches(P, o, this.margin, X[3 * v], X[3 * v + 1], X[3 * v + 2]) ||
+      (add.length > 0 && painted(X[3 * v], X[3 * v + 1], X[3 * v + 2]) > 0);
     let count = 0;
     for (let v = 0; v < n; v++) if (candidate(v)) count++;
     const list = new Uint32Array(count);

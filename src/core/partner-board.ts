@@ -7,7 +7,8 @@
 
 /**
  * Int32 words: the number of the job posted last (leader), of the job finished last (partner), the job, the part of
- * the lists it is for (for a length job: how many passes), its result; then the barrier's count of arrived threads and its generation (see `meet`).
+ * the lists it is for (for a length job: how many passes), its result; then the barrier's count of arrived threads and its generation (see
+ * `meet`).
  */
 export const BOARD_SEQUENCE = 0;
 export const BOARD_DONE = 1;

@@ -1,4 +1,14 @@
-import { BOARD_DONE, BOARD_JOB, BOARD_PART, BOARD_RESULT, BOARD_SEQUENCE, JOB_STOP, PARTNER_TIMEOUT_MS, waitWhile, type Board } from './partner-board';
+import {
+  BOARD_DONE,
+  BOARD_JOB,
+  BOARD_PART,
+  BOARD_RESULT,
+  BOARD_SEQUENCE,
+  JOB_STOP,
+  PARTNER_TIMEOUT_MS,
+  waitWhile,
+  type Board,
+} from './partner-board';
 
 /** The leader's side of the board (see partner-board.ts): posts a job to the partner thread and waits for its end. */
 export class PartnerLink {

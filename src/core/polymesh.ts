@@ -116,7 +116,8 @@ export function toRenderMesh(mesh: PolyMesh, scale = 1): RenderMesh {
     cornerRender[c] = r;
   }
   const tris: number[] = [];
-  const d2 = (a: number, b: number): number => (P[3 * a] - P[3 * b]) ** 2 + (P[3 * a + 1] - P[3 * b + 1]) ** 2 + (P[3 * a + 2] - P[3 * b + 2]) ** 2;
+  const d2 = (a: number, b: number): number =>
+    (P[3 * a] - P[3 * b]) ** 2 + (P[3 * a + 1] - P[3 * b + 1]) ** 2 + (P[3 * a + 2] - P[3 * b + 2]) ** 2;
   for (let f = 0; f < faceCount(mesh); f++) {
     const s = mesh.faceStart[f];
     const n = mesh.faceStart[f + 1] - s;
@@ -137,7 +138,13 @@ export function toRenderMesh(mesh: PolyMesh, scale = 1): RenderMesh {
       outNormals[3 * r + k] = normals[3 * source[r] + k];
     }
   }
-  return { positions, normals: outNormals, uvs: Float32Array.from(uv), indices: Uint32Array.from(tris), sourceVertex: Uint32Array.from(source) };
+  return {
+    positions,
+    normals: outNormals,
+    uvs: Float32Array.from(uv),
+    indices: Uint32Array.from(tris),
+    sourceVertex: Uint32Array.from(source),
+  };
 }
 
 /** Area-weighted vertex normals of a polygon mesh (each polygon's Newell normal, whose length is twice its area). */

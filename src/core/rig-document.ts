@@ -35,15 +35,38 @@ const MUSCLE_TYPES = ['linear', 'sphincter', 'lid', 'jaw'] as const;
  * pulling up and out, a 2 cm sphincter, a lid or a small jaw box. Its side follows x (mid within 5 mm of the midline).
  */
 export function newMuscle(type: Muscle['type'], name: string, at: Vec3): Muscle {
-  if (!MUSCLE_TYPES.includes(type)) throw new Error(`newMuscle: type must be one of ${MUSCLE_TYPES.join(', ')}, got ${JSON.stringify(type)}`);
+  if (!MUSCLE_TYPES.includes(type))
+    throw new Error(`newMuscle: type must be one of ${MUSCLE_TYPES.join(', ')}, got ${JSON.stringify(type)}`);
   const [x, y, z] = at;
   const side: MuscleSide = x > 0.005 ? 'left' : x < -0.005 ? 'right' : 'mid';
   const outward = x >= 0 ? 1 : -1;
   switch (type) {
     case 'linear':
-      return { name, side, type, origin: [x + 0.02 * outward, y + 0.02, z - 0.01], insertion: [x, y, z], angle: 20, falloffStart: 0.8, falloffEnd: 1.2, strength: 0.2, normalWeight: 0.2 };
+      return {
+        name,
+        side,
+        type,
+        origin: [x + 0.02 * outward, y + 0.02, z - 0.01],
+        insertion: [x, y, z],
+        angle: 20,
+        falloffStart: 0.8,
+        falloffEnd: 1.2,
+        strength: 0.2,
+        normalWeight: 0.2,
+      };
     case 'sphincter':
-      return { name, side, type, center: [x, y, z], rotation: [0, 0, 0], radii: [0.02, 0.012, 0.012], innerRadii: [0.01, 0.006, 0.006], scale: [1, 1, 0], strength: 0.2, normalWeight: 0.2 };
+      return {
+        name,
+        side,
+        type,
+        center: [x, y, z],
+        rotation: [0, 0, 0],
+        radii: [0.02, 0.012, 0.012],
+        innerRadii: [0.01, 0.006, 0.006],
+        scale: [1, 1, 0],
+        strength: 0.2,
+        normalWeight: 0.2,
+      };
     case 'lid':
       return { name, side, type, center: [x, y, z], rotation: [0, 0, 0], radii: [0.02, 0.012, 0.015], maxAngle: 30, innerFraction: 0.5 };
     case 'jaw':
@@ -65,7 +88,8 @@ const same = (a: unknown, b: unknown): boolean => JSON.stringify(a) === JSON.str
 /** What changed from `a` to `b`, or null if nothing did. */
 export function rigChange(a: Rig, b: Rig): RigChange | null {
   const sameNames = a.muscles.length === b.muscles.length && a.muscles.every((m, i) => m.name === b.muscles[i].name);
-  if (!sameNames || !same(a.actionUnits, b.actionUnits) || !same(a.presets, b.presets) || a.version !== b.version) return { kind: 'structure' };
+  if (!sameNames || !same(a.actionUnits, b.actionUnits) || !same(a.presets, b.presets) || a.version !== b.version)
+    return { kind: 'structure' };
   const indices: number[] = [];
   a.muscles.forEach((m, i) => {
     if (!same(m, b.muscles[i])) indices.push(i);
@@ -123,7 +147,8 @@ export class RigDocument {
    */
   updateMuscle(name: string, partial: Partial<Muscle>, options: UpdateOptions = {}): void {
     const what = 'updateMuscle';
-    if (typeof partial !== 'object' || partial === null || Array.isArray(partial)) throw new Error(`${what}: needs an object of muscle fields, got ${String(partial)}`);
+    if (typeof partial !== 'object' || partial === null || Array.isArray(partial))
+      throw new Error(`${what}: needs an object of muscle fields, got ${String(partial)}`);
     this.edit(what, (rig) => {
       const i = this.indexOf(name, what);
       const before = rig.muscles[i];
@@ -142,7 +167,8 @@ export class RigDocument {
   /** Adds a muscle at the end, linked to nothing unless `actionUnit` is given (see `assignMuscle`). */
   addMuscle(muscle: Muscle, actionUnit: string | null = null, weight = 1): void {
     const what = 'addMuscle';
-    if (typeof muscle !== 'object' || muscle === null || Array.isArray(muscle)) throw new Error(`${what}: needs a muscle object, got ${String(muscle)}`);
+    if (typeof muscle !== 'object' || muscle === null || Array.isArray(muscle))
+      throw new Error(`${what}: needs a muscle object, got ${String(muscle)}`);
     this.edit(what, (rig) => {
       rig.muscles.push(structuredClone(muscle));
       if (actionUnit !== null) link(rig, muscle.name, actionUnit, weight, what);
@@ -310,7 +336,10 @@ function link(rig: Rig, name: string, actionUnit: string, weight: number, what: 
   let au = rig.actionUnits.find((a) => a.id === actionUnit);
   if (!au) {
     const known = ACTION_UNITS.find((a) => a.id === actionUnit);
-    if (!known) throw new RigError(what, [{ path: 'actionUnits', message: `no Action Unit ${JSON.stringify(actionUnit)} in the rig or the catalogue` }]);
+    if (!known)
+      throw new RigError(what, [
+        { path: 'actionUnits', message: `no Action Unit ${JSON.stringify(actionUnit)} in the rig or the catalogue` },
+      ]);
     au = { id: known.id, name: known.name, bilateral: known.bilateral, muscles: [] } satisfies ActionUnitDefinition;
     rig.actionUnits.push(au);
   }
@@ -329,6 +358,7 @@ function copyToTwin(rig: Rig, source: Muscle, twin: string): void {
   rig.muscles.push(mirrored);
   for (const au of rig.actionUnits) {
     if (!au.bilateral) continue;
-    for (const l of au.muscles.filter((l) => l.muscle === source.name)) au.muscles.push({ muscle: twin, side: otherSide(l.side), weight: l.weight });
+    for (const l of au.muscles.filter((l) => l.muscle === source.name))
+      au.muscles.push({ muscle: twin, side: otherSide(l.side), weight: l.weight });
   }
 }

@@ -44,7 +44,9 @@ export class RigError extends Error {
   readonly problems: readonly RigProblem[];
 
   constructor(source: string, problems: readonly RigProblem[]) {
-    const lines = problems.slice(0, MAX_LISTED_PROBLEMS).map((p) => (p.path ? `${source}: ${p.path}: ${p.message}` : `${source}: ${p.message}`));
+    const lines = problems
+      .slice(0, MAX_LISTED_PROBLEMS)
+      .map((p) => (p.path ? `${source}: ${p.path}: ${p.message}` : `${source}: ${p.message}`));
     if (problems.length > lines.length) lines.push(`${source}: and ${problems.length - lines.length} more problems`);
     super(lines.join('\n'));
     this.name = 'RigError';
@@ -89,16 +91,27 @@ const coordinate = v.pipe(
 const extent = v.pipe(positive, v.maxValue(MAX_RIG_DISTANCE, `expected a length of at most ${MAX_RIG_DISTANCE} m`));
 /** A falloff as a fraction of a linear muscle's length. */
 const falloff = v.pipe(positive, v.maxValue(100, 'expected a positive number of at most 100'));
-const degrees = v.pipe(number, v.minValue(-360, 'expected an angle from -360 to 360 degrees'), v.maxValue(360, 'expected an angle from -360 to 360 degrees'));
+const degrees = v.pipe(
+  number,
+  v.minValue(-360, 'expected an angle from -360 to 360 degrees'),
+  v.maxValue(360, 'expected an angle from -360 to 360 degrees'),
+);
 const position = vec3(coordinate);
 const euler = vec3(degrees);
 const brushRadius = v.pipe(positive, v.maxValue(MAX_BRUSH_RADIUS, `expected a radius of at most ${MAX_BRUSH_RADIUS} m`));
 const spheres = v.pipe(
-  v.array(v.strictTuple([coordinate, coordinate, coordinate, brushRadius], 'expected a sphere [x, y, z, radius]'), 'expected an array of spheres'),
+  v.array(
+    v.strictTuple([coordinate, coordinate, coordinate, brushRadius], 'expected a sphere [x, y, z, radius]'),
+    'expected an array of spheres',
+  ),
   v.maxLength(MAX_BRUSH_SPHERES, `expected at most ${MAX_BRUSH_SPHERES} spheres`),
 );
 const brush = v.optional(plainObject({ add: spheres, remove: spheres }, 'expected a brush { add: [...], remove: [...] }'));
-const angle = v.pipe(number, v.minValue(-90, 'expected an angle from -90 to 90 degrees'), v.maxValue(90, 'expected an angle from -90 to 90 degrees'));
+const angle = v.pipe(
+  number,
+  v.minValue(-90, 'expected an angle from -90 to 90 degrees'),
+  v.maxValue(90, 'expected an angle from -90 to 90 degrees'),
+);
 const object = 'expected an object';
 
 const LinearMuscleSchema = v.strictObject(
@@ -109,7 +122,11 @@ const LinearMuscleSchema = v.strictObject(
     type: v.literal('linear'),
     origin: position,
     insertion: position,
-    angle: v.pipe(number, v.minValue(0, 'expected an angle from 0 to 90 degrees'), v.maxValue(90, 'expected an angle from 0 to 90 degrees')),
+    angle: v.pipe(
+      number,
+      v.minValue(0, 'expected an angle from 0 to 90 degrees'),
+      v.maxValue(90, 'expected an angle from 0 to 90 degrees'),
+    ),
     falloffStart: falloff,
     falloffEnd: falloff,
     strength: fraction,
@@ -148,7 +165,11 @@ const LidMuscleSchema = v.strictObject(
     radii: vec3(extent),
     maxAngle: angle,
     // Below 1: the fade runs from innerFraction to the surface, and must have a width.
-    innerFraction: v.pipe(number, v.minValue(0, 'expected a number from 0 to below 1'), v.ltValue(1, 'expected a number from 0 to below 1')),
+    innerFraction: v.pipe(
+      number,
+      v.minValue(0, 'expected a number from 0 to below 1'),
+      v.ltValue(1, 'expected a number from 0 to below 1'),
+    ),
   },
   object,
 );
@@ -173,7 +194,9 @@ const JawMuscleSchema = v.strictObject(
 );
 
 const MuscleSchema = v.variant('type', [LinearMuscleSchema, SphincterMuscleSchema, LidMuscleSchema, JawMuscleSchema], (issue) =>
-  issue.expected === 'Object' ? 'expected a muscle (an object with a "type")' : 'expected a muscle type: "linear", "sphincter", "lid" or "jaw"',
+  issue.expected === 'Object'
+    ? 'expected a muscle (an object with a "type")'
+    : 'expected a muscle type: "linear", "sphincter", "lid" or "jaw"',
 );
 
 const ActionUnitSchema = plainObject(
@@ -182,7 +205,10 @@ const ActionUnitSchema = plainObject(
     name,
     bilateral: v.boolean('expected true or false'),
     muscles: v.pipe(
-      v.array(plainObject({ muscle: name, side, weight: v.pipe(positive, v.maxValue(10, 'expected a weight of at most 10')) }, object), 'expected an array'),
+      v.array(
+        plainObject({ muscle: name, side, weight: v.pipe(positive, v.maxValue(10, 'expected a weight of at most 10')) }, object),
+        'expected an array',
+      ),
       v.minLength(1, 'expected at least one muscle'),
       v.maxLength(MAX_RIG_MUSCLES, `expected at most ${MAX_RIG_MUSCLES} muscles`),
     ),
@@ -205,12 +231,18 @@ export const RigSchema = plainObject(
   {
     format: v.literal('softface-rig', 'expected "softface-rig"'),
     version: v.literal(RIG_VERSION, `expected version ${RIG_VERSION}`),
-    muscles: v.pipe(v.array(MuscleSchema, 'expected an array of muscles'), v.maxLength(MAX_RIG_MUSCLES, `expected at most ${MAX_RIG_MUSCLES} muscles`)),
+    muscles: v.pipe(
+      v.array(MuscleSchema, 'expected an array of muscles'),
+      v.maxLength(MAX_RIG_MUSCLES, `expected at most ${MAX_RIG_MUSCLES} muscles`),
+    ),
     actionUnits: v.pipe(
       v.array(ActionUnitSchema, 'expected an array of Action Units'),
       v.maxLength(MAX_RIG_ACTION_UNITS, `expected at most ${MAX_RIG_ACTION_UNITS} Action Units`),
     ),
-    presets: v.pipe(v.array(PresetSchema, 'expected an array of presets'), v.maxLength(MAX_RIG_PRESETS, `expected at most ${MAX_RIG_PRESETS} presets`)),
+    presets: v.pipe(
+      v.array(PresetSchema, 'expected an array of presets'),
+      v.maxLength(MAX_RIG_PRESETS, `expected at most ${MAX_RIG_PRESETS} presets`),
+    ),
   },
   'expected a rig document (a JSON object)',
 );
@@ -238,9 +270,17 @@ export function parseRig(input: unknown, source = 'rig'): Rig {
   const json = migrateRig(input);
   // Cheap refusals before the schema walks anything: a list far over its limit is not read item by item.
   if (isObj(json)) {
-    const limits: [string, number][] = [['muscles', MAX_RIG_MUSCLES], ['actionUnits', MAX_RIG_ACTION_UNITS], ['presets', MAX_RIG_PRESETS]];
+    const limits: [string, number][] = [
+      ['muscles', MAX_RIG_MUSCLES],
+      ['actionUnits', MAX_RIG_ACTION_UNITS],
+      ['presets', MAX_RIG_PRESETS],
+    ];
     const over = limits.filter(([key, max]) => Array.isArray(json[key]) && (json[key] as unknown[]).length > max);
-    if (over.length > 0) throw new RigError(source, over.map(([key, max]) => ({ path: key, message: `expected at most ${max} items, got ${(json[key] as unknown[]).length}` })));
+    if (over.length > 0)
+      throw new RigError(
+        source,
+        over.map(([key, max]) => ({ path: key, message: `expected at most ${max} items, got ${(json[key] as unknown[]).length}` })),
+      );
   }
   const result = v.safeParse(RigSchema, json, { abortPipeEarly: true });
   const problems = result.success ? [] : result.issues.map(problemOf);
@@ -251,10 +291,13 @@ export function parseRig(input: unknown, source = 'rig'): Rig {
 
 /** Parses a rig document from JSON text, refusing texts over `MAX_RIG_BYTES`; throws a `RigError` on any problem. */
 export function parseRigText(text: string, source = 'rig'): Rig {
-  if (typeof text !== 'string') throw new RigError(source, [{ path: '', message: `expected the text of a JSON document, got ${show(text)}` }]);
+  if (typeof text !== 'string')
+    throw new RigError(source, [{ path: '', message: `expected the text of a JSON document, got ${show(text)}` }]);
   const bytes = utf8Length(text);
   if (bytes > MAX_RIG_BYTES) {
-    const message = `the document is ${bytes} bytes (${megabytes(bytes)}), over the limit of ${MAX_RIG_BYTES} bytes (${megabytes(MAX_RIG_BYTES)}) for rig documents`;
+    const message =
+      `the document is ${bytes} bytes (${megabytes(bytes)}), over the limit of ` +
+      `${MAX_RIG_BYTES} bytes (${megabytes(MAX_RIG_BYTES)}) for rig documents`;
     throw new RigError(source, [{ path: '', message }]);
   }
   // Editors may save a byte-order mark, which JSON.parse refuses.
@@ -275,7 +318,8 @@ export function parseRigText(text: string, source = 'rig'): Rig {
 export function problemOf(issue: v.BaseIssue<unknown>): RigProblem {
   const path = pathOf(issue.path);
   // valibot reports a key that a strict object or tuple does not allow as expecting "never".
-  if (issue.expected === 'never') return { path, message: issue.type === 'strict_tuple' ? 'unexpected extra item (expected 3 numbers)' : 'unknown field' };
+  if (issue.expected === 'never')
+    return { path, message: issue.type === 'strict_tuple' ? 'unexpected extra item (expected 3 numbers)' : 'unknown field' };
   if (issue.input === undefined && issue.path !== undefined) return { path, message: 'missing' };
   return { path, message: `${issue.message}, got ${show(issue.input)}` };
 }
@@ -519,7 +563,8 @@ function findJsonError(text: string): JsonError | undefined {
         if (typeof end !== 'number') return end;
         want = 'colon';
         i = end;
-      } else return { offset: i, expected: want === 'key' ? 'a property name in double quotes' : "a property name in double quotes or '}'" };
+      } else
+        return { offset: i, expected: want === 'key' ? 'a property name in double quotes' : "a property name in double quotes or '}'" };
     } else {
       const step = scanValueStart(text, i, want === 'value or ]');
       if ('expected' in step) return step;
@@ -552,7 +597,7 @@ function scanString(text: string, i: number): number | JsonError {
   for (let k = i + 1; k < text.length; k++) {
     const c = text.charCodeAt(k);
     if (c === 0x22) return k + 1;
-    if (c < 0x20) return { offset: k, expected: 'a closing \'"\' (control characters in strings must be escaped)' };
+    if (c < 0x20) return { offset: k, expected: "a closing '\"' (control characters in strings must be escaped)" };
     if (c === 0x5c) {
       const e = text[k + 1];
       if (e === 'u') {
@@ -562,5 +607,5 @@ function scanString(text: string, i: number): number | JsonError {
       else return { offset: k, expected: 'an escape: \\" \\\\ \\/ \\b \\f \\n \\r \\t or \\uXXXX' };
     }
   }
-  return { offset: text.length, expected: 'a closing \'"\' for the string' };
+  return { offset: text.length, expected: "a closing '\"' for the string" };
 }

@@ -95,7 +95,8 @@ export interface LidMuscle extends MuscleCommon {
 /**
  * Rotation muscle for the jaw: skin inside the box (`size` = full edge lengths, local frame) turns about the local x
  * axis through `joint` (the jaw hinge; the thesis puts it at the box's back face centre, center minus size.z / 2 along
- * local z, which is the default), by up to `maxAngle` degrees. `curve` opens the lip's middle further than its corners (the thesis's extra term), as a fraction of the
+ * local z, which is the default), by up to `maxAngle` degrees. `curve` opens the lip's middle further than its corners (the thesis's extra
+ * term), as a fraction of the
  * angle added at the centre line; the turn fades to zero within `fade` (metres, > 0) of the box's faces, and within
  * `lipFade` (default `fade`) of its top face, which follows the line where the lips part. A positive
  * angle moves the chin down (right-handed about local +x).

@@ -87,7 +87,7 @@ export function eulerDegrees(M: readonly number[]): EulerDegrees {
     az = 0;
     ax = Math.atan2(-M[5], M[4]);
   }
-  const deg = (a: number): number => Math.round((a * 180) / Math.PI * 1e4) / 1e4;
+  const deg = (a: number): number => Math.round(((a * 180) / Math.PI) * 1e4) / 1e4;
   return [deg(ax), deg(ay), deg(az)];
 }
 
@@ -95,7 +95,11 @@ export function eulerDegrees(M: readonly number[]): EulerDegrees {
 const round = (p: readonly number[]): Vec3 => [roundLength(p[0]), roundLength(p[1]), roundLength(p[2])];
 const roundLength = (x: number): number => Math.round(x * 1e6) / 1e6;
 const dot = (a: readonly number[], b: readonly number[]): number => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const cross = (a: readonly number[], b: readonly number[]): number[] => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const cross = (a: readonly number[], b: readonly number[]): number[] => [
+  a[1] * b[2] - a[2] * b[1],
+  a[2] * b[0] - a[0] * b[2],
+  a[0] * b[1] - a[1] * b[0],
+];
 function normalise(v: readonly number[]): number[] {
   const l = Math.hypot(v[0], v[1], v[2]);
   return [v[0] / l, v[1] / l, v[2] / l];

@@ -63,10 +63,14 @@ export class SkinContact {
       m[0] = (points[a] + points[a + 3]) / 2;
       m[1] = (points[a + 1] + points[a + 4]) / 2;
       m[2] = (points[a + 2] + points[a + 5]) / 2;
-      const x = m[0], y = m[1], z = m[2];
+      const x = m[0],
+        y = m[1],
+        z = m[2];
       // A point pushed out from behind one vertex may lie behind the next nearest: a few rounds settle it.
       for (let round = 0; round < 3 && this.push(m, positions, normals); round++);
-      const dx = m[0] - x, dy = m[1] - y, dz = m[2] - z;
+      const dx = m[0] - x,
+        dy = m[1] - y,
+        dz = m[2] - z;
       if (dx === 0 && dy === 0 && dz === 0) continue;
       points[a] += dx;
       points[a + 1] += dy;
@@ -83,12 +87,20 @@ export class SkinContact {
   private push(p: Float64Array, positions: ArrayLike<number>, normals: ArrayLike<number>): boolean {
     const r = this.reach;
     const c = 2 * r;
-    const x = p[0], y = p[1], z = p[2];
+    const x = p[0],
+      y = p[1],
+      z = p[2];
     // Cells twice the reach wide: the cube within reach of the point lies in the 2 x 2 x 2 cells on the sides of its
     // cell's middle that it is nearer to.
-    const fx = x / c, fy = y / c, fz = z / c;
-    const cx = Math.floor(fx), cy = Math.floor(fy), cz = Math.floor(fz);
-    const sx = fx - cx < 0.5 ? -1 : 0, sy = fy - cy < 0.5 ? -1 : 0, sz = fz - cz < 0.5 ? -1 : 0;
+    const fx = x / c,
+      fy = y / c,
+      fz = z / c;
+    const cx = Math.floor(fx),
+      cy = Math.floor(fy),
+      cz = Math.floor(fz);
+    const sx = fx - cx < 0.5 ? -1 : 0,
+      sy = fy - cy < 0.5 ? -1 : 0,
+      sz = fz - cz < 0.5 ? -1 : 0;
     let best = -1;
     let bestD = r * r;
     for (let dx = sx; dx <= sx + 1; dx++) {
@@ -97,7 +109,9 @@ export class SkinContact {
           const b = this.bucket(cx + dx, cy + dy, cz + dz);
           for (let k = this.starts[b]; k < this.starts[b + 1]; k++) {
             const v = 3 * this.sorted[k];
-            const ex = x - positions[v], ey = y - positions[v + 1], ez = z - positions[v + 2];
+            const ex = x - positions[v],
+              ey = y - positions[v + 1],
+              ez = z - positions[v + 2];
             const d = ex * ex + ey * ey + ez * ez;
             if (d < bestD) {
               bestD = d;
@@ -108,7 +122,9 @@ export class SkinContact {
       }
     }
     if (best < 0) return false;
-    const nx = normals[best], ny = normals[best + 1], nz = normals[best + 2];
+    const nx = normals[best],
+      ny = normals[best + 1],
+      nz = normals[best + 2];
     const depth = -((x - positions[best]) * nx + (y - positions[best + 1]) * ny + (z - positions[best + 2]) * nz);
     if (depth <= -this.gap) return false;
     const push = depth + this.gap;

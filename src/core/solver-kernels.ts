@@ -107,7 +107,9 @@ export function projectPositions(a: PartArrays, stiffness: number, extra: number
   for (let j = k0; j < k1; j++) {
     const v = V[j];
     const i = 3 * v;
-    const nx = N[i], ny = N[i + 1], nz = N[i + 2];
+    const nx = N[i],
+      ny = N[i + 1],
+      nz = N[i + 2];
     const ux = X[i] - x[i];
     const uy = X[i + 1] - x[i + 1];
     const uz = X[i + 2] - x[i + 2];
@@ -234,8 +236,12 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
   for (let j = r * e0; j < j1; j += r) {
     const ia = ends[j];
     const ib = ends[j + 1];
-    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
-    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const ax = x[ia],
+      ay = x[ia + 1],
+      az = x[ia + 2];
+    const bx = x[ib],
+      by = x[ib + 1],
+      bz = x[ib + 2];
     const dx = bx - ax;
     const dy = by - ay;
     const dz = bz - az;
@@ -257,15 +263,28 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
  * pushes each end along its bulge direction (`directions`) by `bulge` times its compression times the edge's muscle
  * weight. (The compression would need a second division without the root, which saves nothing.)
  */
-function projectHeldEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, directions: Float32Array, stiffness: number, bulge: number, e0: number, e1: number): void {
+function projectHeldEdges(
+  x: Float32Array,
+  ends: Uint32Array,
+  rest: Float32Array,
+  directions: Float32Array,
+  stiffness: number,
+  bulge: number,
+  e0: number,
+  e1: number,
+): void {
   const s = 0.5 * stiffness;
   const r = EDGE_RECORD; // read once, as in projectFreeEdges
   const j1 = r * e1;
   for (let j = r * e0; j < j1; j += r) {
     const ia = ends[j];
     const ib = ends[j + 1];
-    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
-    const bx = x[ib], by = x[ib + 1], bz = x[ib + 2];
+    const ax = x[ia],
+      ay = x[ia + 1],
+      az = x[ia + 2];
+    const bx = x[ib],
+      by = x[ib + 1],
+      bz = x[ib + 2];
     const dx = bx - ax;
     const dy = by - ay;
     const dz = bz - az;
@@ -293,7 +312,8 @@ function projectHeldEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
  *
  * `mode` is ORIENT_FULL, ORIENT_AGAIN or ORIENT_WATCHED. ORIENT_AGAIN says that nothing but the previous orientation
  * pass moved the skin since: a triangle found within its bound then, none of whose corners moved since, still is and
- * is skipped, with the same result as checking it. `floor` scales the bound (see ORIENTATION_SHOWN_FLOOR in solver.ts). Returns whether a triangle was more than a hair
+ * is skipped, with the same result as checking it. `floor` scales the bound (see ORIENTATION_SHOWN_FLOOR in solver.ts). Returns whether a
+ * triangle was more than a hair
  * under its bound.
  */
 export function projectOrientationPart(a: PartArrays, part: number, mode: number, floor = 1): boolean {
@@ -320,7 +340,9 @@ export function projectOrientationPart(a: PartArrays, part: number, mode: number
     const ia = T[3 * t];
     const ib = T[3 * t + 1];
     const ic = T[3 * t + 2];
-    const ax = x[ia], ay = x[ia + 1], az = x[ia + 2];
+    const ax = x[ia],
+      ay = x[ia + 1],
+      az = x[ia + 2];
     const ux = x[ib] - ax;
     const uy = x[ib + 1] - ay;
     const uz = x[ib + 2] - az;
@@ -518,7 +540,9 @@ export function relaxPart(a: PartArrays, cap: number, k0: number, k1: number): v
     const dx = x[i] - prev[i];
     const dy = x[i + 1] - prev[i + 1];
     const dz = x[i + 2] - prev[i + 2];
-    const lx = last[i], ly = last[i + 1], lz = last[i + 2];
+    const lx = last[i],
+      ly = last[i + 1],
+      lz = last[i + 2];
     const turn = dx * lx + dy * ly + dz * lz;
     if (turn < 0) restart[v] = 1;
     let w = share[v];

@@ -35,7 +35,8 @@ import {
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
  * takes the second half of each colour of a length pass, of the region's position and muscle constraints, of each
  * collider's candidates, of the normals or of the frame's start, relaxation or record of the moves, or the odd part of
- * an orientation or bending pass (see constraint-lists.ts), while the leader takes the rest. The arrays are the leader's own, on shared memory (SkinSolver.partArrays).
+ * an orientation or bending pass (see constraint-lists.ts), while the leader takes the rest. The arrays are the leader's own, on shared
+ * memory (SkinSolver.partArrays).
  */
 export class SolverPartner {
   private readonly direction = new Float32Array(3);

@@ -26,7 +26,17 @@ import {
   type TriangleLists,
 } from './constraint-lists';
 import { allocate, type Memory } from './memory';
-import { JOB_BENDING, JOB_COLLISIONS, JOB_LENGTHS, JOB_NORMALS, JOB_ORIENTATION, JOB_POSITIONS, JOB_RELAX, JOB_START_FRAME, JOB_STEPS } from './partner-board';
+import {
+  JOB_BENDING,
+  JOB_COLLISIONS,
+  JOB_LENGTHS,
+  JOB_NORMALS,
+  JOB_ORIENTATION,
+  JOB_POSITIONS,
+  JOB_RELAX,
+  JOB_START_FRAME,
+  JOB_STEPS,
+} from './partner-board';
 import type { PartnerLink } from './partner-link';
 import {
   projectBendingPart,
@@ -286,7 +296,13 @@ export class SkinSolver {
    */
   constructor(
     topology: SkinTopology,
-    options: { parameters?: Partial<SkinParameters>; buffers?: SolverBuffers; colliders?: Collider[]; activeRegion?: boolean; memory?: Memory } = {},
+    options: {
+      parameters?: Partial<SkinParameters>;
+      buffers?: SolverBuffers;
+      colliders?: Collider[];
+      activeRegion?: boolean;
+      memory?: Memory;
+    } = {},
   ) {
     this.topology = topology;
     const n = topology.vertexCount;
@@ -546,7 +562,8 @@ export class SkinSolver {
     const start = now();
     time.positions = time.lengths = time.bending = time.collisions = time.orientation = 0;
     const p = this.params;
-    const foldMomentum = this.motionFrames < FOLD_CHOICE_FRAMES && p.foldMomentum > FOLD_CHOICE_MOMENTUM ? FOLD_CHOICE_MOMENTUM : p.foldMomentum;
+    const foldMomentum =
+      this.motionFrames < FOLD_CHOICE_FRAMES && p.foldMomentum > FOLD_CHOICE_MOMENTUM ? FOLD_CHOICE_MOMENTUM : p.foldMomentum;
     this.startFrame(this.motionFrames < START_MOMENTUM_FRAMES ? p.startMomentum : p.momentum, foldMomentum);
     for (let it = 0; it < p.positionIterations; it++) {
       let t0 = now();
@@ -579,7 +596,11 @@ export class SkinSolver {
     this.settleRegion();
     this.relax();
     untangle = now();
-    for (let k = 0; k < ORIENTATION_SHOWN_PASSES && this.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL, ORIENTATION_SHOWN_FLOOR); k++);
+    for (
+      let k = 0;
+      k < ORIENTATION_SHOWN_PASSES && this.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL, ORIENTATION_SHOWN_FLOOR);
+      k++
+    );
     time.orientation += now() - untangle;
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.recordSteps();
@@ -630,7 +651,15 @@ export class SkinSolver {
     const kept = this.watchedTriangles;
     for (let t = 0; t < places.length; t++) kept[t] = places[t] >= 0 ? watched[places[t]] : 0;
     fillTriangleLists(this.triangleLists, this.topology.triangles, this.triangleFrames, included, places, this.blocks);
-    if (this.region.enabled) fillTriangleLists(this.parts.shadedTriangles, this.topology.triangles, this.triangleFrames, this.region.shaded, this.shadedPlaces, this.blocks);
+    if (this.region.enabled)
+      fillTriangleLists(
+        this.parts.shadedTriangles,
+        this.topology.triangles,
+        this.triangleFrames,
+        this.region.shaded,
+        this.shadedPlaces,
+        this.blocks,
+      );
     watched.fill(0);
     for (let t = 0; t < places.length; t++) if (places[t] >= 0) watched[places[t]] = kept[t];
     this.listedRevision = this.region.revision;
@@ -911,7 +940,12 @@ export class SkinSolver {
    * Each vertex within COLLISION_BAND of a collider at rest, outside it, is checked against the nearest one, on the
    * side of it where it lies at rest (a lip in front of the teeth stays in front).
    */
-  private collisionCandidates(colliders: Collider[]): { start: Uint32Array; vertices: Uint32Array; clearance: Float32Array; side: Int8Array } {
+  private collisionCandidates(colliders: Collider[]): {
+    start: Uint32Array;
+    vertices: Uint32Array;
+    clearance: Float32Array;
+    side: Int8Array;
+  } {
     const X = this.topology.rest;
     const n = this.topology.vertexCount;
     const nearest = new Int32Array(n).fill(-1);
@@ -949,18 +983,29 @@ export class SkinSolver {
  * Throws an error naming the first bad muscle-target input: a vertex that is not one of `vertexCount`, a target
  * coordinate that is not finite, a weight outside 0..1. Every entry point checks with this before changing anything.
  */
-export function checkMuscleTargets(vertexCount: number, vertices: ArrayLike<number>, targets: ArrayLike<number>, weight: number, normalWeight: number): void {
+export function checkMuscleTargets(
+  vertexCount: number,
+  vertices: ArrayLike<number>,
+  targets: ArrayLike<number>,
+  weight: number,
+  normalWeight: number,
+): void {
   const isArrayLike = (a: unknown): boolean => Array.isArray(a) || ArrayBuffer.isView(a);
   if (!isArrayLike(vertices) || !isArrayLike(targets)) throw new Error('setMuscleTargets: vertices and targets must be arrays of numbers');
   if (targets.length !== 3 * vertices.length) {
     throw new Error(`setMuscleTargets: ${vertices.length} vertices need ${3 * vertices.length} target coordinates, got ${targets.length}`);
   }
-  for (const [name, w] of [['weight', weight], ['normal weight', normalWeight]] as const) {
-    if (typeof w !== 'number' || !Number.isFinite(w) || w < 0 || w > 1) throw new Error(`setMuscleTargets: ${name} must be a finite number from 0 to 1, got ${w}`);
+  for (const [name, w] of [
+    ['weight', weight],
+    ['normal weight', normalWeight],
+  ] as const) {
+    if (typeof w !== 'number' || !Number.isFinite(w) || w < 0 || w > 1)
+      throw new Error(`setMuscleTargets: ${name} must be a finite number from 0 to 1, got ${w}`);
   }
   for (let i = 0; i < vertices.length; i++) {
     const v = vertices[i];
-    if (!Number.isInteger(v) || v < 0 || v >= vertexCount) throw new Error(`setMuscleTargets: vertex ${i} is ${v}, not one of the ${vertexCount} skin vertices`);
+    if (!Number.isInteger(v) || v < 0 || v >= vertexCount)
+      throw new Error(`setMuscleTargets: vertex ${i} is ${v}, not one of the ${vertexCount} skin vertices`);
     for (let k = 0; k < 3; k++) {
       const t = targets[3 * i + k];
       if (typeof t !== 'number' || !Number.isFinite(t)) {
@@ -974,16 +1019,22 @@ export function checkMuscleTargets(vertexCount: number, vertices: ArrayLike<numb
 export type MuscleInputs = Pick<SolverBuffers, 'targets' | 'weights' | 'normalWeights'>;
 
 /** Writes checked muscle targets (see checkMuscleTargets) and both weights for some vertices into `into`. */
-export function writeMuscleTargets(into: MuscleInputs, vertices: ArrayLike<number>, targets: ArrayLike<number>, weight: number, normalWeight: number): void {
+export function writeMuscleTargets(
+  into: MuscleInputs,
+  vertices: ArrayLike<number>,
+  targets: ArrayLike<number>,
+  weight: number,
+  normalWeight: number,
+): void {
   const { targets: T, weights: W, normalWeights: WN } = into;
-    for (let i = 0; i < vertices.length; i++) {
-      const v = vertices[i];
-      T[3 * v] = targets[3 * i];
-      T[3 * v + 1] = targets[3 * i + 1];
-      T[3 * v + 2] = targets[3 * i + 2];
-      W[v] = weight;
-      WN[v] = normalWeight;
-    }
+  for (let i = 0; i < vertices.length; i++) {
+    const v = vertices[i];
+    T[3 * v] = targets[3 * i];
+    T[3 * v + 1] = targets[3 * i + 1];
+    T[3 * v + 2] = targets[3 * i + 2];
+    W[v] = weight;
+    WN[v] = normalWeight;
+  }
 }
 
 /** Releases every vertex: targets back at rest, both weights 0. */
@@ -1074,7 +1125,6 @@ const LOOP_SLOWING = 0.25;
 /** The least share breakLoops leaves a vertex (a thousandth: its moves are then far below the sleep tolerance). */
 const LOOP_LEAST_SHARE = 1 / 1024;
 
-
 /**
  * The least share of its rest area a triangle keeps along its rest normal: a triangle tilted 75 degrees into a fold
  * still passes, one flattened to a sliver or turned over does not.
@@ -1137,9 +1187,15 @@ function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Arra
     const a = 3 * triangles[3 * t];
     const b = 3 * triangles[3 * t + 1];
     const c = 3 * triangles[3 * t + 2];
-    const ux = rest[b] - rest[a], uy = rest[b + 1] - rest[a + 1], uz = rest[b + 2] - rest[a + 2];
-    const vx = rest[c] - rest[a], vy = rest[c + 1] - rest[a + 1], vz = rest[c + 2] - rest[a + 2];
-    const cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+    const ux = rest[b] - rest[a],
+      uy = rest[b + 1] - rest[a + 1],
+      uz = rest[b + 2] - rest[a + 2];
+    const vx = rest[c] - rest[a],
+      vy = rest[c + 1] - rest[a + 1],
+      vz = rest[c + 2] - rest[a + 2];
+    const cx = uy * vz - uz * vy,
+      cy = uz * vx - ux * vz,
+      cz = ux * vy - uy * vx;
     const twiceArea = Math.hypot(cx, cy, cz);
     if (twiceArea === 0) continue;
     out[4 * t] = cx / twiceArea;
@@ -1166,4 +1222,3 @@ function hash01(i: number): number {
   h ^= h >>> 16;
   return (h >>> 0) / 4294967296;
 }
-

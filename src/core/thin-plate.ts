@@ -26,7 +26,10 @@ export function fitThinPlate(sources: readonly Vec3[], targets: readonly Vec3[])
   const n = sources.length;
   if (n !== targets.length) throw new Error(`thin-plate warp: ${n} source points but ${targets.length} targets`);
   if (n < 4) throw new Error(`thin-plate warp: needs at least 4 point pairs, got ${n}`);
-  for (const [list, what] of [[sources, 'source'], [targets, 'target']] as const) {
+  for (const [list, what] of [
+    [sources, 'source'],
+    [targets, 'target'],
+  ] as const) {
     list.forEach((p, i) => {
       if (!p.every(Number.isFinite)) throw new Error(`thin-plate warp: ${what} point ${i} is not finite (${p.join(', ')})`);
     });

@@ -30,7 +30,9 @@ export class TimelineError extends Error {
   readonly problems: readonly TimelineProblem[];
 
   constructor(source: string, problems: readonly TimelineProblem[]) {
-    const lines = problems.slice(0, MAX_LISTED_PROBLEMS).map((p) => (p.path ? `${source}: ${p.path}: ${p.message}` : `${source}: ${p.message}`));
+    const lines = problems
+      .slice(0, MAX_LISTED_PROBLEMS)
+      .map((p) => (p.path ? `${source}: ${p.path}: ${p.message}` : `${source}: ${p.message}`));
     if (problems.length > lines.length) lines.push(`${source}: and ${problems.length - lines.length} more problems`);
     super(lines.join('\n'));
     this.name = 'TimelineError';
@@ -66,7 +68,10 @@ const positiveSeconds = v.pipe(
   v.maxValue(MAX_TIMELINE_SECONDS, `expected a positive number of seconds, at most ${MAX_TIMELINE_SECONDS}`),
 );
 const fraction = v.pipe(number, v.minValue(0, 'expected a number from 0 to 1'), v.maxValue(1, 'expected a number from 0 to 1'));
-const target = v.pipe(v.string('expected a target: an Action Unit id like "AU12L" or "preset:<name>"'), v.maxLength(220, 'expected at most 220 characters'));
+const target = v.pipe(
+  v.string('expected a target: an Action Unit id like "AU12L" or "preset:<name>"'),
+  v.maxLength(220, 'expected at most 220 characters'),
+);
 const object = 'expected an object';
 
 /** A strict object that is not an array (valibot takes arrays as objects, and would report missing fields). */
@@ -114,11 +119,17 @@ export const TimelineSchema = plainObject(
     duration: v.optional(positiveSeconds),
     loop: v.optional(v.boolean('expected true or false')),
     tracks: v.optional(
-      v.pipe(v.custom<Obj>(isObj, 'expected an object of tracks by target, like { "AU12": { "keys": [...] } }'), v.record(v.string(), TrackSchema, object)),
+      v.pipe(
+        v.custom<Obj>(isObj, 'expected an object of tracks by target, like { "AU12": { "keys": [...] } }'),
+        v.record(v.string(), TrackSchema, object),
+      ),
       {},
     ),
     actions: v.optional(
-      v.pipe(v.array(ActionSchema, 'expected an array of actions'), v.maxLength(MAX_TIMELINE_ACTIONS, `expected at most ${MAX_TIMELINE_ACTIONS} actions`)),
+      v.pipe(
+        v.array(ActionSchema, 'expected an array of actions'),
+        v.maxLength(MAX_TIMELINE_ACTIONS, `expected at most ${MAX_TIMELINE_ACTIONS} actions`),
+      ),
       [],
     ),
   },
@@ -154,18 +165,32 @@ export function parseTimeline(input: unknown, source = 'timeline', options: Time
   if (t.duration !== undefined) out.duration = t.duration;
   if (t.loop !== undefined) out.loop = t.loop;
   for (const [name, track] of Object.entries(t.tracks)) {
-    out.tracks[name] = { keys: track.keys.map((k) => (k.easing === undefined ? { time: k.time, value: k.value } : { time: k.time, value: k.value, easing: k.easing })) };
+    out.tracks[name] = {
+      keys: track.keys.map((k) =>
+        k.easing === undefined ? { time: k.time, value: k.value } : { time: k.time, value: k.value, easing: k.easing },
+      ),
+    };
   }
-  out.actions = t.actions.map((a) => ({ target: a.target, start: a.start, intensity: a.intensity, onset: a.onset, apex: a.apex, offset: a.offset }));
+  out.actions = t.actions.map((a) => ({
+    target: a.target,
+    start: a.start,
+    intensity: a.intensity,
+    onset: a.onset,
+    apex: a.apex,
+    offset: a.offset,
+  }));
   return out;
 }
 
 /** Parses a timeline document from JSON text, refusing texts over `MAX_TIMELINE_BYTES`; throws a `TimelineError`. */
 export function parseTimelineText(text: string, source = 'timeline', options: TimelineCheckOptions = {}): Timeline {
-  if (typeof text !== 'string') throw new TimelineError(source, [{ path: '', message: `expected the text of a JSON document, got ${showValue(text)}` }]);
+  if (typeof text !== 'string')
+    throw new TimelineError(source, [{ path: '', message: `expected the text of a JSON document, got ${showValue(text)}` }]);
   const bytes = utf8Length(text);
   if (bytes > MAX_TIMELINE_BYTES) {
-    throw new TimelineError(source, [{ path: '', message: `the document is ${bytes} bytes, over the limit of ${MAX_TIMELINE_BYTES} bytes for timeline documents` }]);
+    throw new TimelineError(source, [
+      { path: '', message: `the document is ${bytes} bytes, over the limit of ${MAX_TIMELINE_BYTES} bytes for timeline documents` },
+    ]);
   }
   // Editors may save a byte-order mark, which JSON.parse refuses.
   const body = text.charCodeAt(0) === 0xfeff ? text.slice(1) : text;
@@ -204,7 +229,10 @@ function crossChecks(doc: unknown, presets: readonly string[] | null): TimelineP
         if (!isObj(key) || !isNum(key.time) || key.time < 0) return;
         if (previous !== undefined && key.time <= previous) {
           const what = key.time === previous ? 'a duplicate key time' : 'keys out of order';
-          problems.push({ path: `${at}.keys[${i}].time`, message: `${what}: expected a time after the previous key's ${previous} s, got ${key.time}` });
+          problems.push({
+            path: `${at}.keys[${i}].time`,
+            message: `${what}: expected a time after the previous key's ${previous} s, got ${key.time}`,
+          });
         }
         previous = previous === undefined ? key.time : Math.max(previous, key.time);
       });
@@ -240,6 +268,7 @@ function targetProblem(name: string, presets: readonly string[] | null): string 
     if (presets && !presets.includes(preset)) return `unknown preset ${JSON.stringify(preset)} (presets: ${presets.join(', ') || 'none'})`;
     return undefined;
   }
-  if (!isActionUnitId(name)) return `unknown Action Unit id ${JSON.stringify(name)} (expected e.g. "AU12", "AU12L", "AU12R", "AU17" or "preset:<name>")`;
+  if (!isActionUnitId(name))
+    return `unknown Action Unit id ${JSON.stringify(name)} (expected e.g. "AU12", "AU12L", "AU12R", "AU17" or "preset:<name>")`;
   return undefined;
 }

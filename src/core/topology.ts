@@ -68,7 +68,8 @@ export function describeTopology(t: SkinTopology): string {
 export function buildTopology(renderPositions: ArrayLike<number>, indices: ArrayLike<number>): SkinTopology {
   const renderCount = Math.floor(renderPositions.length / 3);
   for (let i = 0; i < renderCount * 3; i++) {
-    if (!Number.isFinite(renderPositions[i])) throw new Error(`vertex ${Math.floor(i / 3)} has a non-finite coordinate (${renderPositions[i]})`);
+    if (!Number.isFinite(renderPositions[i]))
+      throw new Error(`vertex ${Math.floor(i / 3)} has a non-finite coordinate (${renderPositions[i]})`);
   }
   for (let i = 0; i < indices.length; i++) {
     const v = indices[i];
@@ -197,19 +198,29 @@ export function finestSpacing(rest: Float32Array, normals: Float32Array, start: 
     const degree = start[v + 1] - start[v];
     if (degree === 0) continue;
     const i = 3 * v;
-    const nx = normals[i], ny = normals[i + 1], nz = normals[i + 2];
+    const nx = normals[i],
+      ny = normals[i + 1],
+      nz = normals[i + 2];
     // A tangent basis (t, b) around the normal: t = x cross n, or x itself for a normal along x.
     const side = ny * ny + nz * nz > 1e-12;
-    let tx = side ? 0 : 1, ty = side ? -nz : 0, tz = side ? ny : 0;
+    let tx = side ? 0 : 1,
+      ty = side ? -nz : 0,
+      tz = side ? ny : 0;
     const length = Math.hypot(tx, ty, tz);
     tx /= length;
     ty /= length;
     tz /= length;
-    const bx = ny * tz - nz * ty, by = nz * tx - nx * tz, bz = nx * ty - ny * tx;
-    let stt = 0, stb = 0, sbb = 0;
+    const bx = ny * tz - nz * ty,
+      by = nz * tx - nx * tz,
+      bz = nx * ty - ny * tx;
+    let stt = 0,
+      stb = 0,
+      sbb = 0;
     for (let j = start[v]; j < start[v + 1]; j++) {
       const k = 3 * neighbours[j];
-      const ex = rest[k] - rest[i], ey = rest[k + 1] - rest[i + 1], ez = rest[k + 2] - rest[i + 2];
+      const ex = rest[k] - rest[i],
+        ey = rest[k + 1] - rest[i + 1],
+        ez = rest[k + 2] - rest[i + 2];
       const et = ex * tx + ey * ty + ez * tz;
       const eb = ex * bx + ey * by + ez * bz;
       stt += et * et;
@@ -240,7 +251,14 @@ export function computeNormals(positions: Float32Array, triangles: Uint32Array, 
  * in `out`. A corner's offset into the xyz arrays is `scale` times its entry in `corners` (3 for vertex indices, 1 for
  * corners listed as 3 * vertex).
  */
-export function addFaceNormals(positions: Float32Array, corners: Uint32Array, t0: number, t1: number, scale: number, out: Float32Array): void {
+export function addFaceNormals(
+  positions: Float32Array,
+  corners: Uint32Array,
+  t0: number,
+  t1: number,
+  scale: number,
+  out: Float32Array,
+): void {
   for (let t = 3 * t0; t < 3 * t1; t += 3) {
     const a = scale * corners[t];
     const b = scale * corners[t + 1];

@@ -54,7 +54,8 @@ export function readPresets(value: string): HashExpression {
     const preset = colon < 0 ? entry : entry.slice(0, colon);
     const text = colon < 0 ? '1' : entry.slice(colon + 1);
     const weight = text.trim() === '' ? NaN : Number(text);
-    if (preset === '' || !Number.isFinite(weight)) throw new Error(`${WHAT}: preset ${show(entry)} must be a preset name and a weight, like "happiness:0.5"`);
+    if (preset === '' || !Number.isFinite(weight))
+      throw new Error(`${WHAT}: preset ${show(entry)} must be a preset name and a weight, like "happiness:0.5"`);
     out.presets[preset] = weight;
   }
   return out;
@@ -65,7 +66,11 @@ export function readPresets(value: string): HashExpression {
  * throws an error that names the attribute and says what it must be. Only `only` is read when given; the rest keep
  * the values in `current`. Preset names and Action Unit ids are checked against the face's rig when applied.
  */
-export function readAttributes(get: (attribute: FaceAttribute) => string | null, current: FaceAttributeValues, only?: FaceAttribute): FaceAttributeValues {
+export function readAttributes(
+  get: (attribute: FaceAttribute) => string | null,
+  current: FaceAttributeValues,
+  only?: FaceAttribute,
+): FaceAttributeValues {
   const out = { ...current };
   const read = (attribute: FaceAttribute): string => get(attribute) ?? ABSENT[attribute];
   const wanted = (attribute: FaceAttribute): boolean => only === undefined || only === attribute;

@@ -25,7 +25,16 @@ import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
 import { FaceHandle } from './face-handle';
-import { checkLoadHeadOptions, MissingLandmarksError, prepareHead, readHeadFiles, type HeadDescription, type HeadSource, type LoadHeadOptions, type PreparedHead } from './head-loader';
+import {
+  checkLoadHeadOptions,
+  MissingLandmarksError,
+  prepareHead,
+  readHeadFiles,
+  type HeadDescription,
+  type HeadSource,
+  type LoadHeadOptions,
+  type PreparedHead,
+} from './head-loader';
 import { HeadStore } from './head-store';
 import { LandmarkGuide } from './landmark-guide';
 import { checkFaceOption, checkFaceOptions, type FaceOptions, type SolverChoice } from './face-options';
@@ -108,7 +117,12 @@ export class EmbeddedFace {
     if (on === !!this.panels) return;
     if (on) {
       const o = this.options;
-      this.panels = new Panels(this.handle, { container: this.element, frames: this.view, resolution: o.resolution, onResolution: o.onResolution });
+      this.panels = new Panels(this.handle, {
+        container: this.element,
+        frames: this.view,
+        resolution: o.resolution,
+        onResolution: o.onResolution,
+      });
     } else {
       this.panels!.dispose();
       this.panels = undefined;
@@ -197,7 +211,8 @@ export class EmbeddedFace {
     await this.mount(head, prepared, { signal });
 
     const start = readExpression(o.expression, 'createFace: expression');
-    if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0) this.expression!.set(start, 'createFace: expression');
+    if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0)
+      this.expression!.set(start, 'createFace: expression');
     if (Object.keys(o.light).length > 0) this.handle.setLight(o.light);
     if (Object.keys(o.appearance).length > 0) this.handle.setAppearance(o.appearance);
     if (o.eyeSimulation) this.handle.setEyeSimulation(true);
@@ -219,7 +234,11 @@ export class EmbeddedFace {
       const prepared = await prepareHead(files, o, this.partsUrl, this.original, o.resolution ?? this.options.resolution);
       this.alive();
       await this.mount(prepared.head, prepared, { started, fresh: true });
-      await this.headStore?.save({ files: prepared.files, options: { ...prepared.options, landmarks: null }, landmarks: prepared.landmarks });
+      await this.headStore?.save({
+        files: prepared.files,
+        options: { ...prepared.options, landmarks: null },
+        landmarks: prepared.landmarks,
+      });
       return this.describeHead();
     };
     // One load at a time, in the order asked.
@@ -308,7 +327,9 @@ export class EmbeddedFace {
       // Brows and lashes, placed from the eye corners on the skin at rest (the lashes' roots clear of the eyeballs),
       // ride every frame the skin shows.
       const colliders = headColliders(head);
-      const eyes = colliders.filter((c) => (HEAD_NODES.eyes as readonly string[]).includes(c.name)).map((c) => ({ centre: c.a, radius: c.radius }));
+      const eyes = colliders
+        .filter((c) => (HEAD_NODES.eyes as readonly string[]).includes(c.name))
+        .map((c) => ({ centre: c.a, radius: c.radius }));
       head.hair = new HairView(head.skin, prepared?.landmarks ?? DEFAULT_LANDMARKS, eyes);
       // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
       if (this.rigKey) {
@@ -350,11 +371,13 @@ export class EmbeddedFace {
     skinView.connect(simulation);
     const hair = head.hair;
     if (hair) own.push(skinView.follow(hair));
-    own.push(this.view.onFrame(() => {
-      simulation.advance();
-      if (skinView.update()) return true;
-      return simulation.awaitsAnswer() ? 'hold' : false;
-    }));
+    own.push(
+      this.view.onFrame(() => {
+        simulation.advance();
+        if (skinView.update()) return true;
+        return simulation.awaitsAnswer() ? 'hold' : false;
+      }),
+    );
     // Whatever the handle changes (expression, jaw, glyphs, editor, light, head) is drawn.
     own.push(this.handle.onChange(this.view.invalidate));
 
@@ -364,7 +387,9 @@ export class EmbeddedFace {
     this.view.scene.add(muscles.group);
     own.push(() => muscles.dispose());
     // The jaw node's rest pose and the loaded rig's hinge, taken once: an edited jaw muscle turns it from there.
-    const jawRest = head.jaw ? { quaternion: head.jaw.quaternion.clone(), position: head.jaw.position.clone(), hinge: jawHinge(rig) } : undefined;
+    const jawRest = head.jaw
+      ? { quaternion: head.jaw.quaternion.clone(), position: head.jaw.position.clone(), hinge: jawHinge(rig) }
+      : undefined;
     let jaw = jawTurner(head, rig, jawRest);
     const expression = new FaceExpression(rig, (contractions) => {
       simulation.setContractions(contractions);
@@ -410,7 +435,9 @@ export class EmbeddedFace {
     this.handle.attachEditor(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same
     // millisecond; the state machine takes a seed for its tests.
-    const eyes = new EyeDriver(this.handle, this.view, head.eyes, { simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 } });
+    const eyes = new EyeDriver(this.handle, this.view, head.eyes, {
+      simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 },
+    });
     own.push(() => eyes.dispose());
     this.handle.attachEyes(eyes);
     this.handle.attachRecorder(new VideoRecorder({ handle: this.handle, simulation, view: this.view, skin: skinView }));
@@ -425,7 +452,7 @@ export class EmbeddedFace {
       units: frame?.units ?? 'm',
       up: frame?.up ?? '+y',
       forward: frame?.forward ?? '+z',
-      landmarks: prepared ? structuredClone(prepared.landmarks) : structuredClone(DEFAULT_LANDMARKS) as Landmarks,
+      landmarks: prepared ? structuredClone(prepared.landmarks) : (structuredClone(DEFAULT_LANDMARKS) as Landmarks),
       parts: prepared ? { ...prepared.sources } : { eyes: 'file', teeth: 'file', jaw: 'file' },
       loadMs: started > 0 ? Math.round(performance.now() - started) : 0,
     };

@@ -33,7 +33,10 @@ export function encodeExpression(e: HashExpression, timeline?: string, appearanc
   for (const [id, v] of Object.entries(e.actionUnits)) if (v !== 0) params.set(id, String(round(v)));
   for (const [name, w] of Object.entries(e.presets)) if (w !== 0) params.set(PRESET_PREFIX + name, String(round(w)));
   for (const [key, value] of Object.entries(appearance)) {
-    params.set(APPEARANCE_HASH_PREFIX + key, typeof value === 'boolean' ? (value ? '1' : '0') : typeof value === 'number' ? String(round(value)) : value);
+    params.set(
+      APPEARANCE_HASH_PREFIX + key,
+      typeof value === 'boolean' ? (value ? '1' : '0') : typeof value === 'number' ? String(round(value)) : value,
+    );
   }
   if (timeline !== undefined) params.set(TIMELINE_HASH_KEY, timeline);
   const text = params.toString();
@@ -77,7 +80,10 @@ export function decodeAppearance(hash: string, defaults: Readonly<HashAppearance
 export function appearanceChanges(current: Readonly<HashAppearance>, defaults: Readonly<HashAppearance>): HashAppearance {
   const out: HashAppearance = {};
   for (const [key, value] of Object.entries(current)) {
-    const same = typeof value === 'string' && typeof defaults[key] === 'string' ? value.toLowerCase() === (defaults[key] as string).toLowerCase() : value === defaults[key];
+    const same =
+      typeof value === 'string' && typeof defaults[key] === 'string'
+        ? value.toLowerCase() === (defaults[key] as string).toLowerCase()
+        : value === defaults[key];
     if (!same) out[key] = value;
   }
   return out;
@@ -101,7 +107,8 @@ export function readExpression(expression: string | ExpressionEntries, what = 'e
   };
   if (typeof expression === 'string') {
     // An empty value is a mistake, not 0.
-    for (const [key, text] of new URLSearchParams(expression.trim().replace(/^#/, ''))) add(key, text.trim() === '' ? NaN : Number(text), text);
+    for (const [key, text] of new URLSearchParams(expression.trim().replace(/^#/, '')))
+      add(key, text.trim() === '' ? NaN : Number(text), text);
   } else if (typeof expression === 'object' && expression !== null && !Array.isArray(expression)) {
     for (const [key, value] of Object.entries(expression)) add(key, typeof value === 'number' ? value : NaN, value);
   } else {

@@ -77,7 +77,11 @@ export class FaceExpression {
    * checked before anything changes.
    */
   set(expression: HashExpression, what = 'expression'): void {
-    checkExpression(expression, this.state.listPresets().map((p) => p.name), what);
+    checkExpression(
+      expression,
+      this.state.listPresets().map((p) => p.name),
+      what,
+    );
     this.state.reset();
     for (const [id, value] of Object.entries(expression.actionUnits)) this.state.setActionUnit(id, value);
     for (const [name, weight] of Object.entries(expression.presets)) this.state.applyPreset(name, weight);
@@ -136,11 +140,13 @@ export class FaceExpression {
  */
 export function checkExpression(expression: HashExpression, presets: readonly string[], what: string): void {
   for (const [id, value] of Object.entries(expression.actionUnits)) {
-    if (!isActionUnitId(id)) throw new Error(`${what}: unknown Action Unit id ${JSON.stringify(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
+    if (!isActionUnitId(id))
+      throw new Error(`${what}: unknown Action Unit id ${JSON.stringify(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
     if (!Number.isFinite(value)) throw new Error(`${what}: ${id} needs a finite number, got ${String(value)}`);
   }
   for (const [name, weight] of Object.entries(expression.presets)) {
-    if (!presets.includes(name)) throw new Error(`${what}: unknown preset ${JSON.stringify(name)} (presets: ${presets.join(', ') || 'none'})`);
+    if (!presets.includes(name))
+      throw new Error(`${what}: unknown preset ${JSON.stringify(name)} (presets: ${presets.join(', ') || 'none'})`);
     if (!Number.isFinite(weight)) throw new Error(`${what}: preset ${name} needs a finite weight, got ${String(weight)}`);
   }
 }

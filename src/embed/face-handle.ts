@@ -42,7 +42,20 @@ export type FaceStats = SkinSimulationStats;
  * head loaded, or the default one back), the landmark guide (started, a landmark placed, ended), or the timeline
  * (loaded, played, paused, sought, and every frame it plays).
  */
-export type FaceChange = 'expression' | 'light' | 'camera' | 'render' | 'appearance' | 'skin' | 'eyes' | 'muscles' | 'rig' | 'editor' | 'head' | 'landmarks' | 'timeline';
+export type FaceChange =
+  | 'expression'
+  | 'light'
+  | 'camera'
+  | 'render'
+  | 'appearance'
+  | 'skin'
+  | 'eyes'
+  | 'muscles'
+  | 'rig'
+  | 'editor'
+  | 'head'
+  | 'landmarks'
+  | 'timeline';
 
 /**
  * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
@@ -670,7 +683,8 @@ export class FaceHandle {
 
   /** Renders `frames` frames (default 100) back to back and reports their main-thread time (a benchmark: it blocks the page). */
   measureRender(frames = 100): RenderTiming {
-    if (!Number.isInteger(frames) || frames < 1 || frames > 10_000) throw new Error(`measureRender: frames must be an integer within 1..10000, got ${String(frames)}`);
+    if (!Number.isInteger(frames) || frames < 1 || frames > 10_000)
+      throw new Error(`measureRender: frames must be an integer within 1..10000, got ${String(frames)}`);
     return this.shown().measureRender(frames);
   }
 
@@ -739,7 +753,8 @@ export class FaceHandle {
     if (ids.length !== values.length) throw new Error(`setOverlay: ${ids.length} ids but ${values.length} values`);
     for (let i = 0; i < ids.length; i++) {
       if (!isActionUnitId(ids[i])) throw new Error(`setOverlay: unknown Action Unit id ${JSON.stringify(ids[i])}`);
-      if (typeof values[i] !== 'number' || !Number.isFinite(values[i])) throw new Error(`setOverlay: ${ids[i]} needs a finite number, got ${String(values[i])}`);
+      if (typeof values[i] !== 'number' || !Number.isFinite(values[i]))
+        throw new Error(`setOverlay: ${ids[i]} needs a finite number, got ${String(values[i])}`);
     }
     expression.setOverlay(ids, values);
   }
@@ -803,7 +818,8 @@ export class FaceHandle {
    */
   seek(seconds: number): void {
     const player = this.timelinePlayer();
-    if (typeof seconds !== 'number' || !Number.isFinite(seconds)) throw new Error(`seek: needs a finite number of seconds, got ${String(seconds)}`);
+    if (typeof seconds !== 'number' || !Number.isFinite(seconds))
+      throw new Error(`seek: needs a finite number of seconds, got ${String(seconds)}`);
     if (!player.timeline()) throw new Error('seek: no timeline is loaded (setTimeline first)');
     player.seek(seconds);
     this.emit('timeline');
@@ -849,7 +865,9 @@ export class FaceHandle {
     if (!this.recorder) throw new Error('recordVideo: the face is not ready yet: await face.ready first');
     if (this.recorder.recording()) throw new Error('recordVideo: a recording is already running');
     if (o.timeline === null && o.seconds === 0 && !player.timeline()) {
-      throw new Error('recordVideo: seconds: give a length in seconds, or a timeline to record (the timeline option, or setTimeline first)');
+      throw new Error(
+        'recordVideo: seconds: give a length in seconds, or a timeline to record (the timeline option, or setTimeline first)',
+      );
     }
     o.signal?.throwIfAborted();
     if (o.timeline !== null) this.setTimeline(o.timeline, 'recordVideo: timeline');
@@ -883,15 +901,24 @@ export class FaceHandle {
     const writer = this.gltfWriter;
     if (!writer) throw new Error('exportGLTF: the face has no head to export yet');
     const loaded = player.timeline();
-    if (o.timeline === true && !loaded) throw new Error('exportGLTF: timeline: no timeline is loaded (setTimeline first, or leave timeline out)');
+    if (o.timeline === true && !loaded)
+      throw new Error('exportGLTF: timeline: no timeline is loaded (setTimeline first, or leave timeline out)');
     const timeline = o.timeline === false ? null : loaded;
-    const targets = planTargets(o.actionUnits, o.presets, this.listPresets().map((p) => p.name), timeline);
+    const targets = planTargets(
+      o.actionUnits,
+      o.presets,
+      this.listPresets().map((p) => p.name),
+      timeline,
+    );
     const weights = timeline ? timelineWeights(timeline, targets, o.fps) : null;
     o.signal?.throwIfAborted();
     if (this.exporting) throw new Error('exportGLTF: another export is under way');
     this.exporting = true;
     const saved = {
-      expression: { actionUnits: expression.getActionUnits(), presets: Object.fromEntries(expression.listPresets().map((p) => [p.name, p.weight])) },
+      expression: {
+        actionUnits: expression.getActionUnits(),
+        presets: Object.fromEntries(expression.listPresets().map((p) => [p.name, p.weight])),
+      },
       overlay: expression.getOverlay(),
       eyes: this.eyes?.enabled() ?? false,
       playing: player.state().playing,
@@ -927,7 +954,10 @@ export class FaceHandle {
       if (!this.disposed) {
         expression.set(saved.expression, 'exportGLTF');
         const ids = Object.keys(saved.overlay);
-        expression.setOverlay(ids, ids.map((id) => saved.overlay[id]));
+        expression.setOverlay(
+          ids,
+          ids.map((id) => saved.overlay[id]),
+        );
         this.applyPreview();
         this.eyes?.setEnabled(saved.eyes);
         if (saved.playing) player.play();
@@ -937,7 +967,9 @@ export class FaceHandle {
     o.onProgress?.({ done: targets.length, total: targets.length, target: null });
     const clip = weights ? { name: 'timeline', ...weights } : null;
     const data = await writer.write(shapes, clip, { binary: o.binary });
-    return data instanceof ArrayBuffer ? new Blob([data], { type: 'model/gltf-binary' }) : new Blob([JSON.stringify(data)], { type: 'model/gltf+json' });
+    return data instanceof ArrayBuffer
+      ? new Blob([data], { type: 'model/gltf-binary' })
+      : new Blob([JSON.stringify(data)], { type: 'model/gltf+json' });
   }
 
   /** Waits for the skin to settle, checking the abort signal before and after. */
@@ -984,7 +1016,8 @@ export class FaceHandle {
 
   /** What the gizmo does: `translate`, `rotate` or `scale` (what a part cannot do, it ignores). */
   setGizmoMode(mode: GizmoMode): void {
-    if (!['translate', 'rotate', 'scale'].includes(mode)) throw new Error(`setGizmoMode: expected "translate", "rotate" or "scale", got ${JSON.stringify(mode)}`);
+    if (!['translate', 'rotate', 'scale'].includes(mode))
+      throw new Error(`setGizmoMode: expected "translate", "rotate" or "scale", got ${JSON.stringify(mode)}`);
     this.alive();
     this.gizmoMode = mode;
     this.editorView?.setMode(mode);
@@ -995,7 +1028,8 @@ export class FaceHandle {
   setGizmoPart(part: GizmoPart): void {
     const muscle = this.selectedMuscle('setGizmoPart');
     const parts = gizmoParts(muscle);
-    if (!parts.includes(part)) throw new Error(`setGizmoPart: a ${muscle.type} muscle has the parts ${parts.join(', ')}, got ${JSON.stringify(part)}`);
+    if (!parts.includes(part))
+      throw new Error(`setGizmoPart: a ${muscle.type} muscle has the parts ${parts.join(', ')}, got ${JSON.stringify(part)}`);
     this.editorView?.setPart(part);
     this.emit('editor');
   }
@@ -1005,7 +1039,8 @@ export class FaceHandle {
    * it); it follows the selection.
    */
   setPreviewContraction(value: number): void {
-    if (typeof value !== 'number' || !Number.isFinite(value)) throw new Error(`setPreviewContraction: needs a finite number, got ${String(value)}`);
+    if (typeof value !== 'number' || !Number.isFinite(value))
+      throw new Error(`setPreviewContraction: needs a finite number, got ${String(value)}`);
     this.document();
     this.previewValue = Math.min(1, Math.max(0, value));
     this.applyPreview();
@@ -1032,9 +1067,12 @@ export class FaceHandle {
   setBrush(partial: Partial<BrushOptions>): void {
     this.alive();
     const next = { ...this.brush, ...partial };
-    if (!['off', 'add', 'remove'].includes(next.mode)) throw new Error(`setBrush: mode must be "off", "add" or "remove", got ${JSON.stringify(next.mode)}`);
-    if (typeof next.radius !== 'number' || !(next.radius >= 0.001 && next.radius <= 0.05)) throw new Error(`setBrush: radius must be a number of metres from 0.001 to 0.05, got ${String(next.radius)}`);
-    for (const key of Object.keys(partial)) if (key !== 'mode' && key !== 'radius') throw new Error(`setBrush: unknown option ${JSON.stringify(key)}`);
+    if (!['off', 'add', 'remove'].includes(next.mode))
+      throw new Error(`setBrush: mode must be "off", "add" or "remove", got ${JSON.stringify(next.mode)}`);
+    if (typeof next.radius !== 'number' || !(next.radius >= 0.001 && next.radius <= 0.05))
+      throw new Error(`setBrush: radius must be a number of metres from 0.001 to 0.05, got ${String(next.radius)}`);
+    for (const key of Object.keys(partial))
+      if (key !== 'mode' && key !== 'radius') throw new Error(`setBrush: unknown option ${JSON.stringify(key)}`);
     this.brush = next;
     this.editorView?.brushChanged();
     this.emit('editor');

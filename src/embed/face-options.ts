@@ -1,5 +1,13 @@
 import type { Rig } from '../core/rig-types';
-import { APPEARANCE_DEFAULTS, APPEARANCE_RANGES, LIGHT_DEFAULTS, LIGHT_RANGES, checkOptions, type AppearanceOptions, type LightOptions } from '../render/view-options';
+import {
+  APPEARANCE_DEFAULTS,
+  APPEARANCE_RANGES,
+  LIGHT_DEFAULTS,
+  LIGHT_RANGES,
+  checkOptions,
+  type AppearanceOptions,
+  type LightOptions,
+} from '../render/view-options';
 import { readExpression, type ExpressionEntries } from './expression-hash';
 
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
@@ -153,7 +161,8 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
 /** Checks every option given and fills in the defaults; throws naming the first bad one. */
 export function checkFaceOptions(options: unknown, what = 'createFace'): Required<FaceOptions> {
   if (options === undefined) return { ...FACE_DEFAULTS };
-  if (typeof options !== 'object' || options === null || Array.isArray(options)) throw new Error(`${what}: needs an object of options, got ${show(options)}`);
+  if (typeof options !== 'object' || options === null || Array.isArray(options))
+    throw new Error(`${what}: needs an object of options, got ${show(options)}`);
   const out: Record<string, unknown> = { ...FACE_DEFAULTS };
   for (const [key, value] of Object.entries(options)) {
     // Left out and undefined mean the same.

@@ -44,18 +44,29 @@ export const GLTF_EXPORT_DEFAULTS: Readonly<Required<GLTFExportOptions>> = Objec
  */
 export function checkExportOptions(options: unknown, what = 'exportGLTF'): Required<GLTFExportOptions> {
   if (options === undefined) return { ...GLTF_EXPORT_DEFAULTS };
-  if (typeof options !== 'object' || options === null || Array.isArray(options)) throw new Error(`${what}: options must be an object, got ${String(options)}`);
-  for (const key of Object.keys(options)) if (!(key in GLTF_EXPORT_DEFAULTS)) throw new Error(`${what}: unknown option ${JSON.stringify(key)}`);
+  if (typeof options !== 'object' || options === null || Array.isArray(options))
+    throw new Error(`${what}: options must be an object, got ${String(options)}`);
+  for (const key of Object.keys(options))
+    if (!(key in GLTF_EXPORT_DEFAULTS)) throw new Error(`${what}: unknown option ${JSON.stringify(key)}`);
   const o = { ...GLTF_EXPORT_DEFAULTS, ...(options as GLTFExportOptions) };
-  for (const [key, list] of [['actionUnits', o.actionUnits], ['presets', o.presets]] as const) {
-    if (!Array.isArray(list) || !list.every((x) => typeof x === 'string')) throw new Error(`${what}: ${key} must be an array of strings, got ${show(list)}`);
+  for (const [key, list] of [
+    ['actionUnits', o.actionUnits],
+    ['presets', o.presets],
+  ] as const) {
+    if (!Array.isArray(list) || !list.every((x) => typeof x === 'string'))
+      throw new Error(`${what}: ${key} must be an array of strings, got ${show(list)}`);
   }
-  if (o.timeline !== null && typeof o.timeline !== 'boolean') throw new Error(`${what}: timeline must be a boolean, got ${show(o.timeline)}`);
-  if (typeof o.fps !== 'number' || !Number.isFinite(o.fps) || o.fps <= 0 || o.fps > MAX_EXPORT_FPS) throw new Error(`${what}: fps must be a number above 0 and at most ${MAX_EXPORT_FPS}, got ${show(o.fps)}`);
+  if (o.timeline !== null && typeof o.timeline !== 'boolean')
+    throw new Error(`${what}: timeline must be a boolean, got ${show(o.timeline)}`);
+  if (typeof o.fps !== 'number' || !Number.isFinite(o.fps) || o.fps <= 0 || o.fps > MAX_EXPORT_FPS)
+    throw new Error(`${what}: fps must be a number above 0 and at most ${MAX_EXPORT_FPS}, got ${show(o.fps)}`);
   if (typeof o.binary !== 'boolean') throw new Error(`${what}: binary must be a boolean, got ${show(o.binary)}`);
-  if (typeof o.settleTimeoutMs !== 'number' || !(o.settleTimeoutMs > 0)) throw new Error(`${what}: settleTimeoutMs must be a positive number of ms, got ${show(o.settleTimeoutMs)}`);
-  if (o.onProgress !== null && typeof o.onProgress !== 'function') throw new Error(`${what}: onProgress must be a function, got ${show(o.onProgress)}`);
-  if (o.signal !== null && !(o.signal instanceof AbortSignal)) throw new Error(`${what}: signal must be an AbortSignal, got ${show(o.signal)}`);
+  if (typeof o.settleTimeoutMs !== 'number' || !(o.settleTimeoutMs > 0))
+    throw new Error(`${what}: settleTimeoutMs must be a positive number of ms, got ${show(o.settleTimeoutMs)}`);
+  if (o.onProgress !== null && typeof o.onProgress !== 'function')
+    throw new Error(`${what}: onProgress must be a function, got ${show(o.onProgress)}`);
+  if (o.signal !== null && !(o.signal instanceof AbortSignal))
+    throw new Error(`${what}: signal must be an AbortSignal, got ${show(o.signal)}`);
   return { ...o, actionUnits: [...o.actionUnits], presets: [...o.presets] };
 }
 

@@ -1,4 +1,17 @@
-import { AXES, UNITS, applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, positionBounds, weldSeams, type Axis, type HeadFrame, type TriangleMesh, type Unit } from '../core/head-mesh';
+import {
+  AXES,
+  UNITS,
+  applyHeadFrame,
+  checkHeadMesh,
+  findHeadFrame,
+  mergeVertices,
+  positionBounds,
+  weldSeams,
+  type Axis,
+  type HeadFrame,
+  type TriangleMesh,
+  type Unit,
+} from '../core/head-mesh';
 import { decimateHead, LEVEL_TRIANGLES, levelPlan, subdivideHead, type HeadLevel, type LevelPlan } from '../core/head-levels';
 import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_LABELS, LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/landmarks';
 import { parseRig } from '../core/rig-schema';
@@ -98,11 +111,13 @@ export class MissingLandmarksError extends Error {
 /** Checks `loadHead` options and fills in the defaults; throws naming the first bad one. */
 export function checkLoadHeadOptions(options: unknown): Required<LoadHeadOptions> {
   if (options === undefined || options === null) return { ...LOAD_HEAD_DEFAULTS };
-  if (typeof options !== 'object' || Array.isArray(options)) throw new Error(`loadHead: needs an object of options, got ${String(options)}`);
+  if (typeof options !== 'object' || Array.isArray(options))
+    throw new Error(`loadHead: needs an object of options, got ${String(options)}`);
   const out: Record<string, unknown> = { ...LOAD_HEAD_DEFAULTS };
   for (const [key, value] of Object.entries(options)) {
     if (value === undefined) continue;
-    const bad = (expected: string): Error => new Error(`loadHead: ${key} must be ${expected}, got ${JSON.stringify(value) ?? String(value)}`);
+    const bad = (expected: string): Error =>
+      new Error(`loadHead: ${key} must be ${expected}, got ${JSON.stringify(value) ?? String(value)}`);
     switch (key) {
       case 'skin':
         if (value !== null && (typeof value !== 'string' || value === '')) throw bad('a mesh name');
@@ -115,13 +130,15 @@ export function checkLoadHeadOptions(options: unknown): Required<LoadHeadOptions
         if (value !== 'auto' && !AXES.includes(value as Axis)) throw bad(`one of auto, ${AXES.join(', ')}`);
         break;
       case 'resolution':
-        if (value !== null && value !== 'file' && !(typeof value === 'string' && value in LEVEL_TRIANGLES)) throw bad(`one of ${Object.keys(LEVEL_TRIANGLES).join(', ')}, file`);
+        if (value !== null && value !== 'file' && !(typeof value === 'string' && value in LEVEL_TRIANGLES))
+          throw bad(`one of ${Object.keys(LEVEL_TRIANGLES).join(', ')}, file`);
         break;
       case 'landmarks':
         if (value === null) break;
         if (typeof value !== 'object' || Array.isArray(value)) throw bad('an object of points');
         for (const [name, p] of Object.entries(value)) {
-          if (!LANDMARK_NAMES.includes(name as LandmarkName)) throw new Error(`loadHead: landmarks: unknown landmark "${name}" (landmarks: ${LANDMARK_NAMES.join(', ')})`);
+          if (!LANDMARK_NAMES.includes(name as LandmarkName))
+            throw new Error(`loadHead: landmarks: unknown landmark "${name}" (landmarks: ${LANDMARK_NAMES.join(', ')})`);
           if (!Array.isArray(p) || p.length !== 3 || !p.every((x) => typeof x === 'number' && Number.isFinite(x))) {
             throw new Error(`loadHead: landmarks.${name} must be [x, y, z] in metres, got ${JSON.stringify(p)}`);
           }
@@ -163,7 +180,8 @@ export async function readHeadFiles(source: HeadSource): Promise<HeadFile[]> {
   return Promise.all(
     list.map(async (f) => {
       if (!(f instanceof Blob)) {
-        if (typeof f?.name !== 'string' || !(f.bytes instanceof ArrayBuffer)) throw new Error('loadHead: a file must be a File or { name, bytes: ArrayBuffer }');
+        if (typeof f?.name !== 'string' || !(f.bytes instanceof ArrayBuffer))
+          throw new Error('loadHead: a file must be a File or { name, bytes: ArrayBuffer }');
         return f;
       }
       if (f.size > MAX_HEAD_FILE_BYTES) throw tooBig(f.name, f.size);
@@ -202,7 +220,8 @@ export async function prepareHead(
       return `${names.join(', ')} (${reason})`;
     });
     throw new MissingLandmarksError(
-      `${source}: no face was found on the mesh: ${reasons.join('; ')}. Place them by clicking ("place landmarks" in the Head folder) or give them in options.landmarks, or check its units and axes`,
+      `${source}: no face was found on the mesh: ${reasons.join('; ')}. Place them by clicking ("place ` +
+        `landmarks" in the Head folder) or give them in options.landmarks, or check its units and axes`,
       missing.map((m) => m.name),
       found,
       mesh,
@@ -228,4 +247,3 @@ export async function prepareHead(
   const { head, sources } = built;
   return { head, level, sources, rig, landmarks, frame, files, options };
 }
-

@@ -21,7 +21,10 @@ export interface RigTargets {
 export class RigBinding {
   private readonly unsubscribe: () => void;
 
-  constructor(document: RigDocument, private readonly targets: RigTargets) {
+  constructor(
+    document: RigDocument,
+    private readonly targets: RigTargets,
+  ) {
     this.unsubscribe = document.onChange((change, rig) => this.apply(change, rig));
   }
 

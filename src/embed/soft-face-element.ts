@@ -96,7 +96,9 @@ export class SoftFaceElement extends HTMLElement {
       resolution: v.resolution,
       solver: v.solver,
       background: v.background,
-      ...(carried ? { expression: carried.expression, light: carried.light, appearance: carried.appearance, eyeSimulation: carried.eyeSimulation } : {}),
+      ...(carried
+        ? { expression: carried.expression, light: carried.light, appearance: carried.appearance, eyeSimulation: carried.eyeSimulation }
+        : {}),
     };
     EmbeddedFace.create(this, options, building.signal).then(
       (face) => {
@@ -168,7 +170,10 @@ export class SoftFaceElement extends HTMLElement {
 
   /** The expression attribute with the preset attribute's weights over it, as handle entries. */
   private expression(): Record<string, number> {
-    const e: HashExpression = { actionUnits: this.values.expression.actionUnits, presets: { ...this.values.expression.presets, ...this.values.preset.presets } };
+    const e: HashExpression = {
+      actionUnits: this.values.expression.actionUnits,
+      presets: { ...this.values.expression.presets, ...this.values.preset.presets },
+    };
     return expressionEntries(e);
   }
 

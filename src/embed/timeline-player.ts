@@ -1,4 +1,12 @@
-import { createTimelineSample, localTime, PRESET_TARGET_PREFIX, sampleTimeline, timelineDuration, type Timeline, type TimelineSample } from '../core/timeline';
+import {
+  createTimelineSample,
+  localTime,
+  PRESET_TARGET_PREFIX,
+  sampleTimeline,
+  timelineDuration,
+  type Timeline,
+  type TimelineSample,
+} from '../core/timeline';
 import type { FrameHooks } from './eye-driver';
 import type { FaceHandle, FaceTimeline, TimelineState } from './face-handle';
 
@@ -96,7 +104,13 @@ export class TimelinePlayer implements FaceTimeline {
   }
 
   state(): TimelineState {
-    return { loaded: this.timelineNow !== null, playing: this.playing, time: this.time, duration: this.duration, loop: this.timelineNow?.loop ?? false };
+    return {
+      loaded: this.timelineNow !== null,
+      playing: this.playing,
+      time: this.time,
+      duration: this.duration,
+      loop: this.timelineNow?.loop ?? false,
+    };
   }
 
   /** Stops following frames, for good: the face is going away. */

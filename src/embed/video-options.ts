@@ -53,7 +53,8 @@ const FORMATS: readonly VideoFormat[] = ['webm', 'png-zip'];
 export function checkVideoOptions(options: VideoOptions): Required<VideoOptions> {
   if (typeof options !== 'object' || options === null) throw new Error(`recordVideo: options must be an object, got ${String(options)}`);
   for (const name of Object.keys(options)) {
-    if (!(name in VIDEO_DEFAULTS)) throw new Error(`recordVideo: unknown option "${name}" (known: ${Object.keys(VIDEO_DEFAULTS).join(', ')})`);
+    if (!(name in VIDEO_DEFAULTS))
+      throw new Error(`recordVideo: unknown option "${name}" (known: ${Object.keys(VIDEO_DEFAULTS).join(', ')})`);
   }
   const o: Required<VideoOptions> = { ...VIDEO_DEFAULTS };
   for (const [name, value] of Object.entries(options)) if (value !== undefined) (o as Record<string, unknown>)[name] = value;
@@ -66,14 +67,16 @@ export function checkVideoOptions(options: VideoOptions): Required<VideoOptions>
   number('seconds', o.seconds, 0, MAX_VIDEO_SECONDS, false);
   number('solverFramesPerVideoFrame', o.solverFramesPerVideoFrame, 1, 100, true);
   number('bitrate', o.bitrate, 10_000, 100_000_000, false);
-  if (!FORMATS.includes(o.format)) throw new Error(`recordVideo: format: expected one of ${FORMATS.join(', ')}, got ${JSON.stringify(o.format)}`);
+  if (!FORMATS.includes(o.format))
+    throw new Error(`recordVideo: format: expected one of ${FORMATS.join(', ')}, got ${JSON.stringify(o.format)}`);
   if (o.timeline !== null && typeof o.timeline !== 'string' && typeof o.timeline !== 'object') {
     throw new Error(`recordVideo: timeline: expected a timeline document (JSON text or object) or null, got ${String(o.timeline)}`);
   }
   if (o.signal !== null && !(typeof o.signal === 'object' && typeof (o.signal as AbortSignal).throwIfAborted === 'function')) {
     throw new Error(`recordVideo: signal: expected an AbortSignal, got ${String(o.signal)}`);
   }
-  if (o.onProgress !== null && typeof o.onProgress !== 'function') throw new Error(`recordVideo: onProgress: expected a function, got ${String(o.onProgress)}`);
+  if (o.onProgress !== null && typeof o.onProgress !== 'function')
+    throw new Error(`recordVideo: onProgress: expected a function, got ${String(o.onProgress)}`);
   return o;
 }
 
@@ -85,6 +88,8 @@ export function videoFrameCount(seconds: number, fps: number): number {
 
 function number(name: string, value: unknown, min: number, max: number, integer: boolean): void {
   if (typeof value !== 'number' || !Number.isFinite(value) || value < min || value > max || (integer && !Number.isInteger(value))) {
-    throw new Error(`recordVideo: ${name}: expected ${integer ? 'a whole number' : 'a number'} from ${min} to ${max}, got ${String(value)}`);
+    throw new Error(
+      `recordVideo: ${name}: expected ${integer ? 'a whole number' : 'a number'} from ${min} to ${max}, got ${String(value)}`,
+    );
   }
 }

@@ -108,4 +108,3 @@ export class VideoRecorder {
     await simulation.runFrames(START_FRAMES);
   }
 }
-

@@ -25,7 +25,8 @@ export interface FrameSink {
 
 /** The first of VP9 and VP8 this browser encodes at the options' size, rate and bitrate. */
 async function encoderConfig(o: Required<VideoOptions>): Promise<{ name: 'vp9' | 'vp8'; config: VideoEncoderConfig }> {
-  if (typeof VideoEncoder === 'undefined') throw new Error('recordVideo: this browser has no WebCodecs VideoEncoder; record a PNG zip instead');
+  if (typeof VideoEncoder === 'undefined')
+    throw new Error('recordVideo: this browser has no WebCodecs VideoEncoder; record a PNG zip instead');
   for (const { name, codec } of CODECS) {
     const config: VideoEncoderConfig = {
       codec,
@@ -54,9 +55,11 @@ export async function webmSink(o: Required<VideoOptions>): Promise<FrameSink> {
   let muxed = Promise.resolve();
   const encoder = new VideoEncoder({
     output: (chunk, meta) => {
-      muxed = muxed.then(() => source.add(EncodedPacket.fromEncodedChunk(chunk), meta)).catch((error: unknown) => {
-        failure ??= error instanceof Error ? error : new Error(String(error));
-      });
+      muxed = muxed
+        .then(() => source.add(EncodedPacket.fromEncodedChunk(chunk), meta))
+        .catch((error: unknown) => {
+          failure ??= error instanceof Error ? error : new Error(String(error));
+        });
     },
     error: (error) => (failure ??= error),
   });
@@ -68,7 +71,8 @@ export async function webmSink(o: Required<VideoOptions>): Promise<FrameSink> {
       const frame = new VideoFrame(canvas, { timestamp: Math.round((index * 1e6) / fps), duration: Math.round(1e6 / fps) });
       encoder.encode(frame, { keyFrame: index % keyEvery === 0 });
       frame.close();
-      while (encoder.encodeQueueSize > ENCODE_QUEUE && !failure) await new Promise((resolve) => encoder.addEventListener('dequeue', resolve, { once: true }));
+      while (encoder.encodeQueueSize > ENCODE_QUEUE && !failure)
+        await new Promise((resolve) => encoder.addEventListener('dequeue', resolve, { once: true }));
     },
     async finish() {
       await encoder.flush();
@@ -96,7 +100,9 @@ export function pngZipSink(): FrameSink {
   return {
     async add(canvas, index) {
       if (failure) throw failure;
-      const png = await new Promise<Blob>((resolve, reject) => canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('recordVideo: a frame could not be encoded as a PNG'))), 'image/png'));
+      const png = await new Promise<Blob>((resolve, reject) =>
+        canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('recordVideo: a frame could not be encoded as a PNG'))), 'image/png'),
+      );
       const file = new ZipPassThrough(`frame-${String(index).padStart(5, '0')}.png`);
       // A fixed date: the same recording gives the same file.
       file.mtime = ZIP_DATE;

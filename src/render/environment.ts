@@ -1,4 +1,13 @@
-import { CompressedCubeTexture, HalfFloatType, LinearFilter, LinearMipmapLinearFilter, LinearSRGBColorSpace, RGBAFormat, type CompressedPixelFormat, type CompressedTextureMipmap } from 'three';
+import {
+  CompressedCubeTexture,
+  HalfFloatType,
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  LinearSRGBColorSpace,
+  RGBAFormat,
+  type CompressedPixelFormat,
+  type CompressedTextureMipmap,
+} from 'three';
 import { decodeEnvironment, type EnvironmentLevels } from '../core/baked-environment';
 
 /** Where the baked room environment lies under a face's asset base. */
@@ -18,7 +27,10 @@ export async function loadEnvironment(url: string): Promise<CompressedCubeTextur
     const bytes = new Uint8Array(await new Response(response.body.pipeThrough(new DecompressionStream('gzip'))).arrayBuffer());
     return environmentTexture(decodeEnvironment(bytes));
   } catch (error) {
-    console.warn(`the lighting environment ${url} could not be loaded (${(error as Error).message}); making it instead, which takes seconds without a GPU`);
+    console.warn(
+      `the lighting environment ${url} could not be loaded (${(error as Error).message}); ` +
+        `making it instead, which takes seconds without a GPU`,
+    );
     return null;
   }
 }

@@ -36,7 +36,11 @@ export function generateIrisImage(options: Partial<IrisOptions> = {}): EyeImage 
   const height = 64;
   const random = mulberry32(o.seed);
   // Fibre brightness per angle, at three scales; each sum stays periodic in u.
-  const waves = Array.from({ length: 24 }, (_, k) => ({ f: 3 + Math.floor(random() * (k < 8 ? 20 : 90)), phase: 2 * Math.PI * random(), a: random() }));
+  const waves = Array.from({ length: 24 }, (_, k) => ({
+    f: 3 + Math.floor(random() * (k < 8 ? 20 : 90)),
+    phase: 2 * Math.PI * random(),
+    a: random(),
+  }));
   const crypts = Array.from({ length: 14 }, () => ({ u: random(), r: 0.28 + 0.3 * random(), size: 0.015 + 0.025 * random() }));
   const data = new Uint8Array(4 * width * height);
   for (let y = 0; y < height; y++) {

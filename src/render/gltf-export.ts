@@ -100,7 +100,8 @@ export class HeadExporter {
   buildScene(shapes: readonly MorphShape[], clip: MorphClip | null): ExportScene {
     const n = this.vertexCount;
     for (const s of shapes) {
-      if (s.positions.length !== 3 * n || s.normals.length !== 3 * n) throw new Error(`the shape ${s.name} has ${s.positions.length / 3} vertices, the skin ${n}`);
+      if (s.positions.length !== 3 * n || s.normals.length !== 3 * n)
+        throw new Error(`the shape ${s.name} has ${s.positions.length / 3} vertices, the skin ${n}`);
     }
     const scene = this.head.root.clone(true);
     const copies = new Map<Object3D, Object3D>();
@@ -145,23 +146,34 @@ export class HeadExporter {
     const animations: AnimationClip[] = [];
     if (clip) {
       const count = clip.times.length;
-      if (clip.weights.length !== count * shapes.length) throw new Error(`the clip ${clip.name} has ${clip.weights.length} weights for ${count} times of ${shapes.length} targets`);
+      if (clip.weights.length !== count * shapes.length)
+        throw new Error(`the clip ${clip.name} has ${clip.weights.length} weights for ${count} times of ${shapes.length} targets`);
       // By uuid: node names of a loaded head need not be unique.
-      const tracks = [skin, ...jawMeshes, ...hairMeshes].map((m) => new NumberKeyframeTrack(`${m.uuid}.morphTargetInfluences`, clip.times, clip.weights));
+      const tracks = [skin, ...jawMeshes, ...hairMeshes].map(
+        (m) => new NumberKeyframeTrack(`${m.uuid}.morphTargetInfluences`, clip.times, clip.weights),
+      );
       animations.push(new AnimationClip(clip.name, clip.duration, tracks));
     }
     return { scene, animations, skin, jawMeshes, hairMeshes, dispose: () => made.forEach((g) => g.dispose()) };
   }
 
   /** Exports the scene `buildScene` makes, through three.js's GLTFExporter: a GLB, or a glTF JSON document. */
-  async write(shapes: readonly MorphShape[], clip: MorphClip | null, options: HeadWriteOptions = {}): Promise<ArrayBuffer | Record<string, unknown>> {
+  async write(
+    shapes: readonly MorphShape[],
+    clip: MorphClip | null,
+    options: HeadWriteOptions = {},
+  ): Promise<ArrayBuffer | Record<string, unknown>> {
     const o = { ...HEAD_WRITE_DEFAULTS, ...options };
     // Loaded when first used: most pages never export.
     const { GLTFExporter } = await import('three/addons/exporters/GLTFExporter.js');
     const built = this.buildScene(shapes, clip);
     const drawable = withDrawableTextures(built.scene);
     try {
-      const result = await new GLTFExporter().parseAsync(built.scene, { binary: o.binary, animations: built.animations, onlyVisible: false });
+      const result = await new GLTFExporter().parseAsync(built.scene, {
+        binary: o.binary,
+        animations: built.animations,
+        onlyVisible: false,
+      });
       return result as ArrayBuffer | Record<string, unknown>;
     } finally {
       drawable.dispose();
@@ -264,7 +276,9 @@ function withDrawableTextures(scene: Object3D): { dispose(): void } {
   scene.traverse((o) => {
     if (!(o instanceof Mesh)) return;
     const swap = (m: Material): Material => {
-      const entries = Object.entries(m).filter(([, v]) => v instanceof Texture && (v.image as { data?: unknown } | null)?.data instanceof Uint8Array);
+      const entries = Object.entries(m).filter(
+        ([, v]) => v instanceof Texture && (v.image as { data?: unknown } | null)?.data instanceof Uint8Array,
+      );
       if (entries.length === 0) return m;
       let copy = materials.get(m);
       if (!copy) {
@@ -328,5 +342,8 @@ function named(array: Float32Array, name: string): BufferAttribute {
 }
 
 function samePose(pose: JawPose, position: Vector3, quaternion: Quaternion): boolean {
-  return new Vector3().fromArray(pose.position).distanceTo(position) < 1e-9 && Math.abs(new Quaternion().fromArray(pose.quaternion).dot(quaternion)) > 1 - 1e-12;
+  return (
+    new Vector3().fromArray(pose.position).distanceTo(position) < 1e-9 &&
+    Math.abs(new Quaternion().fromArray(pose.quaternion).dot(quaternion)) > 1 - 1e-12
+  );
 }

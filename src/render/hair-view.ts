@@ -149,7 +149,10 @@ export class HairView {
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(base.positions, 3));
     geometry.setAttribute('normal', new BufferAttribute(base.normals, 3));
-    geometry.setAttribute('color', new BufferAttribute((p.mesh.geometry.getAttribute('color').array as Float32Array).slice(0, 3 * vertices), 3));
+    geometry.setAttribute(
+      'color',
+      new BufferAttribute((p.mesh.geometry.getAttribute('color').array as Float32Array).slice(0, 3 * vertices), 3),
+    );
     geometry.setIndex(new BufferAttribute(p.strands.indices.slice(0, (p.drawn * p.strands.indices.length) / p.strands.count), 1));
     const targets = shapes.map((s) => ({ name: s.name, ...posed(s) }));
     const relative = (name: string, a: Float32Array, b: Float32Array): BufferAttribute => {
@@ -198,8 +201,11 @@ export class HairView {
 function lidVertices(positions: Float32Array, eyes: readonly HairEye[]): Uint32Array {
   const out: number[] = [];
   for (let v = 0; v < positions.length / 3; v++) {
-    const x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
-    const near = (e: HairEye): boolean => z > e.centre[2] && Math.hypot(x - e.centre[0], y - e.centre[1], z - e.centre[2]) < e.radius + 0.008;
+    const x = positions[3 * v],
+      y = positions[3 * v + 1],
+      z = positions[3 * v + 2];
+    const near = (e: HairEye): boolean =>
+      z > e.centre[2] && Math.hypot(x - e.centre[0], y - e.centre[1], z - e.centre[2]) < e.radius + 0.008;
     if (eyes.some(near)) out.push(v);
   }
   return Uint32Array.from(out);
@@ -219,7 +225,15 @@ function part(strands: HairStrands, name: string): HairPart {
   geometry.setIndex(new BufferAttribute(strands.indices, 1));
   // Hair is a little glossy (a cuticle's sheen), seen from both sides of its ribbons. Its ribbons take the skin's
   // normal, which at a lid's margin faces the room's bright lights: a full reflection there turned dark lashes grey.
-  const material = new MeshStandardMaterial({ name, color: new Color(), roughness: 0.7, metalness: 0, envMapIntensity: 0.25, side: DoubleSide, vertexColors: true });
+  const material = new MeshStandardMaterial({
+    name,
+    color: new Color(),
+    roughness: 0.7,
+    metalness: 0,
+    envMapIntensity: 0.25,
+    side: DoubleSide,
+    vertexColors: true,
+  });
   const mesh = new Mesh(geometry, material);
   mesh.name = name;
   // The hair moves with the skin, whose bounds the view does not pass on: never culled (it is always in the face).

@@ -82,7 +82,8 @@ export function skinOf(scene: Object3D, source: string, name: string | null): { 
   let skin: Mesh | undefined;
   if (name !== null) {
     skin = meshes.find((m) => m.name === name || m.parent?.name === name);
-    if (!skin) throw new Error(`${source}: has no mesh named "${name}" (its meshes: ${meshes.map((m) => `"${m.name}"`).join(', ') || 'none'})`);
+    if (!skin)
+      throw new Error(`${source}: has no mesh named "${name}" (its meshes: ${meshes.map((m) => `"${m.name}"`).join(', ') || 'none'})`);
   } else {
     for (const m of meshes) if (!skin || triangles(m) > triangles(skin)) skin = m;
   }
@@ -97,7 +98,9 @@ export function skinOf(scene: Object3D, source: string, name: string | null): { 
     positions[3 * i + 1] = v.y;
     positions[3 * i + 2] = v.z;
   }
-  const indices = geometry.index ? Uint32Array.from({ length: geometry.index.count }, (_, i) => geometry.index!.getX(i)) : Uint32Array.from({ length: position.count }, (_, i) => i);
+  const indices = geometry.index
+    ? Uint32Array.from({ length: geometry.index.count }, (_, i) => geometry.index!.getX(i))
+    : Uint32Array.from({ length: position.count }, (_, i) => i);
   const uv = geometry.getAttribute('uv');
   const uvs = uv ? Float32Array.from({ length: 2 * uv.count }, (_, i) => uv.getComponent(Math.floor(i / 2), i % 2)) : undefined;
   return { mesh: { positions, indices, uvs }, name: skin.name };
@@ -159,16 +162,29 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
   defaults.skin.geometry.dispose();
 
   const fileMatrix = new Matrix4().set(
-    frame.scale * frame.rotation[0], frame.scale * frame.rotation[1], frame.scale * frame.rotation[2], frame.offset[0],
-    frame.scale * frame.rotation[3], frame.scale * frame.rotation[4], frame.scale * frame.rotation[5], frame.offset[1],
-    frame.scale * frame.rotation[6], frame.scale * frame.rotation[7], frame.scale * frame.rotation[8], frame.offset[2],
-    0, 0, 0, 1,
+    frame.scale * frame.rotation[0],
+    frame.scale * frame.rotation[1],
+    frame.scale * frame.rotation[2],
+    frame.offset[0],
+    frame.scale * frame.rotation[3],
+    frame.scale * frame.rotation[4],
+    frame.scale * frame.rotation[5],
+    frame.offset[1],
+    frame.scale * frame.rotation[6],
+    frame.scale * frame.rotation[7],
+    frame.scale * frame.rotation[8],
+    frame.offset[2],
+    0,
+    0,
+    0,
+    1,
   );
   parts.scene.updateMatrixWorld(true);
   // The app's materials by name (sclera, iris, cornea, teeth, tongue): a file's parts named so take them.
   const materials = new Map<string, Material>();
   defaults.root.traverse((o) => {
-    if (o instanceof Mesh && !Array.isArray(o.material) && o !== defaults.skin) materials.set((o.material as Material).name, o.material as Material);
+    if (o instanceof Mesh && !Array.isArray(o.material) && o !== defaults.skin)
+      materials.set((o.material as Material).name, o.material as Material);
   });
   const fromFile = (name: string): Object3D | undefined => {
     const o = parts.scene.getObjectByName(name);

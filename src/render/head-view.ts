@@ -179,7 +179,14 @@ export class HeadView {
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true, alpha: true });
     this.pixelRatio = Math.min(window.devicePixelRatio, o.maxPixelRatio);
     this.motionResolution = Math.min(1, Math.max(0.25, o.motionResolution));
-    this.drawState = { changed: false, reduced: false, sinceChangeMs: 0, fullDrawMs: 0, motionResolution: this.motionResolution, slowDrawMs: o.slowDrawMs };
+    this.drawState = {
+      changed: false,
+      reduced: false,
+      sinceChangeMs: 0,
+      fullDrawMs: 0,
+      motionResolution: this.motionResolution,
+      slowDrawMs: o.slowDrawMs,
+    };
     this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.outputColorSpace = SRGBColorSpace;
     this.renderer.toneMapping = ACESFilmicToneMapping;
@@ -302,7 +309,10 @@ export class HeadView {
     this.renderFrame();
     // Read in the same task as the render, so the picture is there even without a preserved drawing buffer.
     return new Promise((resolve, reject) => {
-      this.renderer.domElement.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the canvas could not be encoded as a PNG'))), 'image/png');
+      this.renderer.domElement.toBlob(
+        (blob) => (blob ? resolve(blob) : reject(new Error('the canvas could not be encoded as a PNG'))),
+        'image/png',
+      );
     });
   }
 
@@ -553,7 +563,10 @@ export class HeadView {
     const pitch = Math.atan2(home.y, home.z) + o.pitch * DEGREES;
     const r = o.distance * home.length();
     const yaw = o.yaw * DEGREES;
-    this.camera.position.set(Math.sin(yaw) * Math.cos(pitch), Math.sin(pitch), Math.cos(yaw) * Math.cos(pitch)).multiplyScalar(r).add(this.controls.target);
+    this.camera.position
+      .set(Math.sin(yaw) * Math.cos(pitch), Math.sin(pitch), Math.cos(yaw) * Math.cos(pitch))
+      .multiplyScalar(r)
+      .add(this.controls.target);
     this.controls.update();
     this.invalidate();
   }
@@ -584,10 +597,11 @@ export class HeadView {
     head.root.traverse((o) => {
       if (!(o instanceof Mesh) || hair.has(o)) return;
       const materials = Array.isArray(o.material) ? o.material : [o.material];
-      for (const m of materials) if ('wireframe' in m && m.wireframe !== wireframe) {
-        m.wireframe = wireframe;
-        m.needsUpdate = true;
-      }
+      for (const m of materials)
+        if ('wireframe' in m && m.wireframe !== wireframe) {
+          m.wireframe = wireframe;
+          m.needsUpdate = true;
+        }
     });
     head.hair?.setAppearance(this.appearance);
     for (const eye of head.eyes) eye.visible = this.render.showEyes;

@@ -1,4 +1,15 @@
-import { BufferAttribute, BufferGeometry, Group, Mesh, MeshBasicMaterial, MeshStandardMaterial, Raycaster, SphereGeometry, Vector2, Vector3 } from 'three';
+import {
+  BufferAttribute,
+  BufferGeometry,
+  Group,
+  Mesh,
+  MeshBasicMaterial,
+  MeshStandardMaterial,
+  Raycaster,
+  SphereGeometry,
+  Vector2,
+  Vector3,
+} from 'three';
 import type { TriangleMesh } from '../core/head-mesh';
 import type { Vec3 } from '../core/rig-types';
 import type { HeadView } from './head-view';

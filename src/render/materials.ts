@@ -156,13 +156,26 @@ export function createCorneaMaterial(): MeshPhysicalMaterial {
 
 /** Teeth: off-white enamel, glossy, with light wrapping round their edges as through translucent enamel. */
 export function createTeethMaterial(): MeshPhysicalMaterial {
-  const material = new MeshPhysicalMaterial({ name: 'teeth', color: new Color(0.8, 0.75, 0.63), roughness: 0.3, ior: 1.55, side: DoubleSide });
+  const material = new MeshPhysicalMaterial({
+    name: 'teeth',
+    color: new Color(0.8, 0.75, 0.63),
+    roughness: 0.3,
+    ior: 1.55,
+    side: DoubleSide,
+  });
   return addSubsurface(material, { wrap: [0.45, 0.4, 0.3], normalBlur: [0, 0, 0], cavity: 0 });
 }
 
 /** Gums: pale coral pink, moist, with a reddish subsurface wrap like the lips'. */
 export function createGumsMaterial(): MeshPhysicalMaterial {
-  const material = new MeshPhysicalMaterial({ name: 'gums', color: new Color(0.62, 0.22, 0.22), roughness: 0.38, sheen: 0.3, sheenColor: new Color(0.9, 0.55, 0.55), side: DoubleSide });
+  const material = new MeshPhysicalMaterial({
+    name: 'gums',
+    color: new Color(0.62, 0.22, 0.22),
+    roughness: 0.38,
+    sheen: 0.3,
+    sheenColor: new Color(0.9, 0.55, 0.55),
+    side: DoubleSide,
+  });
   return addSubsurface(material, { wrap: [0.5, 0.22, 0.2], normalBlur: [0, 0, 0], cavity: 0 });
 }
 
@@ -226,7 +239,8 @@ const SUBSURFACE_LIGHTS = (() => {
       DIRECT_IRRADIANCE,
       `${DIRECT_IRRADIANCE}
 	// Subsurface look: diffuse light wraps past the terminator, red furthest, and uses a normal blurred toward the smooth one.
-	vec3 sfNL = mix( vec3( dot( geometryNormal, directLight.direction ) ), vec3( dot( sfSmoothNormal, directLight.direction ) ), sfNormalBlur );
+	vec3 sfNL = mix( vec3( dot( geometryNormal, directLight.direction ) ),
+		vec3( dot( sfSmoothNormal, directLight.direction ) ), sfNormalBlur );
 	vec3 sfDiffuseIrradiance = saturate( ( sfNL + sfWrap ) / ( 1.0 + sfWrap ) ) * directLight.color;`,
     )
     .replace(SHEEN_COMPENSATION, `${SHEEN_COMPENSATION} sfDiffuseIrradiance *= sheenEnergyComp;`)
@@ -245,16 +259,14 @@ export function addSubsurface<M extends MeshPhysicalMaterial>(material: M, optio
   material.onBeforeCompile = (shader: WebGLProgramParametersWithUniforms) => {
     if (!SUBSURFACE_LIGHTS) throw new Error('the subsurface look does not fit this three.js: its physical lighting chunk changed');
     Object.assign(shader.uniforms, uniforms);
-    shader.fragmentShader = shader.fragmentShader
-      .replace('#include <lights_physical_pars_fragment>', SUBSURFACE_LIGHTS)
-      .replace(
-        '#include <normal_fragment_maps>',
-        `#include <normal_fragment_maps>
+    shader.fragmentShader = shader.fragmentShader.replace('#include <lights_physical_pars_fragment>', SUBSURFACE_LIGHTS).replace(
+      '#include <normal_fragment_maps>',
+      `#include <normal_fragment_maps>
 	sfSmoothNormal = nonPerturbedNormal;
 	#ifdef USE_NORMALMAP_TANGENTSPACE
 		diffuseColor.rgb *= mix( 1.0, texture2D( normalMap, vNormalMapUv ).a, sfCavity );
 	#endif`,
-      );
+    );
   };
   // One program for every material with the look (their uniforms differ, their code does not).
   material.customProgramCacheKey = () => 'softface-subsurface';

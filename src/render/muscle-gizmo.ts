@@ -17,7 +17,8 @@ export interface GizmoDrag {
 }
 
 /** Coordinates are written to 0.01 mm and angles to 0.01°, so that saved rigs stay readable. */
-const round = (x: number, step: number): number => Number((Math.round(x / step) * step).toFixed(Math.max(0, -Math.floor(Math.log10(step)))));
+const round = (x: number, step: number): number =>
+  Number((Math.round(x / step) * step).toFixed(Math.max(0, -Math.floor(Math.log10(step)))));
 const point = (v: Vector3): Vec3 => [round(v.x, 1e-5), round(v.y, 1e-5), round(v.z, 1e-5)];
 
 /**
@@ -37,7 +38,13 @@ export class MuscleGizmo {
   private readonly euler = new Euler();
 
   /** `frame` is the rig's frame in the scene (the muscle glyphs' group); the helper is added to `scene`. */
-  constructor(camera: Camera, domElement: HTMLElement, frame: Object3D, scene: Object3D, private readonly drag: GizmoDrag) {
+  constructor(
+    camera: Camera,
+    domElement: HTMLElement,
+    frame: Object3D,
+    scene: Object3D,
+    private readonly drag: GizmoDrag,
+  ) {
     this.target.name = 'muscle-gizmo-target';
     frame.add(this.target);
     this.controls = new TransformControls(camera, domElement);
@@ -155,7 +162,8 @@ export class MuscleGizmo {
     const s = [Math.abs(t.scale.x), Math.abs(t.scale.y), Math.abs(t.scale.z)].map((k) => Math.max(k, 1e-3));
     const scaled = (v: Vec3): Vec3 => [round(v[0] * s[0], 1e-5), round(v[1] * s[1], 1e-5), round(v[2] * s[2], 1e-5)];
     if (m.type === 'jaw') return { center: at, rotation, size: scaled(m.size) } as Partial<Muscle>;
-    if (m.type === 'sphincter') return { center: at, rotation, radii: scaled(m.radii), innerRadii: scaled(m.innerRadii) } as Partial<Muscle>;
+    if (m.type === 'sphincter')
+      return { center: at, rotation, radii: scaled(m.radii), innerRadii: scaled(m.innerRadii) } as Partial<Muscle>;
     return { center: at, rotation, radii: scaled(m.radii) } as Partial<Muscle>;
   }
 }

@@ -194,7 +194,10 @@ export class MuscleView {
     const c = g.level;
     const selected = g.name === this.highlighted;
     for (const m of g.materials) {
-      m.color.copy(g.base).multiplyScalar(REST_LEVEL + (1 - REST_LEVEL) * c).lerp(this.white, selected ? 0.6 : 0.55 * c);
+      m.color
+        .copy(g.base)
+        .multiplyScalar(REST_LEVEL + (1 - REST_LEVEL) * c)
+        .lerp(this.white, selected ? 0.6 : 0.55 * c);
     }
   }
 
@@ -326,14 +329,19 @@ function mergeLines(loops: BufferGeometry[]): BufferGeometry {
 /** A unit sphere's meridians and parallels as segments: reads as an ellipsoid once scaled, without triangle diagonals. */
 function latLongLines(meridians: number, parallels: number, segments: number): BufferGeometry {
   const p: number[] = [];
-  const point = (polar: number, azimuth: number): number[] => [Math.sin(polar) * Math.cos(azimuth), Math.cos(polar), Math.sin(polar) * Math.sin(azimuth)];
+  const point = (polar: number, azimuth: number): number[] => [
+    Math.sin(polar) * Math.cos(azimuth),
+    Math.cos(polar),
+    Math.sin(polar) * Math.sin(azimuth),
+  ];
   for (let m = 0; m < meridians; m++) {
     const az = (Math.PI * m) / meridians; // each meridian is a full great circle through the poles
     for (let i = 0; i < segments; i++) p.push(...point((2 * Math.PI * i) / segments, az), ...point((2 * Math.PI * (i + 1)) / segments, az));
   }
   for (let k = 1; k <= parallels; k++) {
     const polar = (Math.PI * k) / (parallels + 1);
-    for (let i = 0; i < segments; i++) p.push(...point(polar, (2 * Math.PI * i) / segments), ...point(polar, (2 * Math.PI * (i + 1)) / segments));
+    for (let i = 0; i < segments; i++)
+      p.push(...point(polar, (2 * Math.PI * i) / segments), ...point(polar, (2 * Math.PI * (i + 1)) / segments));
   }
   return new BufferGeometry().setAttribute('position', new Float32BufferAttribute(p, 3));
 }

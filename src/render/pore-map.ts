@@ -50,7 +50,8 @@ export interface PoreMap {
 export function generatePoreMap(options: Partial<PoreMapOptions> = {}): PoreMap {
   const o: Required<PoreMapOptions> = { ...PORE_MAP_DEFAULTS, ...options };
   const n = o.size;
-  if (!Number.isInteger(n) || n < 8 || (n & (n - 1)) !== 0) throw new Error(`generatePoreMap: size must be a power of two of at least 8, got ${n}`);
+  if (!Number.isInteger(n) || n < 8 || (n & (n - 1)) !== 0)
+    throw new Error(`generatePoreMap: size must be a power of two of at least 8, got ${n}`);
   const random = mulberry32(o.seed);
   const mask = n - 1;
   const height = new Float32Array(n * n);
@@ -154,4 +155,3 @@ export function valueNoise(n: number, period: number, random: () => number): Flo
 }
 
 const smooth = (t: number): number => t * t * (3 - 2 * t);
-

@@ -36,7 +36,11 @@ export function skinTint(positions: ArrayLike<number>, uvs: ArrayLike<number>, o
   const o: Required<SkinTintOptions> = { ...SKIN_TINT_DEFAULTS, ...options };
   // Mottling: a few fixed plane waves of 1 to 4 cm, so no two patches of skin have quite the same tone.
   const waves = [
-    [157, 61, -93, 0.3], [-83, 171, 44, 1.7], [212, -140, 118, 2.9], [-260, -97, 201, 4.1], [48, 233, -310, 5.3],
+    [157, 61, -93, 0.3],
+    [-83, 171, 44, 1.7],
+    [212, -140, 118, 2.9],
+    [-260, -97, 201, 4.1],
+    [48, 233, -310, 5.3],
   ];
   const count = positions.length / 3;
   const out = new Float32Array(3 * count);

@@ -35,8 +35,9 @@ export const LIGHT_DEFAULTS: Readonly<Required<LightOptions>> = Object.freeze({
 });
 
 /** Allowed range of each numeric light option (inclusive); panels use the same bounds for their sliders. */
-export const LIGHT_RANGES: Readonly<Record<'ambientIntensity' | 'keyAzimuth' | 'keyElevation' | 'keyIntensity', readonly [number, number]>> =
-  Object.freeze({ ambientIntensity: [0, 3], keyAzimuth: [0, 360], keyElevation: [-90, 90], keyIntensity: [0, 10] });
+export const LIGHT_RANGES: Readonly<
+  Record<'ambientIntensity' | 'keyAzimuth' | 'keyElevation' | 'keyIntensity', readonly [number, number]>
+> = Object.freeze({ ambientIntensity: [0, 3], keyAzimuth: [0, 360], keyElevation: [-90, 90], keyIntensity: [0, 10] });
 
 /**
  * Where the camera looks from, relative to the framing the view chooses for a head (from the front, the whole head in
@@ -82,7 +83,9 @@ export const APPEARANCE_DEFAULTS: Readonly<Required<AppearanceOptions>> = Object
   lashColor: '#1c1612',
 });
 
-export const APPEARANCE_RANGES: Readonly<Partial<Record<keyof AppearanceOptions, readonly [number, number]>>> = Object.freeze({ browDensity: [0, 1] });
+export const APPEARANCE_RANGES: Readonly<Partial<Record<keyof AppearanceOptions, readonly [number, number]>>> = Object.freeze({
+  browDensity: [0, 1],
+});
 
 export const RENDER_DEFAULTS: Readonly<Required<RenderOptions>> = Object.freeze({ wireframe: false, showEyes: true, showTeeth: true });
 
@@ -102,15 +105,18 @@ export function checkOptions<T extends object>(
   defaults: Readonly<Required<T>>,
   ranges?: Readonly<Partial<Record<keyof T, readonly [number, number]>>>,
 ): Partial<T> {
-  if (typeof partial !== 'object' || partial === null || Array.isArray(partial)) throw new Error(`${method}: needs an object of options, got ${show(partial)}`);
+  if (typeof partial !== 'object' || partial === null || Array.isArray(partial))
+    throw new Error(`${method}: needs an object of options, got ${show(partial)}`);
   for (const [key, value] of Object.entries(partial)) {
-    if (!Object.hasOwn(defaults, key)) throw new Error(`${method}: unknown option ${show(key)} (options: ${Object.keys(defaults).join(', ')})`);
+    if (!Object.hasOwn(defaults, key))
+      throw new Error(`${method}: unknown option ${show(key)} (options: ${Object.keys(defaults).join(', ')})`);
     const expected = typeof defaults[key as keyof T];
     if (typeof value !== expected) throw new Error(`${method}: ${key} needs a ${expected}, got ${show(value)}`);
     if (typeof value === 'number') {
       if (!Number.isFinite(value)) throw new Error(`${method}: ${key} needs a finite number, got ${show(value)}`);
       const range = ranges?.[key as keyof T];
-      if (range && (value < range[0] || value > range[1])) throw new Error(`${method}: ${key} must be within ${range[0]}..${range[1]}, got ${value}`);
+      if (range && (value < range[0] || value > range[1]))
+        throw new Error(`${method}: ${key} must be within ${range[0]}..${range[1]}, got ${value}`);
     }
     if (typeof value === 'string' && !COLOUR.test(value)) throw new Error(`${method}: ${key} needs a colour "#rrggbb", got ${show(value)}`);
   }

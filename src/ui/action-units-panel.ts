@@ -30,7 +30,10 @@ export class ActionUnitsPanel {
   private readonly muscleControllers: Controller[] = [];
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+  ) {
     this.folder = parent.addFolder('Action Units');
     this.values = face.getActionUnits();
     for (const au of face.listActionUnits()) {

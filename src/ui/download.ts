@@ -15,5 +15,6 @@ export function downloadBlob(blob: Blob, name: string): void {
 /** A file-name-safe local timestamp, `2025-06-01T14-03-09`. */
 export function fileTimestamp(date = new Date()): string {
   const p = (n: number): string => String(n).padStart(2, '0');
-  return `${date.getFullYear()}-${p(date.getMonth() + 1)}-${p(date.getDate())}T${p(date.getHours())}-${p(date.getMinutes())}-${p(date.getSeconds())}`;
+  const day = `${date.getFullYear()}-${p(date.getMonth() + 1)}-${p(date.getDate())}`;
+  return `${day}T${p(date.getHours())}-${p(date.getMinutes())}-${p(date.getSeconds())}`;
 }

@@ -10,7 +10,8 @@ import { note } from './note';
 
 /** The keys, as the panel's hint shows them. */
 export const EDITOR_HINT =
-  'E: editor on/off (with no muscle selected) · click a muscle to select it · W move, E turn, R scale · Esc: deselect · Ctrl+Z undo, Ctrl+Shift+Z redo';
+  'E: editor on/off (with no muscle selected) · click a muscle to select it ' +
+  '· W move, E turn, R scale · Esc: deselect · Ctrl+Z undo, Ctrl+Shift+Z redo';
 
 /** What the rig status line says about an edited rig, by autosave status. */
 const STATUS: Record<EditorState['autosave'], string> = {
@@ -54,7 +55,11 @@ export class EditorPanel {
   private readonly files: FileImport;
 
   /** `dropTarget` takes rig files dropped on it (the face's element). */
-  constructor(parent: GUI, private readonly face: FaceHandle, dropTarget?: HTMLElement) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+    dropTarget?: HTMLElement,
+  ) {
     const editor = face.describeEditor();
     this.state = {
       editor: editor.on,
@@ -72,12 +77,30 @@ export class EditorPanel {
     };
     this.folder = parent.addFolder('Editor');
     const s = this.state;
-    this.add(this.folder.add(s, 'editor').name('muscle editor').onChange((v: boolean) => face.setEditor(v)), 'editor');
+    this.add(
+      this.folder
+        .add(s, 'editor')
+        .name('muscle editor')
+        .onChange((v: boolean) => face.setEditor(v)),
+      'editor',
+    );
     const hint = note('editor-hint', { opacity: '0.75' });
     hint.textContent = EDITOR_HINT;
     this.folder.$children.append(hint);
-    this.add(this.folder.add(s, 'mode', ['translate', 'rotate', 'scale']).name('gizmo').onChange((v: GizmoMode) => face.setGizmoMode(v)), 'gizmo-mode');
-    this.add(this.folder.add(s, 'mirror').name('mirror edits').onChange((v: boolean) => face.setMirrorEdits(v)), 'mirror-edits');
+    this.add(
+      this.folder
+        .add(s, 'mode', ['translate', 'rotate', 'scale'])
+        .name('gizmo')
+        .onChange((v: GizmoMode) => face.setGizmoMode(v)),
+      'gizmo-mode',
+    );
+    this.add(
+      this.folder
+        .add(s, 'mirror')
+        .name('mirror edits')
+        .onChange((v: boolean) => face.setMirrorEdits(v)),
+      'mirror-edits',
+    );
     this.add(this.folder.add(s, 'newType', ['linear', 'sphincter', 'lid', 'jaw']).name('new muscle type'), 'new-type');
     this.add(this.folder.add(s, 'add').name('add muscle (in front of the view)'), 'add-muscle');
     this.add(this.folder.add(s, 'mirrorLeft').name('mirror left side → right'), 'mirror-left');
@@ -95,7 +118,10 @@ export class EditorPanel {
     // A head (.glb, .gltf, .obj) dropped on the face is the Head folder's to load.
     this.files = new FileImport(this.folder, 'import-file', 'editor-message', { color: '#ff8a80' })
       .accept('.json,application/json')
-      .onText((text, file) => face.setRig(text, file.name), (file) => `imported ${file.name}`)
+      .onText(
+        (text, file) => face.setRig(text, file.name),
+        (file) => `imported ${file.name}`,
+      )
       .dropOn(dropTarget, (files) => files.length > 0 && !isHeadDrop(files));
     this.muscle = new MusclePanel(this.folder, face);
     this.refresh();

@@ -22,11 +22,18 @@ export class ExportPanel {
   private running: AbortController | null = null;
   private disposed = false;
 
-  constructor(parent: GUI, private readonly face: FaceHandle) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+  ) {
     this.folder = parent.addFolder('Export');
     const s = this.state;
-    named(this.folder.add(s, 'actionUnits').name('action units'), 'gltf-action-units').domElement.title = 'Action Unit ids, comma-separated (AU12, AU12L, AU17)';
-    named(this.folder.add(s, 'presets').name('presets'), 'gltf-presets').domElement.title = `preset names, comma-separated (${face.listPresets().map((p) => p.name).join(', ')})`;
+    named(this.folder.add(s, 'actionUnits').name('action units'), 'gltf-action-units').domElement.title =
+      'Action Unit ids, comma-separated (AU12, AU12L, AU17)';
+    named(this.folder.add(s, 'presets').name('presets'), 'gltf-presets').domElement.title = `preset names, comma-separated (${face
+      .listPresets()
+      .map((p) => p.name)
+      .join(', ')})`;
     named(this.folder.add(s, 'timeline').name('timeline animation'), 'gltf-timeline');
     named(this.folder.add(s, 'fps', 1, 60, 1).name('animation fps'), 'gltf-fps');
     this.button = named(this.folder.add(s, 'run').name(`export ${GLTF_FILE_NAME}`), 'gltf-export');

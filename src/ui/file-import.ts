@@ -24,7 +24,12 @@ export class FileImport {
   private drops: (files: FileList) => boolean = () => false;
 
   /** Appends the picker (named `inputName`) and the message line (named `messageName`, styled with `style`) to the folder. */
-  constructor(private readonly folder: GUI, inputName: string, messageName: string, style: Partial<CSSStyleDeclaration> = {}) {
+  constructor(
+    private readonly folder: GUI,
+    inputName: string,
+    messageName: string,
+    style: Partial<CSSStyleDeclaration> = {},
+  ) {
     this.input = document.createElement('input');
     Object.assign(this.input, { type: 'file', hidden: true });
     this.input.dataset.control = inputName;

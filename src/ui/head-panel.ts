@@ -38,7 +38,11 @@ export class HeadPanel {
   private unplaced: File[] | undefined;
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle, dropTarget?: HTMLElement) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+    dropTarget?: HTMLElement,
+  ) {
     this.folder = parent.addFolder('Head');
     this.status = note('head-status', { opacity: '0.85' });
     this.folder.$children.append(this.status);

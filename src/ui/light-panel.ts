@@ -13,7 +13,10 @@ export class LightPanel {
   private readonly controllers: Controller[] = [];
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+  ) {
     this.state = face.getLight();
     this.folder = parent.addFolder('Light');
     const set = (key: keyof LightOptions) => (value: number | string) => face.setLight({ [key]: value });

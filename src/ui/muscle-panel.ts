@@ -69,7 +69,10 @@ export class MusclePanel {
   private readonly message: HTMLDivElement;
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+  ) {
     this.folder = parent.addFolder('Muscle');
     this.folder.domElement.dataset.control = 'muscle-folder';
     this.message = document.createElement('div');
@@ -119,14 +122,37 @@ export class MusclePanel {
     this.fill(muscle);
     const s = this.state;
     const f = this.folder;
-    this.add(f.add(s, 'name').onFinishChange((v: string) => this.apply(() => this.face.renameMuscle(this.shown!, v))), 'muscle-name');
-    this.add(f.add(s, 'type').disable(), 'muscle-type');
-    this.add(f.add(s, 'side', ['left', 'right', 'mid']).onChange((v: string) => this.apply(() => this.face.updateMuscle(this.shown!, { side: v } as Partial<Muscle>))), 'muscle-side');
-    const units = [NO_UNIT, ...ACTION_UNITS.map((a) => a.id)];
-    this.add(f.add(s, 'actionUnit', units).name('Action Unit').onChange(() => this.assign()), 'muscle-action-unit');
-    this.add(f.add(s, 'weight', 0.05, 2, 0.05).name('AU weight').onFinishChange(() => this.assign()), 'muscle-weight');
     this.add(
-      f.add(s, 'part', gizmoParts(muscle)).name('gizmo on').onChange((v: string) => this.face.setGizmoPart(v as never)),
+      f.add(s, 'name').onFinishChange((v: string) => this.apply(() => this.face.renameMuscle(this.shown!, v))),
+      'muscle-name',
+    );
+    this.add(f.add(s, 'type').disable(), 'muscle-type');
+    this.add(
+      f
+        .add(s, 'side', ['left', 'right', 'mid'])
+        .onChange((v: string) => this.apply(() => this.face.updateMuscle(this.shown!, { side: v } as Partial<Muscle>))),
+      'muscle-side',
+    );
+    const units = [NO_UNIT, ...ACTION_UNITS.map((a) => a.id)];
+    this.add(
+      f
+        .add(s, 'actionUnit', units)
+        .name('Action Unit')
+        .onChange(() => this.assign()),
+      'muscle-action-unit',
+    );
+    this.add(
+      f
+        .add(s, 'weight', 0.05, 2, 0.05)
+        .name('AU weight')
+        .onFinishChange(() => this.assign()),
+      'muscle-weight',
+    );
+    this.add(
+      f
+        .add(s, 'part', gizmoParts(muscle))
+        .name('gizmo on')
+        .onChange((v: string) => this.face.setGizmoPart(v as never)),
       'muscle-part',
     );
     s.duplicate = () => this.apply(() => this.face.selectMuscle(this.face.duplicateMuscle(this.shown!)));
@@ -136,18 +162,51 @@ export class MusclePanel {
     this.add(f.add(s, 'remove').name('delete'), 'muscle-delete');
     if (/-[lr]$/.test(muscle.name)) this.add(f.add(s, 'mirror').name('mirror to twin'), 'muscle-mirror');
     s.clearBrush = () => this.apply(() => this.face.updateMuscle(this.shown!, { brush: undefined }));
-    this.add(f.add(s, 'brushMode', ['off', 'add', 'remove']).name('vertex brush').onChange((v: 'off' | 'add' | 'remove') => this.face.setBrush({ mode: v })), 'brush-mode');
-    this.add(f.add(s, 'brushRadius', 1, 50, 0.5).name('brush radius mm').onChange((v: number) => this.face.setBrush({ radius: v / 1000 })), 'brush-radius');
+    this.add(
+      f
+        .add(s, 'brushMode', ['off', 'add', 'remove'])
+        .name('vertex brush')
+        .onChange((v: 'off' | 'add' | 'remove') => this.face.setBrush({ mode: v })),
+      'brush-mode',
+    );
+    this.add(
+      f
+        .add(s, 'brushRadius', 1, 50, 0.5)
+        .name('brush radius mm')
+        .onChange((v: number) => this.face.setBrush({ radius: v / 1000 })),
+      'brush-radius',
+    );
     this.add(f.add(s, 'clearBrush').name('clear brush'), 'brush-clear');
-    this.add(f.add(s, 'preview', 0, 1, 0.01).name('preview contraction').onChange((v: number) => this.face.setPreviewContraction(v)), 'muscle-preview');
+    this.add(
+      f
+        .add(s, 'preview', 0, 1, 0.01)
+        .name('preview contraction')
+        .onChange((v: number) => this.face.setPreviewContraction(v)),
+      'muscle-preview',
+    );
     for (const [key, label, min, max, step] of SCALARS[muscle.type]) {
       if (!(key in s)) continue;
-      this.add(f.add(s, key, min, max, step).name(label).onChange(() => this.drag(key)).onFinishChange(() => this.finish()), `muscle-${key}`);
+      this.add(
+        f
+          .add(s, key, min, max, step)
+          .name(label)
+          .onChange(() => this.drag(key))
+          .onFinishChange(() => this.finish()),
+        `muscle-${key}`,
+      );
     }
     for (const [key, label, step] of VECTORS[muscle.type]) {
       ['x', 'y', 'z'].forEach((axis) => {
         const field = `${key}.${axis}`;
-        this.add(f.add(s, field).step(step).name(`${label} ${axis}`).onChange(() => this.drag(key)).onFinishChange(() => this.finish()), `muscle-${key}-${axis}`);
+        this.add(
+          f
+            .add(s, field)
+            .step(step)
+            .name(`${label} ${axis}`)
+            .onChange(() => this.drag(key))
+            .onFinishChange(() => this.finish()),
+          `muscle-${key}-${axis}`,
+        );
       });
     }
     // The message stays last, under the fields.
@@ -161,7 +220,13 @@ export class MusclePanel {
     const link = this.face
       .getRig()
       .actionUnits.flatMap((a) => a.muscles.filter((l) => l.muscle === muscle.name).map((l) => ({ id: a.id, weight: l.weight })))[0];
-    Object.assign(s, { name: muscle.name, type: muscle.type, side: muscle.side, actionUnit: link?.id ?? NO_UNIT, weight: link?.weight ?? 1 });
+    Object.assign(s, {
+      name: muscle.name,
+      type: muscle.type,
+      side: muscle.side,
+      actionUnit: link?.id ?? NO_UNIT,
+      weight: link?.weight ?? 1,
+    });
     s.part = editor.part ?? gizmoParts(muscle)[0];
     s.brushMode = editor.brush.mode;
     s.brushRadius = editor.brush.radius * 1000;

@@ -40,14 +40,31 @@ interface Outputs {
  */
 export class OutputsPanel {
   readonly folder: GUI;
-  private readonly outputs: Outputs = { fps: 0, solverMs: 0, vertices: 0, edges: 0, position: 0, length: 0, muscle: 0, bending: 0, collision: 0, mode: '', workers: 0 };
+  private readonly outputs: Outputs = {
+    fps: 0,
+    solverMs: 0,
+    vertices: 0,
+    edges: 0,
+    position: 0,
+    length: 0,
+    muscle: 0,
+    bending: 0,
+    collision: 0,
+    mode: '',
+    workers: 0,
+  };
   private readonly controllers: Controller[] = [];
   private frames = 0;
   private since = performance.now();
   private readonly stopFrames: () => void;
   private readonly timer: ReturnType<typeof setInterval>;
 
-  constructor(parent: GUI, private readonly face: FaceHandle, frames: FrameSource, options: OutputsPanelOptions = {}) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+    frames: FrameSource,
+    options: OutputsPanelOptions = {},
+  ) {
     const o = { ...OUTPUTS_PANEL_DEFAULTS, ...options };
     this.folder = parent.addFolder('Outputs');
     const show = (key: keyof Outputs, name: string, decimals?: number): void => {

@@ -10,7 +10,10 @@ export class PresetsPanel {
   private readonly controllers: Controller[] = [];
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+  ) {
     this.folder = parent.addFolder('Presets');
     for (const preset of face.listPresets()) {
       this.weights[preset.name] = preset.weight;

@@ -14,10 +14,14 @@ export interface RenderingPanelOptions {
   maxIterations?: number;
 }
 
-const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations' | 'onResolution'>> = { maxIterations: 20, onResolution: null };
+const RENDERING_PANEL_DEFAULTS: Required<Pick<RenderingPanelOptions, 'maxIterations' | 'onResolution'>> = {
+  maxIterations: 20,
+  onResolution: null,
+};
 
 /**
- * The Rendering folder: solid or wireframe, eyes, teeth, the brows and lashes (switches, colours, density), the head's resolution, the solver's length and position
+ * The Rendering folder: solid or wireframe, eyes, teeth, the brows and lashes (switches, colours, density), the head's resolution, the
+ * solver's length and position
  * iteration counts, the eye simulation, every muscle shown over the skin, and a button that saves the picture as a PNG.
  */
 export class RenderingPanel {
@@ -41,7 +45,11 @@ export class RenderingPanel {
   private readonly controllers: Controller[] = [];
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle, options: RenderingPanelOptions) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+    options: RenderingPanelOptions,
+  ) {
     const o = { ...RENDERING_PANEL_DEFAULTS, ...options };
     const skin = face.getSkinParameters();
     this.state = {
@@ -56,26 +64,96 @@ export class RenderingPanel {
     };
     this.folder = parent.addFolder('Rendering');
     const s = this.state;
-    this.add(this.folder.add(s, 'wireframe').onChange((v: boolean) => face.setRenderOptions({ wireframe: v })), 'wireframe');
-    this.add(this.folder.add(s, 'showEyes').name('show eyes').onChange((v: boolean) => face.setRenderOptions({ showEyes: v })), 'show-eyes');
-    this.add(this.folder.add(s, 'showTeeth').name('show teeth').onChange((v: boolean) => face.setRenderOptions({ showTeeth: v })), 'show-teeth');
-    this.add(this.folder.add(s, 'brows').name('eyebrows').onChange((v: boolean) => face.setAppearance({ brows: v })), 'brows');
-    this.add(this.folder.addColor(s, 'browColor').name('brow colour').onChange((v: string) => face.setAppearance({ browColor: v })), 'brow-color');
-    this.add(this.folder.add(s, 'browDensity', 0, 1, 0.05).name('brow density').onChange((v: number) => face.setAppearance({ browDensity: v })), 'brow-density');
-    this.add(this.folder.add(s, 'lashes').name('eyelashes').onChange((v: boolean) => face.setAppearance({ lashes: v })), 'lashes');
-    this.add(this.folder.addColor(s, 'lashColor').name('lash colour').onChange((v: string) => face.setAppearance({ lashColor: v })), 'lash-color');
-    const onResolution = o.onResolution;
-    if (onResolution) this.add(this.folder.add(s, 'resolution', [...RESOLUTIONS]).name('mesh resolution').onChange((r: Resolution) => onResolution(r)), 'resolution');
     this.add(
-      this.folder.add(s, 'lengthIterations', 1, o.maxIterations, 1).name('length iterations').onChange((n: number) => face.setSkinParameters({ lengthIterations: n })),
+      this.folder.add(s, 'wireframe').onChange((v: boolean) => face.setRenderOptions({ wireframe: v })),
+      'wireframe',
+    );
+    this.add(
+      this.folder
+        .add(s, 'showEyes')
+        .name('show eyes')
+        .onChange((v: boolean) => face.setRenderOptions({ showEyes: v })),
+      'show-eyes',
+    );
+    this.add(
+      this.folder
+        .add(s, 'showTeeth')
+        .name('show teeth')
+        .onChange((v: boolean) => face.setRenderOptions({ showTeeth: v })),
+      'show-teeth',
+    );
+    this.add(
+      this.folder
+        .add(s, 'brows')
+        .name('eyebrows')
+        .onChange((v: boolean) => face.setAppearance({ brows: v })),
+      'brows',
+    );
+    this.add(
+      this.folder
+        .addColor(s, 'browColor')
+        .name('brow colour')
+        .onChange((v: string) => face.setAppearance({ browColor: v })),
+      'brow-color',
+    );
+    this.add(
+      this.folder
+        .add(s, 'browDensity', 0, 1, 0.05)
+        .name('brow density')
+        .onChange((v: number) => face.setAppearance({ browDensity: v })),
+      'brow-density',
+    );
+    this.add(
+      this.folder
+        .add(s, 'lashes')
+        .name('eyelashes')
+        .onChange((v: boolean) => face.setAppearance({ lashes: v })),
+      'lashes',
+    );
+    this.add(
+      this.folder
+        .addColor(s, 'lashColor')
+        .name('lash colour')
+        .onChange((v: string) => face.setAppearance({ lashColor: v })),
+      'lash-color',
+    );
+    const onResolution = o.onResolution;
+    if (onResolution)
+      this.add(
+        this.folder
+          .add(s, 'resolution', [...RESOLUTIONS])
+          .name('mesh resolution')
+          .onChange((r: Resolution) => onResolution(r)),
+        'resolution',
+      );
+    this.add(
+      this.folder
+        .add(s, 'lengthIterations', 1, o.maxIterations, 1)
+        .name('length iterations')
+        .onChange((n: number) => face.setSkinParameters({ lengthIterations: n })),
       'length-iterations',
     );
     this.add(
-      this.folder.add(s, 'positionIterations', 1, o.maxIterations, 1).name('position iterations').onChange((n: number) => face.setSkinParameters({ positionIterations: n })),
+      this.folder
+        .add(s, 'positionIterations', 1, o.maxIterations, 1)
+        .name('position iterations')
+        .onChange((n: number) => face.setSkinParameters({ positionIterations: n })),
       'position-iterations',
     );
-    this.add(this.folder.add(s, 'eyeSimulation').name('eye simulation').onChange((v: boolean) => face.setEyeSimulation(v)), 'eye-simulation');
-    this.add(this.folder.add(s, 'showAllMuscles').name('show all muscles').onChange((v: boolean) => face.setMuscleDisplay({ all: v })), 'show-all-muscles');
+    this.add(
+      this.folder
+        .add(s, 'eyeSimulation')
+        .name('eye simulation')
+        .onChange((v: boolean) => face.setEyeSimulation(v)),
+      'eye-simulation',
+    );
+    this.add(
+      this.folder
+        .add(s, 'showAllMuscles')
+        .name('show all muscles')
+        .onChange((v: boolean) => face.setMuscleDisplay({ all: v })),
+      'show-all-muscles',
+    );
     this.add(this.folder.add(s, 'savePNG').name('save PNG'), 'save-png');
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }

@@ -39,7 +39,10 @@ export class TimelinePanel {
   private readonly files: FileImport;
   private readonly unsubscribe: () => void;
 
-  constructor(parent: GUI, private readonly face: FaceHandle) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+  ) {
     this.state = {
       play: () => this.files.attempt(() => (face.timelineState().playing ? face.pause() : face.play())),
       time: 0,
@@ -64,7 +67,10 @@ export class TimelinePanel {
         .onChange((t: number) => this.files.attempt(() => face.timelineState().loaded && face.seek(t))),
       'timeline-time',
     );
-    this.add(this.folder.add(s, 'loop').onChange((on: boolean) => this.edit((t) => (t.loop = on))), 'timeline-loop');
+    this.add(
+      this.folder.add(s, 'loop').onChange((on: boolean) => this.edit((t) => (t.loop = on))),
+      'timeline-loop',
+    );
     this.list = note('timeline-keys', { opacity: '0.85', whiteSpace: 'pre-wrap', fontFamily: 'monospace' });
     this.folder.$children.append(this.list);
     const targets = [
@@ -82,7 +88,10 @@ export class TimelinePanel {
     this.add(this.folder.add(s, 'importTimeline').name('import timeline'), 'timeline-import');
     this.files = new FileImport(this.folder, 'timeline-file', 'timeline-message', { color: '#ff8a80' })
       .accept('.json,application/json')
-      .onText((text, file) => face.setTimeline(text, file.name), (file) => `imported ${file.name}`);
+      .onText(
+        (text, file) => face.setTimeline(text, file.name),
+        (file) => `imported ${file.name}`,
+      );
     this.refresh(true);
     this.unsubscribe = face.onChange((change) => this.changed(change));
   }
@@ -160,10 +169,15 @@ function describe(t: Timeline | null, duration: number): string {
   if (!t) return 'no timeline';
   const lines = [`${seconds(duration)}${t.loop ? ', looping' : ''}`];
   for (const [target, track] of Object.entries(t.tracks)) {
-    lines.push(`${target}: ${track.keys.map((k) => `${seconds(k.time)} ${round(k.value)}${k.easing && k.easing !== 'linear' ? ` ${k.easing}` : ''}`).join(' → ')}`);
+    const key = (k: (typeof track.keys)[number]): string =>
+      `${seconds(k.time)} ${round(k.value)}${k.easing && k.easing !== 'linear' ? ` ${k.easing}` : ''}`;
+    lines.push(`${target}: ${track.keys.map(key).join(' → ')}`);
   }
   for (const a of t.actions) {
-    lines.push(`${a.target} ${round(a.intensity)} at ${seconds(a.start)}: onset ${seconds(a.onset)}, apex ${seconds(a.apex)}, offset ${seconds(a.offset)}`);
+    lines.push(
+      `${a.target} ${round(a.intensity)} at ${seconds(a.start)}: onset ` +
+        `${seconds(a.onset)}, apex ${seconds(a.apex)}, offset ${seconds(a.offset)}`,
+    );
   }
   if (lines.length === 1) lines.push('no keys or actions yet');
   return lines.join('\n');

@@ -33,7 +33,10 @@ export class VideoPanel {
   private abort: AbortController | undefined;
   private disposed = false;
 
-  constructor(parent: GUI, private readonly face: FaceHandle) {
+  constructor(
+    parent: GUI,
+    private readonly face: FaceHandle,
+  ) {
     this.state = {
       fps: VIDEO_DEFAULTS.fps,
       size: `${VIDEO_DEFAULTS.width} x ${VIDEO_DEFAULTS.height}`,

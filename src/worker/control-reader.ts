@@ -10,7 +10,12 @@ import {
 import type { SolverHost } from './solver-host';
 
 /** Atomics.waitAsync (ES2024), typed here because the project's lib is ES2022. */
-type WaitAsync = (typed: Int32Array, index: number, value: number, timeout?: number) => { async: true; value: Promise<string> } | { async: false; value: string };
+type WaitAsync = (
+  typed: Int32Array,
+  index: number,
+  value: number,
+  timeout?: number,
+) => { async: true; value: Promise<string> } | { async: false; value: string };
 
 /** How often a solver without Atomics.waitAsync looks for new inputs while it sleeps. */
 const POLL_MS = 4;

@@ -1,4 +1,11 @@
-import { SKIN_DEFAULTS, checkMuscleTargets, clearMuscleInputs, validateParameters, writeMuscleTargets, type SkinParameters } from '../core/solver';
+import {
+  SKIN_DEFAULTS,
+  checkMuscleTargets,
+  clearMuscleInputs,
+  validateParameters,
+  writeMuscleTargets,
+  type SkinParameters,
+} from '../core/solver';
 import {
   CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,
@@ -82,10 +89,13 @@ export class InputStaging {
     const C = this.control.contractions;
     const count = this.muscleCount;
     if (!isArrayLike(values) || values.length !== count) {
-      throw new Error(`setContractions: expected ${count} contractions (one per rig muscle), got ${isArrayLike(values) ? values.length : values}`);
+      throw new Error(
+        `setContractions: expected ${count} contractions (one per rig muscle), got ${isArrayLike(values) ? values.length : values}`,
+      );
     }
     for (let i = 0; i < values.length; i++) {
-      if (typeof values[i] !== 'number' || !Number.isFinite(values[i])) throw new Error(`setContractions: contraction ${i} is not a finite number: ${values[i]}`);
+      if (typeof values[i] !== 'number' || !Number.isFinite(values[i]))
+        throw new Error(`setContractions: contraction ${i} is not a finite number: ${values[i]}`);
     }
     this.begin();
     for (let i = 0; i < values.length; i++) C[i] = Math.min(1, Math.max(0, values[i]));
@@ -98,7 +108,8 @@ export class InputStaging {
   setParameters(partial: Partial<SkinParameters>): void {
     if (typeof partial !== 'object' || partial === null) throw new Error(`skin parameters must be an object, got ${partial}`);
     for (const name of Object.keys(partial)) {
-      if (!(name in PARAMETER_INDEX)) throw new Error(`unknown skin parameter "${name}" (known: ${Object.keys(PARAMETER_INDEX).join(', ')})`);
+      if (!(name in PARAMETER_INDEX))
+        throw new Error(`unknown skin parameter "${name}" (known: ${Object.keys(PARAMETER_INDEX).join(', ')})`);
     }
     const next = { ...this.current, ...partial };
     validateParameters(next);

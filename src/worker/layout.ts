@@ -3,7 +3,8 @@
  * sides agree on where every value lives (the style of three-mesh-bvh's buffer layouts).
  *
  * Control block (main thread writes, solver reads): an Int32 header, the skin parameters as Float64 (so a parameter
- * reaches the solver exactly as given, as it does in `main` mode), then the muscle targets and weights (along the surface and along the normal) as Float32
+ * reaches the solver exactly as given, as it does in `main` mode), then the muscle targets and weights (along the surface and along the
+ * normal) as Float32
  * (the solver's own precision).
  *
  * Output block (solver writes, main thread reads): an Int32 header, then two frame slots. Each slot has its own
@@ -210,7 +211,13 @@ export interface FrameHeader {
 }
 
 /** Where each constraint count sits among a slot's constraint words (and in a host's count array). */
-export const CONSTRAINT_INDEX: Readonly<Record<keyof ConstraintCounts, number>> = { position: 0, length: 1, muscle: 2, bending: 3, collision: 4 };
+export const CONSTRAINT_INDEX: Readonly<Record<keyof ConstraintCounts, number>> = {
+  position: 0,
+  length: 1,
+  muscle: 2,
+  bending: 3,
+  collision: 4,
+};
 export const CONSTRAINT_KINDS = Object.keys(CONSTRAINT_INDEX) as (keyof ConstraintCounts)[];
 
 export function writeFrameHeader(slot: FrameSlot, h: FrameHeader, constraints: Int32Array): void {
@@ -238,9 +245,16 @@ export function slotConstraints(slot: FrameSlot): ConstraintCounts {
 
 /** The bounds of the skin in this slot: min xyz, then max xyz. */
 export function writeSlotBounds(slot: FrameSlot, positions: Float32Array): void {
-  let x0 = Infinity, y0 = Infinity, z0 = Infinity, x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
+  let x0 = Infinity,
+    y0 = Infinity,
+    z0 = Infinity,
+    x1 = -Infinity,
+    y1 = -Infinity,
+    z1 = -Infinity;
   for (let i = 0; i < positions.length; i += 3) {
-    const x = positions[i], y = positions[i + 1], z = positions[i + 2];
+    const x = positions[i],
+      y = positions[i + 1],
+      z = positions[i + 2];
     if (x < x0) x0 = x;
     if (x > x1) x1 = x;
     if (y < y0) y0 = y;

@@ -1,5 +1,13 @@
 import type { SolverBackend } from './backend';
-import { OUTPUT_COMPLETED_SLOT, OUTPUT_FRAME_SEQ, frameSlot, outputHeader, slotByteOffset, type FrameSlot, type SlotLayout } from './layout';
+import {
+  OUTPUT_COMPLETED_SLOT,
+  OUTPUT_FRAME_SEQ,
+  frameSlot,
+  outputHeader,
+  slotByteOffset,
+  type FrameSlot,
+  type SlotLayout,
+} from './layout';
 import type { RigEdit, SolverClock } from './protocol';
 import type { WorkerConnection } from './worker-connection';
 

@@ -1,4 +1,13 @@
-import { OUTPUT_COMPLETED_SLOT, OUTPUT_FRAME_SEQ, frameSlot, outputByteLength, outputHeader, slotByteOffset, type FrameSlot, type SlotLayout } from './layout';
+import {
+  OUTPUT_COMPLETED_SLOT,
+  OUTPUT_FRAME_SEQ,
+  frameSlot,
+  outputByteLength,
+  outputHeader,
+  slotByteOffset,
+  type FrameSlot,
+  type SlotLayout,
+} from './layout';
 import type { SolverHost } from './solver-host';
 
 /**

@@ -117,7 +117,8 @@ export class SkinSimulation {
     const parameters = { ...SKIN_DEFAULTS, ...options.parameters };
     validateParameters(parameters);
     const mode = options.mode ?? (crossOriginIsolated ? 'shared' : 'transfer');
-    if (mode === 'shared' && typeof SharedArrayBuffer === 'undefined') throw new Error("solver mode 'shared' needs a cross-origin isolated page");
+    if (mode === 'shared' && typeof SharedArrayBuffer === 'undefined')
+      throw new Error("solver mode 'shared' needs a cross-origin isolated page");
     const renderCount = options.renderPositions.length / 3;
     const colliders = options.colliders ?? [];
     const muscles = options.muscles ?? [];
@@ -146,7 +147,15 @@ export class SkinSimulation {
     const cLayout = controlLayout(ready.vertexCount, contractionCapacity(muscles.length));
     if (mode === 'shared') {
       const backend = new SharedBackend(connection, ready.output!, layout);
-      return new SkinSimulation(backend, controlViews(ready.control!, cLayout), ready.rest, ready.triangles, ready.edgeCount, renderCount, muscles.length);
+      return new SkinSimulation(
+        backend,
+        controlViews(ready.control!, cLayout),
+        ready.rest,
+        ready.triangles,
+        ready.edgeCount,
+        renderCount,
+        muscles.length,
+      );
     }
     const control = controlViews(new ArrayBuffer(cLayout.byteLength), cLayout);
     initControl(control, ready.rest, parameters);
@@ -185,7 +194,8 @@ export class SkinSimulation {
    */
   updateMuscle(index: number, muscle: Muscle): void {
     this.checkAlive();
-    if (!Number.isInteger(index) || index < 0 || index >= this.muscleCount) throw new Error(`updateMuscle: index ${index} is not one of the rig's ${this.muscleCount} muscles`);
+    if (!Number.isInteger(index) || index < 0 || index >= this.muscleCount)
+      throw new Error(`updateMuscle: index ${index} is not one of the rig's ${this.muscleCount} muscles`);
     validateMuscle(muscle);
     this.sendRigEdit({ index, muscle }, this.muscleCount);
   }
@@ -233,7 +243,9 @@ export class SkinSimulation {
       const slot = this.backend.latest();
       if (slotAppliedInput(slot) >= seq && slotSleeping(slot)) return;
       if (performance.now() - start > timeoutMs) {
-        throw new Error(`the skin did not settle within ${timeoutMs} ms (${slotFrames(slot)} frames solved, last in ${slotSolveMs(slot).toFixed(1)} ms)`);
+        throw new Error(
+          `the skin did not settle within ${timeoutMs} ms (${slotFrames(slot)} frames solved, last in ${slotSolveMs(slot).toFixed(1)} ms)`,
+        );
       }
       // In `main` mode nothing else may be stepping the solver (a hidden page gets no animation frames).
       this.backend.advance(MAIN_THREAD_BUDGET_MS);

@@ -1,6 +1,7 @@
 /**
  * The skin worker: builds the topology and the solver, then solves a frame whenever the skin is awake and waits for
- * inputs while it sleeps; on the stepped clock (a recorder's) it solves only the frames each `run` message asks for. `shared` mode reads inputs from and writes frames to SharedArrayBuffers; `transfer` mode
+ * inputs while it sleeps; on the stepped clock (a recorder's) it solves only the frames each `run` message asks for. `shared` mode reads
+ * inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
 import { createBoard, PartnerTimeoutError } from '../core/partner-board';
@@ -39,7 +40,8 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
   try {
     if (m.type === 'init') init(m);
     else if (m.type === 'inputs') {
-      const muscles = m.targets && m.weights && m.normalWeights ? { targets: m.targets, weights: m.weights, normalWeights: m.normalWeights } : null;
+      const muscles =
+        m.targets && m.weights && m.normalWeights ? { targets: m.targets, weights: m.weights, normalWeights: m.normalWeights } : null;
       host?.apply(m.seq, muscles, m.parameters ?? null, m.contractions ?? null);
       schedule();
     } else if (m.type === 'rig') {

@@ -7,7 +7,15 @@ import type { Muscle } from '../core/rig-types';
 import type { Memory } from '../core/memory';
 import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
 import { buildTopology, describeTopology, type SkinTopology } from '../core/topology';
-import { CONSTRAINT_INDEX, CONSTRAINT_KINDS, readParameters, writeFrameHeader, writeSlotBounds, type FrameHeader, type FrameSlot } from './layout';
+import {
+  CONSTRAINT_INDEX,
+  CONSTRAINT_KINDS,
+  readParameters,
+  writeFrameHeader,
+  writeSlotBounds,
+  type FrameHeader,
+  type FrameSlot,
+} from './layout';
 
 /** What a solver host is built from: the skin's render mesh (head space), the colliders and the parameters. */
 export interface SolverHostInput {
@@ -72,7 +80,12 @@ export class SolverHost {
   constructor(input: SolverHostInput) {
     this.topology = buildTopology(input.renderPositions, input.indices);
     console.info(describeTopology(this.topology));
-    this.solver = new SkinSolver(this.topology, { parameters: input.parameters, colliders: input.colliders, activeRegion: input.activeRegion, memory: input.memory });
+    this.solver = new SkinSolver(this.topology, {
+      parameters: input.parameters,
+      colliders: input.colliders,
+      activeRegion: input.activeRegion,
+      memory: input.memory,
+    });
     this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
     this.colliders = input.colliders;
     this.activeRegion = input.activeRegion;
@@ -149,7 +162,12 @@ export class SolverHost {
     rig.compute(new Float32Array(rig.muscles.length).fill(WARM_UP_CONTRACTION), buffers);
     yield;
     const colliders = structuredClone(this.colliders);
-    const solver = new SkinSolver(this.topology, { parameters: this.solver.parameters(), buffers, colliders, activeRegion: this.activeRegion });
+    const solver = new SkinSolver(this.topology, {
+      parameters: this.solver.parameters(),
+      buffers,
+      colliders,
+      activeRegion: this.activeRegion,
+    });
     solver.updateMuscles();
     for (let k = 0; k < WARM_UP_FRAMES; k++) {
       yield;

@@ -32,8 +32,13 @@ export class TransferBackend implements SolverBackend {
     const normalWeights = muscles ? this.control.normalWeights.slice() : undefined;
     const params = parameters ? this.control.parameters.slice() : undefined;
     const muscleContractions = contractions ? this.control.contractions.slice() : undefined;
-    const transfer = [targets?.buffer, weights?.buffer, normalWeights?.buffer, params?.buffer, muscleContractions?.buffer].filter((b): b is ArrayBuffer => b !== undefined);
-    this.connection.post({ type: 'inputs', seq, targets, weights, normalWeights, parameters: params, contractions: muscleContractions }, transfer);
+    const transfer = [targets?.buffer, weights?.buffer, normalWeights?.buffer, params?.buffer, muscleContractions?.buffer].filter(
+      (b): b is ArrayBuffer => b !== undefined,
+    );
+    this.connection.post(
+      { type: 'inputs', seq, targets, weights, normalWeights, parameters: params, contractions: muscleContractions },
+      transfer,
+    );
   }
 
   editRig(revision: number, edit: RigEdit): void {

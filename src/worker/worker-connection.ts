@@ -15,8 +15,7 @@ export class WorkerConnection {
     else if (m.type === 'ran') {
       this.runs.get(m.id)?.resolve(m.frames);
       this.runs.delete(m.id);
-    }
-    else if (m.type === 'error') this.fail(new Error(`the skin solver failed: ${m.message}`));
+    } else if (m.type === 'error') this.fail(new Error(`the skin solver failed: ${m.message}`));
   };
   private readonly onError = (event: ErrorEvent): void => {
     event.preventDefault();
@@ -44,7 +43,9 @@ export class WorkerConnection {
       };
       const onError = (event: ErrorEvent): void => {
         event.preventDefault();
-        finish(() => (worker.terminate(), reject(new Error(`the skin worker could not start: ${event.message || 'it could not be loaded'}`))));
+        finish(
+          () => (worker.terminate(), reject(new Error(`the skin worker could not start: ${event.message || 'it could not be loaded'}`))),
+        );
       };
       worker.addEventListener('message', onMessage);
       worker.addEventListener('error', onError);
