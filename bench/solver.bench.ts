@@ -344,6 +344,6 @@ console.log([dragHeader, dragHeader.replace(/[^|]+/g, ' --- '), ...dragLines].jo
 mkdirSync('bench-results', { recursive: true });
 writeFileSync(
   'bench-results/solver.json',
-  JSON.stringify({ machine, date: new Date().toISOString(), rows, rigRows, dragRows }, null, 2) + '\n',
+  `${JSON.stringify({ machine, date: new Date().toISOString(), rows, rigRows, dragRows }, null, 2)}\n`,
 );
 console.log('\nwrote bench-results/solver.json');

@@ -60,5 +60,10 @@ test('the panel adds a muscle in front of the view, duplicates, renames, assigns
   }
   await expect(control(page, 'undo').locator('button')).toBeDisabled();
   // The skin still solves with the rig back as it was.
-  expect(await page.evaluate(async () => (await window.face.settle(45_000), window.face.stats().sleeping))).toBe(true);
+  expect(
+    await page.evaluate(async () => {
+      await window.face.settle(45_000);
+      return window.face.stats().sleeping;
+    }),
+  ).toBe(true);
 });

@@ -57,7 +57,10 @@ function installProbe(): void {
   const key = (type: string, listener: unknown, options: unknown): string => {
     const capture = typeof options === 'boolean' ? options : !!(options as AddEventListenerOptions | undefined)?.capture;
     let id = ids.get(listener);
-    if (id === undefined) ids.set(listener, (id = ids.size));
+    if (id === undefined) {
+      id = ids.size;
+      ids.set(listener, id);
+    }
     return `${type} ${id} ${capture}`;
   };
   const ids = new Map<unknown, number>();
@@ -72,7 +75,7 @@ function installProbe(): void {
     return remove.call(this, type, listener as EventListener, options as EventListenerOptions);
   };
   // An observer counts from its first observe() to its disconnect().
-  // eslint-disable-next-line @typescript-eslint/no-explicit-any -- a mixin's constructor must take any[]
+  // biome-ignore lint/suspicious/noExplicitAny: a mixin's constructor must take any[]
   const counted = <T extends { new (...args: any[]): { observe(...a: never[]): void; disconnect(): void } }>(Native: T): T =>
     class extends Native {
       private observing = false;

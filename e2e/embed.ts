@@ -89,7 +89,8 @@ export async function addElement(page: Page, name: string, attributes: Record<st
   await page.evaluate(
     async ({ name, attributes, style }) => {
       window.elementEvents ??= {};
-      const events: ElementEvent[] = (window.elementEvents[name] = []);
+      const events: ElementEvent[] = [];
+      window.elementEvents[name] = events;
       const element = document.createElement('soft-face');
       element.id = name;
       for (const [key, value] of Object.entries(attributes)) element.setAttribute(key, value);

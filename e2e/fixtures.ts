@@ -28,7 +28,7 @@ export async function waitForHead(page: Page): Promise<void> {
  * PNG bytes decoded in the page, by the browser itself: a handle to their pixels, to measure them there (a
  * screenshot's pixels would be megabytes to send back). Dispose of it when done.
  */
-export async function decodePNG(page: Page, png: Buffer): Promise<JSHandle<ImageData>> {
+async function decodePNG(page: Page, png: Buffer): Promise<JSHandle<ImageData>> {
   return page.evaluateHandle(async (data) => {
     const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
     const c = new OffscreenCanvas(image.width, image.height);

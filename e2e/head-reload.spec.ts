@@ -19,7 +19,7 @@ test(
       return { head, rig: window.face.getRig() };
     }, OBJ);
     expect(loaded.head).toMatchObject({ source: 'loaded', name: 'long-face.obj', units: 'cm', up: '+z', forward: '-y' });
-    expect(loaded.head.landmarks['chin'][1]).not.toBeCloseTo(original.landmarks['chin'][1], 3);
+    expect(loaded.head.landmarks.chin[1]).not.toBeCloseTo(original.landmarks.chin[1], 3);
     await expect.poll(() => page.evaluate(() => window.face.describeEditor().autosave)).toBe('saved');
 
     // Reopened, here at another resolution: the same head, subdivided (each of its 8,524 triangles into six), with the

@@ -101,10 +101,20 @@ export async function faceCrop(page: Page, rect?: FaceCrop['rect'], panelLeft = 
           sums.all += g;
           counts.all++;
           sums.bg += Math.abs(d[i] - background[0]) + Math.abs(d[i + 1] - background[1]) + Math.abs(d[i + 2] - background[2]);
-          if (x < midX) (sums.left += g), counts.left++;
-          else (sums.right += g), counts.right++;
-          if (y < midY) (sums.top += g), counts.top++;
-          else (sums.bottom += g), counts.bottom++;
+          if (x < midX) {
+            sums.left += g;
+            counts.left++;
+          } else {
+            sums.right += g;
+            counts.right++;
+          }
+          if (y < midY) {
+            sums.top += g;
+            counts.top++;
+          } else {
+            sums.bottom += g;
+            counts.bottom++;
+          }
         }
       }
       return {

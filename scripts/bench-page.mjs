@@ -220,6 +220,6 @@ mkdirSync('bench-results', { recursive: true });
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length };
 writeFileSync(
   'bench-results/page.json',
-  JSON.stringify({ machine, date: new Date().toISOString(), resolution, runs, rows, results }, null, 2) + '\n',
+  `${JSON.stringify({ machine, date: new Date().toISOString(), resolution, runs, rows, results }, null, 2)}\n`,
 );
 console.log('\nwrote bench-results/page.json');

@@ -29,6 +29,6 @@ export async function openApp(page, url, { timeout = 60_000, retries = 0, retryM
   // The app marks the page "ready" once window.face is up, or "error" with the reason in its status line.
   await page.waitForFunction(() => document.documentElement.dataset.state, null, { timeout });
   const state = await page.evaluate(() => document.documentElement.dataset.state);
-  if (state !== 'ready') throw new Error(`the page reports "${state}": ${await page.locator('#status').innerText()}`);
+  if (state !== 'ready') throw new Error(`the page reports "${state}": ${await page.locator('#status').textContent()}`);
   await page.evaluate(() => window.face.ready);
 }

@@ -75,7 +75,10 @@ const copy = (m: PolyMesh): PolyMesh => ({ ...m, positions: m.positions.slice() 
   const renumber = new Map<number, number>();
   const compactIndices = Uint32Array.from(simplified, (v) => {
     let r = renumber.get(v);
-    if (r === undefined) renumber.set(v, (r = renumber.size));
+    if (r === undefined) {
+      r = renumber.size;
+      renumber.set(v, r);
+    }
     return r;
   });
   const count = renumber.size;

@@ -244,7 +244,7 @@ const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length };
 const recogniser = { faceApi: FACE_API_VERSION, detector, crop, backend, expression: 'FaceExpressionNet', minScore: DEFAULTS.minScore };
 writeFileSync(
   'bench-results/recognition.json',
-  JSON.stringify({ machine, date: new Date().toISOString(), resolution, size: SIZE, recogniser, seconds, summary, rows }, null, 2) + '\n',
+  `${JSON.stringify({ machine, date: new Date().toISOString(), resolution, size: SIZE, recogniser, seconds, summary, rows }, null, 2)}\n`,
 );
 writeFileSync('bench-results/recognition.md', `${markdown}\n`);
 console.log('wrote bench-results/recognition.json and bench-results/recognition.md');

@@ -214,7 +214,7 @@ describe('parseRigText', () => {
   });
 
   it('refuses a text over the size limit before parsing it', () => {
-    const text = ' '.repeat(MAX_RIG_BYTES - 1) + '{}'; // valid JSON, one byte too long
+    const text = `${' '.repeat(MAX_RIG_BYTES - 1)}{}`; // valid JSON, one byte too long
     const e = textRejection(text, 'huge.json');
     expect(e.message).toBe(
       `huge.json: the document is ${MAX_RIG_BYTES + 1} bytes (5 MiB), over the limit of ${MAX_RIG_BYTES} bytes (5 MiB) for rig documents`,

@@ -16,7 +16,10 @@ function worldPositions(node: GltfNode, prim: Primitive): Float32Array {
 /** Connected pieces of a triangle list (vertices sharing a triangle are joined). */
 function pieces(indices: ArrayLike<number>, vertexCount: number): number {
   const parent = Int32Array.from({ length: vertexCount }, (_, i) => i);
-  const find = (v: number): number => (parent[v] === v ? v : (parent[v] = find(parent[v])));
+  const find = (v: number): number => {
+    if (parent[v] !== v) parent[v] = find(parent[v]);
+    return parent[v];
+  };
   for (let t = 0; t < indices.length; t += 3) {
     const a = find(indices[t]);
     parent[find(indices[t + 1])] = a;
@@ -86,8 +89,10 @@ describe('the dental arches of the default head', () => {
     // Symmetric about the midline, about 5 cm across, as an adult arch.
     let minX = Infinity;
     let maxX = -Infinity;
-    for (let i = 0; i < teeth.positions.length; i += 3)
-      (minX = Math.min(minX, teeth.positions[i])), (maxX = Math.max(maxX, teeth.positions[i]));
+    for (let i = 0; i < teeth.positions.length; i += 3) {
+      minX = Math.min(minX, teeth.positions[i]);
+      maxX = Math.max(maxX, teeth.positions[i]);
+    }
     expect(maxX + minX).toBeCloseTo(0, 4);
     expect(maxX - minX).toBeGreaterThan(0.045);
     expect(maxX - minX).toBeLessThan(0.065);
@@ -101,7 +106,11 @@ describe('the dental arches of the default head', () => {
     const mean = (pick: (i: number) => boolean): number => {
       let sum = 0;
       let n = 0;
-      for (let i = 0; i < positions.length; i += 3) if (pick(i)) (sum += shade[i]), n++;
+      for (let i = 0; i < positions.length; i += 3) {
+        if (!pick(i)) continue;
+        sum += shade[i];
+        n++;
+      }
       return sum / n;
     };
     const front = mean((i) => Math.abs(positions[i]) < 0.005);

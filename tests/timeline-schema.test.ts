@@ -1,8 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { MAX_TIMELINE_ACTIONS, parseTimeline, parseTimelineText, TimelineError, timelineText } from '../src/core/timeline-schema';
 
+// biome-ignore lint/suspicious/noExplicitAny: the tests spoil fields at any depth, with any value
+type Doc = Record<string, any>;
+
 /** A valid document with a track per kind of target and an action; tests spoil one field of a fresh copy. */
-function doc(): Record<string, any> {
+function doc(): Doc {
   return {
     format: 'softface-timeline',
     version: 1,
@@ -30,7 +33,7 @@ function doc(): Record<string, any> {
 
 const PRESETS = ['happiness', 'sadness'];
 
-function rejection(mutate: (d: Record<string, any>) => void, presets: readonly string[] | null = PRESETS): TimelineError {
+function rejection(mutate: (d: Doc) => void, presets: readonly string[] | null = PRESETS): TimelineError {
   const d = doc();
   mutate(d);
   try {

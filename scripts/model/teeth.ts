@@ -160,7 +160,10 @@ export function fitOcclusalPlane(upper: ArrayLike<number>, lower: ArrayLike<numb
   const range = (p: ArrayLike<number>) => {
     let lo = Infinity;
     let hi = -Infinity;
-    for (let i = 2; i < p.length; i += 3) (lo = Math.min(lo, p[i])), (hi = Math.max(hi, p[i]));
+    for (let i = 2; i < p.length; i += 3) {
+      lo = Math.min(lo, p[i]);
+      hi = Math.max(hi, p[i]);
+    }
     return [lo, hi];
   };
   const [z0, z1] = range(upper);
@@ -181,7 +184,10 @@ export function fitOcclusalPlane(upper: ArrayLike<number>, lower: ArrayLike<numb
   const my = ys.reduce((a, b) => a + b, 0) / m;
   let szz = 0;
   let szy = 0;
-  for (let k = 0; k < m; k++) (szz += (zs[k] - mz) ** 2), (szy += (zs[k] - mz) * (ys[k] - my));
+  for (let k = 0; k < m; k++) {
+    szz += (zs[k] - mz) ** 2;
+    szy += (zs[k] - mz) * (ys[k] - my);
+  }
   const b = szz > 0 ? szy / szz : 0;
   return { a: my - b * mz, b };
 }
@@ -224,7 +230,10 @@ class Builder {
       const n = cross(P, a, b, c);
       const o = inside(a);
       const out = [P[3 * a] - o[0], P[3 * a + 1] - o[1], P[3 * a + 2] - o[2]];
-      if (n[0] * out[0] + n[1] * out[1] + n[2] * out[2] < 0) (I[t + 1] = c), (I[t + 2] = b);
+      if (n[0] * out[0] + n[1] * out[1] + n[2] * out[2] < 0) {
+        I[t + 1] = c;
+        I[t + 2] = b;
+      }
     }
     const normals = new Float32Array(P.length);
     for (let t = 0; t < I.length; t += 3) {

@@ -37,16 +37,16 @@ try {
 } catch (error) {
   fail(`${listPath}: ${jsonSyntaxMessage(text, error)}`);
 }
-let stimuli;
+let stimuli: ReturnType<typeof expandStimulusList> = [];
 try {
   stimuli = expandStimulusList(json, basename(listPath));
 } catch (error) {
   fail((error as Error).message);
 }
 mkdirSync(outDir, { recursive: true });
-writeFileSync(join(outDir, 'manifest.csv'), stimulusManifest(stimuli!));
+writeFileSync(join(outDir, 'manifest.csv'), stimulusManifest(stimuli));
 writeFileSync(join(outDir, PLAN_FILE), JSON.stringify(stimuli));
-console.log(`${stimuli!.length} stimuli; manifest: ${join(outDir, 'manifest.csv')}`);
+console.log(`${stimuli.length} stimuli; manifest: ${join(outDir, 'manifest.csv')}`);
 
 const here = dirname(fileURLToPath(import.meta.url));
 const result = spawnSync('npx', ['playwright', 'test', '-c', join(here, 'playwright.config.ts'), ...playwrightArgs], {

@@ -15,7 +15,7 @@ export interface HashSyncOptions {
   intervalMs?: number;
 }
 
-export const HASH_SYNC_DEFAULTS: Required<HashSyncOptions> = { intervalMs: 250 };
+const HASH_SYNC_DEFAULTS: Required<HashSyncOptions> = { intervalMs: 250 };
 
 /**
  * Keeps the current expression (Action Unit sliders and preset weights) and appearance (where it differs from the

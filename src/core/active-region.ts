@@ -16,7 +16,7 @@ import { allocate, type Memory } from './memory';
 import type { SkinTopology } from './topology';
 
 /** Rings of vertices around the muscle-held ones that join the region when the muscle inputs change. */
-export const ACTIVE_SEED_RINGS = 8;
+const ACTIVE_SEED_RINGS = 8;
 /**
  * The region grows where its border is farther than this from rest (times the mesh size), or where a frame moved a
  * vertex just outside it farther than that: the tolerance to which it matches the whole-mesh solve. 19 um on the
@@ -30,11 +30,11 @@ export const ACTIVE_GROW = 5e-5;
  * A vertex no muscle holds leaves the region once it and its neighbours are nearer than this to rest (times the mesh
  * size). Well under ACTIVE_GROW, so that a vertex that left is not pulled straight back in.
  */
-export const ACTIVE_LEAVE = ACTIVE_GROW / 4;
+const ACTIVE_LEAVE = ACTIVE_GROW / 4;
 /** Rings a vertex that joins brings along: the motion may spread several rings in a frame. */
-export const ACTIVE_GROW_RINGS = 4;
+const ACTIVE_GROW_RINGS = 4;
 /** Frames between looks for vertices that may leave (leaving only saves time; it need not be prompt). */
-export const ACTIVE_SHRINK_PERIOD = 8;
+const ACTIVE_SHRINK_PERIOD = 8;
 
 export class ActiveRegion {
   /** Whether the region follows the motion; when not, it is the whole mesh, always. */

@@ -7,8 +7,8 @@
  */
 
 /** 'PREM' as a little-endian u32: the first word of the file. */
-export const ENVIRONMENT_MAGIC = 0x4d455250;
-export const ENVIRONMENT_VERSION = 1;
+const ENVIRONMENT_MAGIC = 0x4d455250;
+const ENVIRONMENT_VERSION = 1;
 /** Header words: magic, version, face size of level 0, mip levels. */
 const HEADER_WORDS = 4;
 /** Half-float 1, the alpha of every texel (the file stores RGB only). */

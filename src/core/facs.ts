@@ -62,7 +62,7 @@ export type Grade = '' | 'A' | 'B' | 'C' | 'D' | 'E';
  * narrow, C and D wide, E narrow (the 2002 manual's picture of the scale), so: A up to 10 %, B to 20 %, C to 55 %,
  * D to 90 %, E to 100 %.
  */
-export const GRADE_BANDS: readonly (readonly [upTo: number, grade: Grade])[] = Object.freeze([
+const GRADE_BANDS: readonly (readonly [upTo: number, grade: Grade])[] = Object.freeze([
   [0.1, 'A'],
   [0.2, 'B'],
   [0.55, 'C'],

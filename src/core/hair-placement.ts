@@ -291,7 +291,7 @@ export interface LidMargin {
  * line; where they fall deep (into the opening, past the eyeball to the socket, or through nothing) is the opening,
  * and the first ray above and below it that meets the lid's front is the margin.
  */
-export function findLidMargin(caster: FrontCaster, e: EyeFrame, columns = 40): LidMargin {
+function findLidMargin(caster: FrontCaster, e: EyeFrame, columns = 40): LidMargin {
   const out: LidMargin = { a: [], upper: [], lower: [] };
   const hit: FrontHit = { triangle: 0, w0: 0, w1: 0, w2: 0, z: 0 };
   const reach = 0.4 * e.width;
@@ -469,4 +469,4 @@ export function placeLashes(
 }
 
 /** The eye's frame, for tests and tools that measure along an eye as the placement does. */
-export { eyeFrame, type EyeFrame };
+export type { EyeFrame };

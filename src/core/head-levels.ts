@@ -77,7 +77,10 @@ export async function decimateHead(mesh: TriangleMesh, target: number): Promise<
   const renumber = new Map<number, number>();
   const out = Uint32Array.from(simplified, (v) => {
     let r = renumber.get(v);
-    if (r === undefined) renumber.set(v, (r = renumber.size));
+    if (r === undefined) {
+      r = renumber.size;
+      renumber.set(v, r);
+    }
     return r;
   });
   const kept = new Float32Array(3 * renumber.size);

@@ -563,11 +563,7 @@ function reaches(P: Float64Array, o: number, margin: number, x: number, y: numbe
 }
 
 /** Copies contractions into `out` clamped to 0..1; throws, naming the muscle and changing nothing, if one is not finite. */
-export function clampContractions(
-  muscles: readonly Muscle[],
-  contractions: ArrayLike<number>,
-  out: Float64Array | Float32Array | number[],
-): void {
+function clampContractions(muscles: readonly Muscle[], contractions: ArrayLike<number>, out: Float64Array | Float32Array | number[]): void {
   if (contractions.length !== muscles.length) {
     throw new Error(`contractions: the rig has ${muscles.length} muscles, got ${contractions.length} contractions`);
   }
@@ -643,7 +639,7 @@ export interface MuscleRigOptions {
   holdFadeIn?: number;
 }
 
-export const MUSCLE_RIG_DEFAULTS: Readonly<Required<MuscleRigOptions>> = { substeps: 8, margin: 0.005, holdFadeIn: 0.1 };
+const MUSCLE_RIG_DEFAULTS: Readonly<Required<MuscleRigOptions>> = { substeps: 8, margin: 0.005, holdFadeIn: 0.1 };
 
 /** How many rest vertices each muscle may move, as the editor and the app's outputs show them. */
 export interface MuscleCandidates {

@@ -19,7 +19,7 @@ const BARRIER_COUNT = 5;
 const BARRIER_GENERATION = 6;
 const BOARD_WORDS = 8;
 /** Float64 arguments after the words; after them one Float64 the partner hands back (see Board.value). */
-export const BOARD_ARGUMENTS = 3;
+const BOARD_ARGUMENTS = 3;
 
 /**
  * Jobs: length passes (each thread projects half of each colour, and they meet after each colour), a part of the

@@ -148,7 +148,7 @@ export function toRenderMesh(mesh: PolyMesh, scale = 1): RenderMesh {
 }
 
 /** Area-weighted vertex normals of a polygon mesh (each polygon's Newell normal, whose length is twice its area). */
-export function vertexNormals(mesh: PolyMesh): Float64Array {
+function vertexNormals(mesh: PolyMesh): Float64Array {
   const P = mesh.positions;
   const N = new Float64Array(P.length);
   for (let f = 0; f < faceCount(mesh); f++) {

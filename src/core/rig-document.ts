@@ -26,7 +26,7 @@ export interface UpdateOptions {
 }
 
 /** Undo steps kept by default: more than the 100 an editing session is promised. */
-export const RIG_HISTORY_LIMIT = 200;
+const RIG_HISTORY_LIMIT = 200;
 
 const MUSCLE_TYPES = ['linear', 'sphincter', 'lid', 'jaw'] as const;
 
@@ -86,7 +86,7 @@ function deepFreeze<T>(x: T): T {
 const same = (a: unknown, b: unknown): boolean => JSON.stringify(a) === JSON.stringify(b);
 
 /** What changed from `a` to `b`, or null if nothing did. */
-export function rigChange(a: Rig, b: Rig): RigChange | null {
+function rigChange(a: Rig, b: Rig): RigChange | null {
   const sameNames = a.muscles.length === b.muscles.length && a.muscles.every((m, i) => m.name === b.muscles[i].name);
   if (!sameNames || !same(a.actionUnits, b.actionUnits) || !same(a.presets, b.presets) || a.version !== b.version)
     return { kind: 'structure' };

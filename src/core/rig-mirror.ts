@@ -14,8 +14,8 @@ export function otherSide(side: MuscleSide): MuscleSide {
 
 /** The name of a muscle's left/right twin (`zygomaticus-major-l` <-> `-r`), or undefined for names without a side suffix. */
 export function twinName(name: string): string | undefined {
-  if (/-l$/.test(name)) return name.slice(0, -2) + '-r';
-  if (/-r$/.test(name)) return name.slice(0, -2) + '-l';
+  if (/-l$/.test(name)) return `${name.slice(0, -2)}-r`;
+  if (/-r$/.test(name)) return `${name.slice(0, -2)}-l`;
   return undefined;
 }
 

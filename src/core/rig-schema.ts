@@ -12,22 +12,22 @@ export const MAX_RIG_BYTES = 5 * 1024 * 1024;
 
 /** Most muscles, Action Units and presets a rig may hold (the default rig has 37, 21 and 12). */
 export const MAX_RIG_MUSCLES = 256;
-export const MAX_RIG_ACTION_UNITS = 64;
-export const MAX_RIG_PRESETS = 256;
+const MAX_RIG_ACTION_UNITS = 64;
+const MAX_RIG_PRESETS = 256;
 /** Longest name or note, in characters. */
 const MAX_TEXT = 200;
 /**
  * Farthest a muscle point may lie from the model's origin, and largest radius or box edge, in metres. The head is
  * about 0.25 m across; a point kilometres away would make the solver's targets (and the skin) run off to infinity.
  */
-export const MAX_RIG_DISTANCE = 10;
+const MAX_RIG_DISTANCE = 10;
 
 /** The rig document version this code writes; older documents are migrated when read (`migrateRig`). */
-export const RIG_VERSION = 2;
+const RIG_VERSION = 2;
 /** Most brush spheres a muscle may have, of each kind. */
-export const MAX_BRUSH_SPHERES = 4096;
+const MAX_BRUSH_SPHERES = 4096;
 /** Largest brush sphere radius, in metres. */
-export const MAX_BRUSH_RADIUS = 0.1;
+const MAX_BRUSH_RADIUS = 0.1;
 
 /** At most this many problems are spelled out in an error's message; `RigError.problems` has them all. */
 const MAX_LISTED_PROBLEMS = 50;
@@ -227,7 +227,7 @@ const PresetSchema = plainObject(
 );
 
 /** The shape of a rig document; `parseRig` adds the checks across fields. */
-export const RigSchema = plainObject(
+const RigSchema = plainObject(
   {
     format: v.literal('softface-rig', 'expected "softface-rig"'),
     version: v.literal(RIG_VERSION, `expected version ${RIG_VERSION}`),
@@ -254,7 +254,7 @@ export const RigSchema = plainObject(
  * Brings an older rig document up to `RIG_VERSION` (a shallow copy; the input is not changed). A document without a
  * `version` is taken as version 1, the first one; anything else is left for the schema to judge.
  */
-export function migrateRig(json: unknown): unknown {
+function migrateRig(json: unknown): unknown {
   if (!isObj(json)) return json;
   let version = 'version' in json ? json.version : 1;
   // Version 2 added the muscles' optional `brush`: a version 1 document is a version 2 one as it is.

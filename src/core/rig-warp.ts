@@ -15,7 +15,7 @@ export function warpRig(rig: Rig, warp: ThinPlateWarp): Rig {
 }
 
 /** One muscle through the warp (a new object). */
-export function warpMuscle(muscle: Muscle, warp: ThinPlateWarp): Muscle {
+function warpMuscle(muscle: Muscle, warp: ThinPlateWarp): Muscle {
   const m = structuredClone(muscle);
   const s = warp.scale;
   if (m.brush) {
@@ -55,7 +55,7 @@ export function warpMuscle(muscle: Muscle, warp: ThinPlateWarp): Muscle {
  * The warped frame at `center`: the derivative times each local axis gives the new axis; its length is how much the
  * frame stretches along it. The axes are made orthonormal (Gram-Schmidt, x first) and read back as Euler angles.
  */
-export function warpFrame(warp: ThinPlateWarp, center: Vec3, rotation: EulerDegrees): { rotation: EulerDegrees; stretch: Vec3 } {
+function warpFrame(warp: ThinPlateWarp, center: Vec3, rotation: EulerDegrees): { rotation: EulerDegrees; stretch: Vec3 } {
   const R = new Array<number>(9);
   eulerMatrix(rotation, R);
   const J = warpJacobian(warp, center);

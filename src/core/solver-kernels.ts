@@ -208,8 +208,13 @@ export function projectLengths(a: PartArrays, stiffness: number, bulge: number, 
     if (board) {
       const f = (f0 + f1) >> 1;
       const h = (h0 + h1) >> 1;
-      if (half === 0) (f1 = f), (h1 = h);
-      else (f0 = f), (h0 = h);
+      if (half === 0) {
+        f1 = f;
+        h1 = h;
+      } else {
+        f0 = f;
+        h0 = h;
+      }
     }
     projectFreeEdges(x, ends, rest, stiffness, f0, f1);
     projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, h0, h1);
@@ -514,7 +519,7 @@ export function startFramePart(a: PartArrays, beta: number, foldBeta: number, k0
 }
 
 /** The least share of its solved move a vertex that keeps turning back takes in a frame (see relaxPart). */
-export const MIN_RELAXATION = 1 / 16;
+const MIN_RELAXATION = 1 / 16;
 
 /**
  * A vertex's share is halved when it turns back again within this many frames of its last turn (see relaxPart): a
@@ -574,9 +579,13 @@ export function recordStepsPart(a: PartArrays, k0: number, k1: number): number {
   for (let k = k0; k < k1; k++) {
     const v = V[k];
     const i = 3 * v;
-    const dx = (last[i] = x[i] - prev[i]);
-    const dy = (last[i + 1] = x[i + 1] - prev[i + 1]);
-    const dz = (last[i + 2] = x[i + 2] - prev[i + 2]);
+    // The step as computed (double), not as stored in the Float32Array: the same numbers as before.
+    const dx = x[i] - prev[i];
+    const dy = x[i + 1] - prev[i + 1];
+    const dz = x[i + 2] - prev[i + 2];
+    last[i] = dx;
+    last[i + 1] = dy;
+    last[i + 2] = dz;
     const d2 = dx * dx + dy * dy + dz * dz;
     if (d2 > largest2) largest2 = d2;
     path[v] += Math.sqrt(d2);

@@ -133,7 +133,7 @@ export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
  * direction's: with the mean edge length, the forehead's long quads got a seventh of the stiffness, and both heads
  * folded at their own mesh scale); C was measured on triangle grids (see tests).
  */
-export const BENDING_CALIBRATION = 6;
+const BENDING_CALIBRATION = 6;
 
 /**
  * The most bending share one projection takes; a vertex that needs more is projected in passes of equal parts. The
@@ -141,13 +141,13 @@ export const BENDING_CALIBRATION = 6;
  * such projection an iteration, against the muscles' hold, left vertices circling for good (a loop of some 40 frames,
  * each move turning a little, which the relaxation cannot tell from progress); the same share in thirds converges.
  */
-export const MAX_BENDING_SHARE = 0.35;
+const MAX_BENDING_SHARE = 0.35;
 
 /**
  * Skin closer than this to a collider at rest (metres) is checked against it: the lids over the eyes, the lips over
  * the teeth. Farther skin does not reach it in an expression, and checking it would only cost time.
  */
-export const COLLISION_BAND = 0.006;
+const COLLISION_BAND = 0.006;
 
 /** Typed arrays the solver reads and writes; pass them to place them in shared memory. */
 export interface SolverBuffers {
@@ -306,7 +306,8 @@ export class SkinSolver {
   ) {
     this.topology = topology;
     const n = topology.vertexCount;
-    const memory = (this.memory = options.memory ?? 'local');
+    const memory = options.memory ?? 'local';
+    this.memory = memory;
     this.buffers = options.buffers ?? createSolverBuffers(topology, memory);
     if (memory === 'shared' && !Object.values(this.buffers).every((b: Float32Array) => b.buffer instanceof SharedArrayBuffer)) {
       // The partner thread reads the positions and the muscle inputs.
@@ -739,7 +740,10 @@ export class SkinSolver {
   private computeNormals(): void {
     const r = this.region;
     const out = this.buffers.normals;
-    if (!r.enabled) return computeNormals(this.buffers.positions, this.topology.triangles, out);
+    if (!r.enabled) {
+      computeNormals(this.buffers.positions, this.topology.triangles, out);
+      return;
+    }
     const count = r.shadedCount;
     zeroAt(out, r.shadedVertices, count);
     zeroAt(out, r.outer, r.outerCount);
@@ -775,7 +779,10 @@ export class SkinSolver {
     const cap = late > 0 ? LATE_SLOWING ** late : 1;
     const count = this.region.count;
     const partner = this.partner;
-    if (!partner) return relaxPart(this.parts, cap, 0, count);
+    if (!partner) {
+      relaxPart(this.parts, cap, 0, count);
+      return;
+    }
     partner.start(JOB_RELAX, count, cap);
     relaxPart(this.parts, cap, 0, count >> 1);
     partner.finish();
@@ -837,7 +844,10 @@ export class SkinSolver {
   private startFrame(beta: number, foldBeta: number): void {
     const count = this.region.count;
     const partner = this.partner;
-    if (!partner) return startFramePart(this.parts, beta, foldBeta, 0, count);
+    if (!partner) {
+      startFramePart(this.parts, beta, foldBeta, 0, count);
+      return;
+    }
     partner.start(JOB_START_FRAME, count, beta, foldBeta);
     startFramePart(this.parts, beta, foldBeta, 0, count >> 1);
     partner.finish();
@@ -864,7 +874,10 @@ export class SkinSolver {
     const m = this.params.muscleStiffness;
     const count = this.region.count;
     const partner = this.partner;
-    if (!partner) return projectPositions(this.parts, s, extra, m, 0, count);
+    if (!partner) {
+      projectPositions(this.parts, s, extra, m, 0, count);
+      return;
+    }
     partner.start(JOB_POSITIONS, count, s, extra, m);
     projectPositions(this.parts, s, extra, m, 0, count >> 1);
     partner.finish();
@@ -930,7 +943,10 @@ export class SkinSolver {
    */
   private projectCollisions(): void {
     const partner = this.partner;
-    if (!partner) return projectCollisions(this.parts, 0, 1, this.direction);
+    if (!partner) {
+      projectCollisions(this.parts, 0, 1, this.direction);
+      return;
+    }
     partner.start(JOB_COLLISIONS);
     projectCollisions(this.parts, 0, 2, this.direction);
     partner.finish();
@@ -1078,7 +1094,7 @@ const now = (): number => performance.now();
  * push, every outer iteration, hand the skin back and forth without end (measured: AU7, AU26, AU43 and the
  * thesis's laughing never came to rest). A quarter keeps them converging; the folds there are set by the collider.
  */
-export const COLLIDER_BENDING_STIFFNESS = 0.25;
+const COLLIDER_BENDING_STIFFNESS = 0.25;
 
 /**
  * A motion's first frames, in which compressed skin chooses its fold pattern, carry at most this share of a move along
@@ -1090,9 +1106,9 @@ export const COLLIDER_BENDING_STIFFNESS = 0.25;
  * against 2,392 (happiness within 2 % after 38 frames instead of 48, asleep after 135 instead of 93), measured before
  * LOOP_SLOWING was a quarter.
  */
-export const FOLD_CHOICE_MOMENTUM = 0.75;
+const FOLD_CHOICE_MOMENTUM = 0.75;
 /** Frames after an input or parameter change during which FOLD_CHOICE_MOMENTUM caps the fold momentum. */
-export const FOLD_CHOICE_FRAMES = 15;
+const FOLD_CHOICE_FRAMES = 15;
 
 /**
  * Frames after an input or parameter change that carry `startMomentum` along the surface instead of `momentum`. A

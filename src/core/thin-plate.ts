@@ -78,20 +78,6 @@ export function warpPoint(warp: ThinPlateWarp, p: readonly number[]): Vec3 {
   return out;
 }
 
-/** Warps xyz triples in place (`positions.length / 3` points). */
-export function warpPositions(warp: ThinPlateWarp, positions: Float32Array | Float64Array): void {
-  const p = [0, 0, 0];
-  for (let i = 0; i < positions.length; i += 3) {
-    p[0] = positions[i];
-    p[1] = positions[i + 1];
-    p[2] = positions[i + 2];
-    const q = warpPoint(warp, p);
-    positions[i] = q[0];
-    positions[i + 1] = q[1];
-    positions[i + 2] = q[2];
-  }
-}
-
 /** The warp's derivative at `p`: row-major 3 x 3, d(out_row) / d(in_column). */
 export function warpJacobian(warp: ThinPlateWarp, p: readonly number[]): Float64Array {
   const J = Float64Array.from(warp.linear);

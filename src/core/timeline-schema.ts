@@ -10,13 +10,13 @@ import { jsonSyntaxMessage, pathStep, problemOf, show as showValue, utf8Length, 
 import { EASINGS, PRESET_TARGET_PREFIX, TIMELINE_FORMAT, TIMELINE_VERSION, type Timeline } from './timeline';
 
 /** Largest timeline document `parseTimelineText` accepts, in bytes of UTF-8. */
-export const MAX_TIMELINE_BYTES = 1024 * 1024;
+const MAX_TIMELINE_BYTES = 1024 * 1024;
 /** Most tracks, keys per track and actions a timeline may hold. */
-export const MAX_TIMELINE_TRACKS = 128;
-export const MAX_TIMELINE_KEYS = 4096;
+const MAX_TIMELINE_TRACKS = 128;
+const MAX_TIMELINE_KEYS = 4096;
 export const MAX_TIMELINE_ACTIONS = 4096;
 /** Longest timeline, in seconds: an hour. */
-export const MAX_TIMELINE_SECONDS = 3600;
+const MAX_TIMELINE_SECONDS = 3600;
 
 /** At most this many problems are spelled out in an error's message; `TimelineError.problems` has them all. */
 const MAX_LISTED_PROBLEMS = 50;
@@ -112,7 +112,7 @@ const ActionSchema = plainObject(
 );
 
 /** The shape of a timeline document; `parseTimeline` adds the checks across fields. */
-export const TimelineSchema = plainObject(
+const TimelineSchema = plainObject(
   {
     format: v.literal(TIMELINE_FORMAT, `expected "${TIMELINE_FORMAT}"`),
     version: v.optional(v.literal(TIMELINE_VERSION, `expected version ${TIMELINE_VERSION}`), TIMELINE_VERSION),

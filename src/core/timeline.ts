@@ -115,7 +115,7 @@ export function ease(easing: Easing, u: number): number {
 // Actions.
 
 /** The end of an action: start + onset + apex + offset. */
-export function actionEnd(a: TimelineAction): number {
+function actionEnd(a: TimelineAction): number {
   return a.start + a.onset + a.apex + a.offset;
 }
 
@@ -152,7 +152,7 @@ export function expandAction(a: TimelineAction): TimelineKey[] {
 // Duration and time.
 
 /** The end of the last key or action, in seconds (0 for an empty timeline). */
-export function contentEnd(t: Timeline): number {
+function contentEnd(t: Timeline): number {
   let end = 0;
   for (const track of Object.values(t.tracks)) {
     const last = track.keys[track.keys.length - 1];

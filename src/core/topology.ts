@@ -191,7 +191,7 @@ export function buildTopology(renderPositions: ArrayLike<number>, indices: Array
  * their quads run along the wrinkle lines and are short across them (about 2.6 by 4.7 mm on the 17k forehead), where
  * the mean edge length overstated the spacing 1.6 times.
  */
-export function finestSpacing(rest: Float32Array, normals: Float32Array, start: Uint32Array, neighbours: Uint32Array): Float32Array {
+function finestSpacing(rest: Float32Array, normals: Float32Array, start: Uint32Array, neighbours: Uint32Array): Float32Array {
   const n = rest.length / 3;
   const spacing = new Float32Array(n);
   for (let v = 0; v < n; v++) {
@@ -337,7 +337,7 @@ function adjacencyLists(n: number, triangles: number[]): number[][] {
 }
 
 /** Reverse Cuthill-McKee: breadth-first from a low-degree vertex, neighbours by rising degree, then reversed. */
-export function reverseCuthillMcKee(adjacency: number[][]): number[] {
+function reverseCuthillMcKee(adjacency: number[][]): number[] {
   const n = adjacency.length;
   const visited = new Uint8Array(n);
   const order: number[] = [];
@@ -373,7 +373,8 @@ function colourEdges(n: number, adjacency: number[][]): { edges: Uint32Array; co
       while (used[a].has(c) || used[b].has(c)) c++;
       used[a].add(c);
       used[b].add(c);
-      (byColour[c] ??= []).push(a, b);
+      byColour[c] ??= [];
+      byColour[c].push(a, b);
     }
   }
   const colourStart = new Uint32Array(byColour.length + 1);

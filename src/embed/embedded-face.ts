@@ -96,7 +96,7 @@ export class EmbeddedFace {
    * the option, before anything is built; a failed or aborted start takes back whatever it had built.
    */
   static async create(container: HTMLElement, options?: FaceOptions, signal?: AbortSignal): Promise<EmbeddedFace> {
-    if (!container || container.nodeType !== 1) throw new Error(`createFace: needs a container element, got ${String(container)}`);
+    if (container?.nodeType !== 1) throw new Error(`createFace: needs a container element, got ${String(container)}`);
     const o = checkFaceOptions(options);
     signal?.throwIfAborted();
     const face = new EmbeddedFace(container, o);
@@ -549,7 +549,7 @@ interface JawRest {
 /** The rig's jaw hinge: its jaw muscle's joint, by default the centre of the box's back face (as the solver takes it). */
 function jawHinge(rig: Rig): Vector3 | undefined {
   const muscle = rig.muscles.find((m) => m.type === 'jaw');
-  if (!muscle || muscle.type !== 'jaw') return undefined;
+  if (muscle?.type !== 'jaw') return undefined;
   if (muscle.joint) return new Vector3(...muscle.joint);
   const frame = new Array<number>(9);
   eulerMatrix(muscle.rotation, frame);

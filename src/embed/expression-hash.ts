@@ -16,13 +16,13 @@ export type ExpressionEntries = Readonly<Record<string, number>>;
 const PRESET_PREFIX = 'preset:';
 
 /** The hash entry that carries a timeline document, as compact JSON: `timeline={"format":...}`. */
-export const TIMELINE_HASH_KEY = 'timeline';
+const TIMELINE_HASH_KEY = 'timeline';
 
 /**
  * Hash entries that carry the face's appearance (`appearance.browDensity=0.5`, `appearance.lashes=0`), only where it
  * differs from the defaults; they are not expression entries.
  */
-export const APPEARANCE_HASH_PREFIX = 'appearance.';
+const APPEARANCE_HASH_PREFIX = 'appearance.';
 
 /** Longest timeline JSON the app puts in its URL hash, in characters: longer ones make links too long to share. */
 export const MAX_HASH_TIMELINE_CHARS = 1500;

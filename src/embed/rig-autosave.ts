@@ -4,7 +4,7 @@ import { parseRig } from '../core/rig-schema';
 import type { Rig } from '../core/rig-types';
 
 /** How long after an edit the rig is written (a drag's many edits make one write). */
-export const AUTOSAVE_DELAY_MS = 250;
+const AUTOSAVE_DELAY_MS = 250;
 
 /** Where the autosave stands: nothing to keep (the rig is the original), a write due, written, or failed. */
 export type AutosaveStatus = 'clean' | 'pending' | 'saved' | 'failed';

@@ -19,7 +19,7 @@ export interface TimelinePlayerOptions {
   maxStepMs?: number;
 }
 
-export const TIMELINE_PLAYER_DEFAULTS: Required<TimelinePlayerOptions> = { maxStepMs: 250 };
+const TIMELINE_PLAYER_DEFAULTS: Required<TimelinePlayerOptions> = { maxStepMs: 250 };
 
 /**
  * Plays a timeline on the face like a media player: every frame while it plays it moves the clock on by the frame's

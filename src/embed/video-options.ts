@@ -43,9 +43,9 @@ export const VIDEO_DEFAULTS: Readonly<Required<VideoOptions>> = Object.freeze({
 });
 
 /** The largest width or height a recording may have. */
-export const MAX_VIDEO_SIZE = 4096;
+const MAX_VIDEO_SIZE = 4096;
 /** The longest recording, in seconds (as long as the longest timeline). */
-export const MAX_VIDEO_SECONDS = 3600;
+const MAX_VIDEO_SECONDS = 3600;
 
 const FORMATS: readonly VideoFormat[] = ['webm', 'png-zip'];
 

@@ -40,7 +40,7 @@ export async function loadEnvironment(url: string): Promise<CompressedCubeTextur
  * them; three.js looks a cube texture that is not a render target up mirrored in x (the convention of cube maps made
  * from images), so the faces are mirrored here to match: +x and -x swap, and every face flips left to right.
  */
-export function environmentTexture(environment: EnvironmentLevels): CompressedCubeTexture {
+function environmentTexture(environment: EnvironmentLevels): CompressedCubeTexture {
   const { size, levels, faces } = environment;
   const images: { width: number; height: number; mipmaps: CompressedTextureMipmap[] }[] = [];
   for (let f = 0; f < 6; f++) {

@@ -22,7 +22,7 @@ export interface IrisOptions {
   outer: readonly [number, number, number];
 }
 
-export const IRIS_DEFAULTS: Readonly<Required<IrisOptions>> = Object.freeze({
+const IRIS_DEFAULTS: Readonly<Required<IrisOptions>> = Object.freeze({
   seed: 11,
   pupilRatio: 0.34,
   inner: [0.3, 0.17, 0.06] as const,
@@ -133,6 +133,6 @@ function smoothstep(a: number, b: number, x: number): number {
 /** Linear 0..1 to an sRGB-encoded byte. */
 function toSrgbByte(linear: number): number {
   const c = Math.min(1, Math.max(0, linear));
-  const s = c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
+  const s = c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055;
   return Math.round(255 * s);
 }

@@ -6,7 +6,7 @@ import { SkinContact } from '../core/skin-contact';
 import { APPEARANCE_DEFAULTS, type AppearanceOptions } from './view-options';
 
 /** Names of the hair meshes (children of the skin mesh), as a glTF export shows them. */
-export const HAIR_NODES = Object.freeze({ brows: 'eyebrows', lashes: 'eyelashes' });
+const HAIR_NODES = Object.freeze({ brows: 'eyebrows', lashes: 'eyelashes' });
 
 /** A skin's shape: positions and normals, xyz per render vertex. */
 export interface SkinShape {

@@ -1,4 +1,4 @@
-import { Box3, BufferAttribute, BufferGeometry, Group, LoadingManager, Matrix4, Mesh, Object3D, Vector3, type Material } from 'three';
+import { Box3, BufferAttribute, BufferGeometry, Group, LoadingManager, Matrix4, Mesh, type Object3D, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 import { HEAD_NODES } from '../core/head-nodes';
@@ -18,7 +18,7 @@ export interface HeadFile {
 export type HeadFormat = 'glb' | 'gltf' | 'obj';
 
 /** Which of the files is the head, and in what format: a `.glb`, `.gltf` or `.obj`; throws naming the files otherwise. */
-export function mainHeadFile(files: readonly HeadFile[]): { file: HeadFile; format: HeadFormat } {
+function mainHeadFile(files: readonly HeadFile[]): { file: HeadFile; format: HeadFormat } {
   for (const file of files) {
     const extension = file.name.toLowerCase().split('.').pop();
     if (extension === 'glb' || extension === 'gltf' || extension === 'obj') return { file, format: extension };
@@ -197,7 +197,7 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
       const own = materials.get((m.material as Material).name);
       if (own) m.material = own;
       // The app's teeth and gums multiply by vertex colours (baked occlusion): a part without them gets white.
-      if (own && own.vertexColors && !m.geometry.getAttribute('color')) whiteVertexColors(m);
+      if (own?.vertexColors && !m.geometry.getAttribute('color')) whiteVertexColors(m);
       // The cornea blends over the iris, so it is drawn after the opaque parts.
       m.renderOrder = (m.material as Material).transparent ? 2 : 0;
     });

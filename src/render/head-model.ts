@@ -1,4 +1,4 @@
-import { Box3, BufferAttribute, Mesh, Object3D, Texture, Vector3, type Material } from 'three';
+import { type Box3, BufferAttribute, Mesh, type Object3D, Texture, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { HEAD_NODES } from '../core/head-nodes';
 import { createHeadMaterials } from './materials';
@@ -33,7 +33,7 @@ export interface HeadModel {
 export async function loadHeadModel(url: string): Promise<HeadModel> {
   const gltf = await new GLTFLoader().loadAsync(url);
   const info = gltf.scene.userData.softface as HeadModelInfo | undefined;
-  if (!info || info.format !== 'softface-head') throw new Error(`${url} is not a softface head model (its scene has no softface extras)`);
+  if (info?.format !== 'softface-head') throw new Error(`${url} is not a softface head model (its scene has no softface extras)`);
   const root = gltf.scene;
   root.traverse((o) => {
     const t = [...o.position.toArray(), ...o.quaternion.toArray(), ...o.scale.toArray()];

@@ -1,6 +1,6 @@
 import {
   ACESFilmicToneMapping,
-  Box3,
+  type Box3,
   Color,
   DirectionalLight,
   HemisphereLight,
@@ -65,7 +65,7 @@ export interface HeadViewOptions {
  * is about to change (the skin has not answered an input yet), so that the view puts off drawing until it has: the
  * hook bounds how long it holds.
  */
-export type FrameHook = (now: number) => boolean | 'hold' | void;
+export type FrameHook = (now: number) => boolean | 'hold' | undefined;
 
 /** What `measureRender` reports: main-thread time of `renderer.render` and what the last frame drew. */
 export interface RenderTiming {
@@ -109,7 +109,7 @@ const DRAW_AFTER_CHANGE_MS = 250;
 const DRAW_AFTER_CHANGE_FRAMES = 3;
 const DEGREES = Math.PI / 180;
 
-export const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({
+const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({
   background: 0x1d2024,
   fov: 28,
   maxPixelRatio: 2,

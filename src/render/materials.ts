@@ -58,7 +58,7 @@ export interface SkinLookOptions extends SubsurfaceOptions {
   poreStrength: number;
 }
 
-export const SKIN_LOOK_DEFAULTS: Readonly<Required<SkinLookOptions>> = Object.freeze({
+const SKIN_LOOK_DEFAULTS: Readonly<Required<SkinLookOptions>> = Object.freeze({
   color: [0.6, 0.35, 0.26] as const,
   roughness: 0.45,
   ior: 1.4,
@@ -101,7 +101,7 @@ export function createHeadMaterials(skin: Partial<SkinLookOptions> = {}): HeadMa
 }
 
 /** Skin: a physically based dielectric with sheen, pores in its normal map and a subsurface (wrap) diffuse term. */
-export function createSkinMaterial(options: Partial<SkinLookOptions> = {}, pores?: Texture): MeshPhysicalMaterial {
+function createSkinMaterial(options: Partial<SkinLookOptions> = {}, pores?: Texture): MeshPhysicalMaterial {
   const s: Required<SkinLookOptions> = { ...SKIN_LOOK_DEFAULTS, ...options };
   const normalMap = pores ?? poreTexture(generatePoreMap({ seed: s.poreSeed }), s.poreRepeat);
   const material = new MeshPhysicalMaterial({
@@ -120,13 +120,13 @@ export function createSkinMaterial(options: Partial<SkinLookOptions> = {}, pores
 }
 
 /** Sclera: slightly off-white and wet (glossy), with faint veins. */
-export function createScleraMaterial(): MeshPhysicalMaterial {
+function createScleraMaterial(): MeshPhysicalMaterial {
   const material = new MeshPhysicalMaterial({ name: 'sclera', map: colourTexture(generateScleraImage()), roughness: 0.22, ior: 1.38 });
   return addSubsurface(material, { wrap: [0.3, 0.2, 0.18], normalBlur: [0, 0, 0], cavity: 0 });
 }
 
 /** Iris: radial fibres, collarette, dark limbal ring and pupil, seen through the cornea. */
-export function createIrisMaterial(): MeshPhysicalMaterial {
+function createIrisMaterial(): MeshPhysicalMaterial {
   return new MeshPhysicalMaterial({ name: 'iris', map: colourTexture(generateIrisImage()), roughness: 0.6 });
 }
 
@@ -134,7 +134,7 @@ export function createIrisMaterial(): MeshPhysicalMaterial {
  * Cornea: clear and glossy. It adds only its reflection (blend one, one minus alpha, with no diffuse colour), so it
  * shows strong highlights and a reflection of the room over the iris without dimming it, and needs no transmission pass.
  */
-export function createCorneaMaterial(): MeshPhysicalMaterial {
+function createCorneaMaterial(): MeshPhysicalMaterial {
   return new MeshPhysicalMaterial({
     name: 'cornea',
     color: 0x000000,
@@ -155,7 +155,7 @@ export function createCorneaMaterial(): MeshPhysicalMaterial {
 }
 
 /** Teeth: off-white enamel, glossy, with light wrapping round their edges as through translucent enamel. */
-export function createTeethMaterial(): MeshPhysicalMaterial {
+function createTeethMaterial(): MeshPhysicalMaterial {
   const material = new MeshPhysicalMaterial({
     name: 'teeth',
     color: new Color(0.8, 0.75, 0.63),
@@ -167,7 +167,7 @@ export function createTeethMaterial(): MeshPhysicalMaterial {
 }
 
 /** Gums: pale coral pink, moist, with a reddish subsurface wrap like the lips'. */
-export function createGumsMaterial(): MeshPhysicalMaterial {
+function createGumsMaterial(): MeshPhysicalMaterial {
   const material = new MeshPhysicalMaterial({
     name: 'gums',
     color: new Color(0.62, 0.22, 0.22),
@@ -180,7 +180,7 @@ export function createGumsMaterial(): MeshPhysicalMaterial {
 }
 
 /** Tongue: pinkish red, moist but rough (papillae, from the pore map at a finer scale), with a soft sheen. */
-export function createTongueMaterial(pores: Texture): MeshPhysicalMaterial {
+function createTongueMaterial(pores: Texture): MeshPhysicalMaterial {
   const papillae = pores.clone(); // shares the image and its GPU upload; only the repeat differs
   papillae.repeat.set(24, 24);
   const material = new MeshPhysicalMaterial({
@@ -197,7 +197,7 @@ export function createTongueMaterial(pores: Texture): MeshPhysicalMaterial {
 }
 
 /** The normal map of pores, tiling. */
-export function poreTexture(map: PoreMap, repeat: number): DataTexture {
+function poreTexture(map: PoreMap, repeat: number): DataTexture {
   const t = new DataTexture(map.data, map.width, map.height, RGBAFormat, UnsignedByteType);
   t.name = 'pores';
   t.wrapS = t.wrapT = RepeatWrapping;
@@ -249,7 +249,7 @@ const SUBSURFACE_LIGHTS = (() => {
 })();
 
 /** Gives a physical material the subsurface look (wrap lighting, blurred diffuse normal, cavity darkening). */
-export function addSubsurface<M extends MeshPhysicalMaterial>(material: M, options: SubsurfaceOptions): M {
+function addSubsurface<M extends MeshPhysicalMaterial>(material: M, options: SubsurfaceOptions): M {
   const uniforms = {
     sfWrap: { value: new Vector3(...options.wrap) },
     sfNormalBlur: { value: new Vector3(...options.normalBlur) },

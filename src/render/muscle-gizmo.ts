@@ -1,4 +1,4 @@
-import { Euler, Object3D, Vector3, type Camera } from 'three';
+import { Euler, Object3D, type Vector3, type Camera } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { DEGREES } from '../core/math3';
 import { MuscleField } from '../core/muscles';

@@ -14,7 +14,7 @@ import {
   Mesh,
   MeshBasicMaterial,
   Quaternion,
-  Raycaster,
+  type Raycaster,
   SphereGeometry,
   Vector3,
   type Matrix4,
@@ -25,7 +25,7 @@ import { MuscleField } from '../core/muscles';
 import type { EulerDegrees, Muscle, Vec3 } from '../core/rig-types';
 
 /** Glyph colours by muscle type (sRGB), picked to stand apart from each other and from the skin. */
-export const MUSCLE_COLOURS: Readonly<Record<Muscle['type'], number>> = Object.freeze({
+const MUSCLE_COLOURS: Readonly<Record<Muscle['type'], number>> = Object.freeze({
   linear: 0xff4f5e,
   sphincter: 0xffc83d,
   lid: 0x3fd6ff,

@@ -26,7 +26,7 @@ export interface PoreMapOptions {
   strength: number;
 }
 
-export const PORE_MAP_DEFAULTS: Readonly<Required<PoreMapOptions>> = Object.freeze({
+const PORE_MAP_DEFAULTS: Readonly<Required<PoreMapOptions>> = Object.freeze({
   size: 512,
   seed: 1,
   poreSpacing: 5.5,
@@ -70,7 +70,7 @@ export function generatePoreMap(options: Partial<PoreMapOptions> = {}): PoreMap 
       const p1 = (2 * Math.PI * (fa * x + fb * y)) / n + w;
       const p2 = (2 * Math.PI * (fa * x - fb * y)) / n - w;
       // Narrow valleys between broad plateaus, as the skin's surface looks under a lens.
-      const furrow = Math.pow(Math.abs(Math.sin(0.5 * p1)), 0.35) + Math.pow(Math.abs(Math.sin(0.5 * p2)), 0.35);
+      const furrow = Math.abs(Math.sin(0.5 * p1)) ** 0.35 + Math.abs(Math.sin(0.5 * p2)) ** 0.35;
       height[i] = o.furrowDepth * (furrow - 2) + o.grain * (0.65 * grain[i] + 0.35 * grainFine[i]);
     }
   }
@@ -130,7 +130,7 @@ const encode = (v: number): number => Math.round(127.5 + 127.5 * v);
  * Tiling value noise on an n x n grid: random values on a lattice of `period` cells per side, smoothly interpolated;
  * -1..1. `period` must divide n.
  */
-export function valueNoise(n: number, period: number, random: () => number): Float32Array {
+function valueNoise(n: number, period: number, random: () => number): Float32Array {
   const lattice = Float32Array.from({ length: period * period }, () => 2 * random() - 1);
   const out = new Float32Array(n * n);
   const scale = period / n;

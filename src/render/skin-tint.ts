@@ -62,7 +62,7 @@ export function skinTint(positions: ArrayLike<number>, uvs: ArrayLike<number>, o
     // Lips: the vermilion narrows toward the corners; its border is fairly sharp, as a real lip's is.
     const across = Math.abs(x) / o.lipHalfWidth;
     if (across < 1 && z > mz - 0.02) {
-      const h = (y > 0 ? o.upperLip : o.lowerLip) * Math.pow(1 - across * across, 0.45);
+      const h = (y > 0 ? o.upperLip : o.lowerLip) * (1 - across * across) ** 0.45;
       const lip = (1 - smoothstep(0.75, 1.05, Math.abs(y) / Math.max(h, 1e-6))) * (1 - smoothstep(0.8, 1, across));
       for (let k = 0; k < 3; k++) tint[k] *= 1 + lip * (o.lipTint[k] - 1);
     }

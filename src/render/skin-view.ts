@@ -1,4 +1,4 @@
-import { Box3, BufferAttribute, DynamicDrawUsage, Sphere, type BufferGeometry, type Mesh } from 'three';
+import { type Box3, BufferAttribute, DynamicDrawUsage, type Sphere, type BufferGeometry, type Mesh } from 'three';
 
 /** Where solved skin frames come from (SkinSimulation). */
 export interface SkinFrameSource {
@@ -60,7 +60,7 @@ export class SkinView {
   /** Copies the newest solved frame into the mesh, if one arrived since the last call; returns whether one did. */
   update(): boolean {
     const source = this.source;
-    if (!source || !source.readFrame(this.positions.array as Float32Array, this.normals.array as Float32Array)) return false;
+    if (!source?.readFrame(this.positions.array as Float32Array, this.normals.array as Float32Array)) return false;
     // While the skin is awake nearly every vertex moves a little each frame (measured: over 95% for a forehead pull),
     // so each attribute is sent whole. The range objects are reused: addUpdateRange would allocate one per call.
     markWhole(this.positions, this.positionRange);

@@ -9,7 +9,7 @@ import { MusclePanel } from './muscle-panel';
 import { note } from './note';
 
 /** The keys, as the panel's hint shows them. */
-export const EDITOR_HINT =
+const EDITOR_HINT =
   'E: editor on/off (with no muscle selected) · click a muscle to select it ' +
   '· W move, E turn, R scale · Esc: deselect · Ctrl+Z undo, Ctrl+Shift+Z redo';
 

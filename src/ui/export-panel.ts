@@ -6,7 +6,7 @@ import { note } from './note';
 import { named } from './named';
 
 /** The file the export downloads as. */
-export const GLTF_FILE_NAME = 'softface.glb';
+const GLTF_FILE_NAME = 'softface.glb';
 
 /**
  * The Export folder: which Action Units and presets become morph targets (comma-separated lists), whether the loaded

@@ -28,7 +28,7 @@ export interface PanelsOptions {
 const PANELS_DEFAULTS: Required<Pick<PanelsOptions, 'width' | 'onResolution'>> = { width: 280, onResolution: null };
 
 /** The class of the column's root element (pages and tests find the panels by it). */
-export const PANELS_CLASS = 'softface-panels';
+const PANELS_CLASS = 'softface-panels';
 
 /**
  * A face's lil-gui column on the right. The short, closed folders come first and the long Action Units list last,

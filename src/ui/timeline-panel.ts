@@ -125,7 +125,7 @@ export class TimelinePanel {
     this.state.loop = state.loop;
     this.timeSlider.max(Math.max(state.duration, 0.01));
     for (const c of this.controllers) c.updateDisplay();
-    this.list.textContent = describe(this.face.getTimeline(), state.duration);
+    this.list.textContent = describeTimeline(this.face.getTimeline(), state.duration);
   }
 
   /** Adds the chosen onset / apex / offset action, starting at the timeline's current time. */
@@ -165,7 +165,7 @@ export class TimelinePanel {
 }
 
 /** The timeline as lines of text: its length and loop, each track's keys, each action's phases. */
-function describe(t: Timeline | null, duration: number): string {
+function describeTimeline(t: Timeline | null, duration: number): string {
   if (!t) return 'no timeline';
   const lines = [`${seconds(duration)}${t.loop ? ', looping' : ''}`];
   for (const [target, track] of Object.entries(t.tracks)) {

@@ -75,7 +75,8 @@ export class VideoPanel {
     if (this.abort) return;
     const s = this.state;
     const [width, height] = s.size.split(' x ').map(Number);
-    const abort = (this.abort = new AbortController());
+    const abort = new AbortController();
+    this.abort = abort;
     this.recordButton.disable();
     this.cancelButton.enable();
     this.progress.value = 0;

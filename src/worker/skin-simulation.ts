@@ -61,16 +61,16 @@ export interface SkinSimulationStats {
 }
 
 /** Cores a machine needs before `auto` adds a partner worker: one each for the page, the solver and its partner. */
-export const PARTNER_MIN_CORES = 4;
+const PARTNER_MIN_CORES = 4;
 
 /** Solve time the render loop gives the `main` mode solver per frame, in ms. */
-export const MAIN_THREAD_BUDGET_MS = 8;
+const MAIN_THREAD_BUDGET_MS = 8;
 /**
  * How long after an input `awaitsAnswer` may say the skin has not answered it: a solver's first frame of a new input
  * comes 20 to 60 ms after it on the medium head in the page (2 cores, software WebGL); a view waits no longer than this
  * for it.
  */
-export const ANSWER_WAIT_MS = 150;
+const ANSWER_WAIT_MS = 150;
 const SETTLE_POLL_MS = 8;
 
 /**

@@ -90,7 +90,8 @@ function init(m: InitMessage): void {
  */
 function startPartner(h: SolverHost): void {
   const board = createBoard();
-  const partner = (partnerWorker = spawnPartnerWorker());
+  const partner = spawnPartnerWorker();
+  partnerWorker = partner;
   partner.addEventListener('message', () => h.solver.attachPartner(new PartnerLink(board)), { once: true });
   partner.addEventListener('error', (event) => {
     event.preventDefault();
@@ -160,7 +161,10 @@ function run(m: RunMessage): void {
  * alone from the skin as it is, which the next frames finish solving; any other error ends the worker's solving.
  */
 function failed(error: unknown): void {
-  if (!(error instanceof PartnerTimeoutError) || !partnerWorker || !host) return fail(error);
+  if (!(error instanceof PartnerTimeoutError) || !partnerWorker || !host) {
+    fail(error);
+    return;
+  }
   host.solver.attachPartner(null);
   partnerWorker.terminate();
   partnerWorker = undefined;

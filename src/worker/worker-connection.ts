@@ -39,13 +39,18 @@ export class WorkerConnection {
       const onMessage = (event: MessageEvent<FromWorker>): void => {
         const m = event.data;
         if (m.type === 'ready') finish(() => resolve({ connection: new WorkerConnection(worker), ready: m }));
-        else if (m.type === 'error') finish(() => (worker.terminate(), reject(new Error(`the skin solver could not start: ${m.message}`))));
+        else if (m.type === 'error')
+          finish(() => {
+            worker.terminate();
+            reject(new Error(`the skin solver could not start: ${m.message}`));
+          });
       };
       const onError = (event: ErrorEvent): void => {
         event.preventDefault();
-        finish(
-          () => (worker.terminate(), reject(new Error(`the skin worker could not start: ${event.message || 'it could not be loaded'}`))),
-        );
+        finish(() => {
+          worker.terminate();
+          reject(new Error(`the skin worker could not start: ${event.message || 'it could not be loaded'}`));
+        });
       };
       worker.addEventListener('message', onMessage);
       worker.addEventListener('error', onError);
