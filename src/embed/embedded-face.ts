@@ -13,7 +13,6 @@ import { ENVIRONMENT_PATH, loadEnvironment } from '../render/environment';
 import { HairView } from '../render/hair-view';
 import { SkinView } from '../render/skin-view';
 import { HeadExporter } from '../render/gltf-export';
-import { Panels } from '../ui/panels';
 import type { SolverMode } from '../worker/protocol';
 import { SkinSimulation } from '../worker/skin-simulation';
 import { EyeDriver } from './eye-driver';
@@ -52,7 +51,11 @@ export class EmbeddedFace {
   private readonly view: HeadView;
   /** How to take back each part built so far, run last first by `dispose`. */
   private readonly undo: (() => void)[] = [];
-  private panels: Panels | undefined;
+  /** The panels (src/ui/Panels), imported when first shown. */
+  private panels: { dispose(): void } | undefined;
+  /** What the last `setPanels` asked for: a call that comes while the panels load has the last word. */
+  private panelsWanted = false;
+  private background: string;
   private disposed = false;
   /** How to take back the shown head and what runs it (solver, glyphs, editor, eyes), last first. */
   private mounted: (() => void)[] = [];
@@ -84,6 +87,8 @@ export class EmbeddedFace {
     Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
     this.handle.attachView(this.view);
     this.handle.attachHeads(this);
+    this.handle.attachShell(this);
+    this.background = options.background;
     // One player for the face's life: a timeline keeps playing across a head change.
     const player = new TimelinePlayer(this.handle, this.view);
     this.handle.attachTimeline(player);
@@ -110,23 +115,27 @@ export class EmbeddedFace {
     return face;
   }
 
-  /** Shows or removes the face's panels. */
-  setPanels(on: boolean): void {
+  /** Shows or removes the face's panels; resolves once they are shown or gone (see FaceHandle.setPanels). */
+  async setPanels(on: boolean): Promise<void> {
     checkFaceOption('panels', on, 'setPanels');
     this.alive();
-    if (on === !!this.panels) return;
-    if (on) {
-      const o = this.options;
-      this.panels = new Panels(this.handle, {
-        container: this.element,
-        frames: this.view,
-        resolution: o.resolution,
-        onResolution: o.onResolution,
-      });
-    } else {
-      this.panels!.dispose();
+    this.panelsWanted = on;
+    if (!on) {
+      this.panels?.dispose();
       this.panels = undefined;
+      return;
     }
+    if (this.panels) return;
+    // Loaded on first use: the library's entry imports nothing from src/ui/, and lil-gui comes only with the panels.
+    const { Panels } = await import('../ui/panels');
+    if (this.disposed || !this.panelsWanted || this.panels) return;
+    const o = this.options;
+    this.panels = new Panels(this.handle, {
+      container: this.element,
+      frames: this.view,
+      resolution: o.resolution,
+      onResolution: o.onResolution,
+    });
   }
 
   /** Whether the face shows its panels. */
@@ -139,6 +148,12 @@ export class EmbeddedFace {
     checkFaceOption('background', background, 'setBackground');
     this.alive();
     this.view.setBackground(viewBackground(background));
+    this.background = background;
+  }
+
+  /** The background: `"#rrggbb"` or `"transparent"`. */
+  getBackground(): string {
+    return this.background;
   }
 
   /** Stops and frees everything the face is made of and removes its element; a second call does nothing. */
@@ -216,7 +231,7 @@ export class EmbeddedFace {
     if (Object.keys(o.light).length > 0) this.handle.setLight(o.light);
     if (Object.keys(o.appearance).length > 0) this.handle.setAppearance(o.appearance);
     if (o.eyeSimulation) this.handle.setEyeSimulation(true);
-    if (o.panels) this.setPanels(true);
+    if (o.panels) await this.setPanels(true);
   }
 
   /**

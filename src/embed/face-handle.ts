@@ -152,6 +152,14 @@ export interface FaceHeads {
   landmarkGuide(): LandmarkGuide | undefined;
 }
 
+/** The face's element around its canvas: the panels and the background (EmbeddedFace). */
+export interface FaceShell {
+  setPanels(on: boolean): Promise<void>;
+  hasPanels(): boolean;
+  setBackground(background: string): void;
+  getBackground(): string;
+}
+
 /** What carries over from one head to the next: the expression, the eye simulation, the skin parameters. */
 export interface CarriedState {
   expression: HashExpression;
@@ -244,6 +252,7 @@ export class FaceHandle {
   private autosaveStatus: (() => 'clean' | 'pending' | 'saved' | 'failed') | undefined;
   private editorView: FaceEditorView | undefined;
   private heads: FaceHeads | undefined;
+  private shell: FaceShell | undefined;
   private editorOn = false;
   private selected: string | null = null;
   private gizmoMode: GizmoMode = 'translate';
@@ -398,6 +407,37 @@ export class FaceHandle {
    */
   attachHeads(heads: FaceHeads): void {
     this.heads = heads;
+  }
+
+  /**
+   * Connects the face's element: `setPanels`, `setBackground`.
+   * @internal the face's own wiring, left out of the library's type declarations
+   */
+  attachShell(shell: FaceShell): void {
+    this.shell = shell;
+  }
+
+  /**
+   * Shows or removes the face's panels. They load on first use (lil-gui with them), so a page that never shows them
+   * never fetches them; resolves once they are shown or gone. A value that is not a boolean rejects, naming it.
+   */
+  async setPanels(on: boolean): Promise<void> {
+    return this.shellSide().setPanels(on);
+  }
+
+  /** Whether the face shows its panels. */
+  hasPanels(): boolean {
+    return this.shellSide().hasPanels();
+  }
+
+  /** Changes the background: a colour `"#rrggbb"` or `"transparent"`; a bad value throws naming it, and nothing changes. */
+  setBackground(background: string): void {
+    this.shellSide().setBackground(background);
+  }
+
+  /** The background: `"#rrggbb"` or `"transparent"`. */
+  getBackground(): string {
+    return this.shellSide().getBackground();
   }
 
   /**
@@ -1281,6 +1321,12 @@ export class FaceHandle {
     this.alive();
     if (!this.view) throw new Error('the face has no view yet');
     return this.view;
+  }
+
+  private shellSide(): FaceShell {
+    this.alive();
+    if (!this.shell) throw new Error('the face has no element yet');
+    return this.shell;
   }
 
   private headSide(): FaceHeads {

@@ -79,10 +79,12 @@ export class SoftFaceElement extends HTMLElement {
     if (attribute === 'expression' || attribute === 'preset') face.handle.setExpression(this.expression());
     else if (attribute === 'eye-simulation') face.handle.setEyeSimulation(next.eyeSimulation);
     else if (attribute === 'panels') {
-      face.setPanels(next.panels);
-      this.changed('panels');
+      face.handle.setPanels(next.panels).then(
+        () => this.changed('panels'),
+        (error: Error) => this.report(error),
+      );
     } else if (attribute === 'background') {
-      face.setBackground(next.background);
+      face.handle.setBackground(next.background);
       this.changed('background');
     }
   }
@@ -96,6 +98,7 @@ export class SoftFaceElement extends HTMLElement {
       resolution: v.resolution,
       solver: v.solver,
       background: v.background,
+      panels: v.panels,
       ...(carried
         ? { expression: carried.expression, light: carried.light, appearance: carried.appearance, eyeSimulation: carried.eyeSimulation }
         : {}),
@@ -112,7 +115,8 @@ export class SoftFaceElement extends HTMLElement {
           face.handle.setMuscleDisplay(carried.muscles);
           face.handle.setSkinParameters(carried.skin);
         } else this.applyAttributes(face);
-        face.setPanels(this.values.panels);
+        // Shown by the build; an attribute changed meanwhile has the last word.
+        if (this.values.panels !== v.panels) face.handle.setPanels(this.values.panels).catch((error: Error) => this.report(error));
         this.stopChanges = face.handle.onChange((change) => this.changed(change));
         this.dispatchEvent(new Event('ready'));
       },
