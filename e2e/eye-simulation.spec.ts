@@ -17,9 +17,24 @@ test('the eye simulation blinks through the lids and moves the gaze within 10 s,
 
   await checkbox.check();
   expect(await page.evaluate(() => window.face.getEyeSimulation())).toBe(true);
+  // Bad options are refused, naming the option, and the simulation runs on as it was.
+  const refused = await page.evaluate(() => {
+    try {
+      window.face.setEyeSimulation(true, { blinkHold: -1 });
+      return 'accepted';
+    } catch (error) {
+      return (error as Error).message;
+    }
+  });
+  expect(refused).toBe('setEyeSimulation: blinkHold: expected a number from 0 to 10000, got -1');
+  expect(await page.evaluate(() => window.face.getEyeSimulation())).toBe(true);
 
   const run = await page.evaluate(async (eye) => {
     const face = window.face;
+    // Blinks every 1.5 to 2 s, each held closed for 600 ms: long enough for the skin to close the lid on a machine
+    // that solves few frames a second (the default hold of 50 ms reached 1 to 8 mm of the lid's travel, depending on
+    // the machine's load).
+    face.setEyeSimulation(true, { blinkIntervalMin: 1500, blinkIntervalMax: 2000, blinkHold: 600, holdMin: 300, holdMax: 800 });
     const { rest } = face.getSkin();
     // Skin vertices of the left upper lid: on the eyeball (within 4 mm of its surface), in front of it, above its centre.
     const lidVertices: number[] = [];
@@ -58,8 +73,8 @@ test('the eye simulation blinks through the lids and moves the gaze within 10 s,
       const sliders = face.getActionUnits();
       if (sliders.AU43L !== 0 || sliders.AU5L !== 0 || sliders.AU12L !== 0.5) sliderMoved = true;
       if (stats.blinks > 0 && firstBlinkAt < 0) firstBlinkAt = t;
-      // Done once a blink and a saccade happened and the blink has had 600 ms to show on the skin.
-      if ((stats.blinks > 0 && stats.saccades > 0 && t > firstBlinkAt + 600) || t > 12_000) break;
+      // Done once a blink and a saccade happened and the blink (850 ms) has had 1.2 s to show on the skin.
+      if ((stats.blinks > 0 && stats.saccades > 0 && t > firstBlinkAt + 1200) || t > 12_000) break;
     }
     return {
       lidVertices: lidVertices.length,
@@ -77,17 +92,15 @@ test('the eye simulation blinks through the lids and moves the gaze within 10 s,
   expect(run.lidVertices).toBeGreaterThan(3);
   expect(run.stats.blinks).toBeGreaterThanOrEqual(1);
   expect(run.stats.saccades).toBeGreaterThanOrEqual(1);
-  expect(run.firstBlinkAt).toBeLessThan(10_000);
+  expect(run.firstBlinkAt).toBeLessThan(4_000); // due 1.5 to 2 s after switching on, seen after the first frames
   expect(run.gazes).toBeGreaterThan(1);
   expect(Math.abs(run.stats.gaze.yaw)).toBeLessThanOrEqual(30);
   expect(run.stats.gaze.pitch).toBeGreaterThanOrEqual(-20);
   expect(run.stats.gaze.pitch).toBeLessThanOrEqual(25);
-  // The blink reached the skin: the upper lid came down, more than the gaze alone moved it. How far depends on how many
-  // solver frames fit in the blink's 300 ms, which a busy machine drawing in software does not promise (on a quiet
-  // one about 3 to 8 mm; 1 mm seen under load), so this asks for half a millimetre more than without the blink.
-  expect(run.maxOverlay).toBeGreaterThan(0.99); // the closed phase (50 ms) is the peak of the frame that spans it
+  // The blink reached the skin: the upper lid came down, 3 mm more than the gaze alone moved it.
+  expect(run.maxOverlay).toBeGreaterThan(0.99);
   expect(run.before).toBeLessThan(0.0005);
-  expect(run.maxDrop).toBeGreaterThan(run.maxDropNoBlink + 0.0005);
+  expect(run.maxDrop).toBeGreaterThan(run.maxDropNoBlink + 0.003);
   // The user's sliders stayed where they were.
   expect(run.sliderMoved).toBe(false);
 

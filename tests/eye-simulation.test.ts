@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { EYE_SIMULATION_DEFAULTS as D, EyeSimulation, SeededRandom } from '../src/core/eye-simulation';
+import { checkEyeSimulationOptions, EYE_SIMULATION_DEFAULTS as D, EyeSimulation, SeededRandom } from '../src/core/eye-simulation';
 
 interface Run {
   blinkStarts: number[];
@@ -168,5 +168,26 @@ describe('the eye simulation over a simulated minute', () => {
   it('refuses options whose blinks could not fit between intervals', () => {
     expect(() => new EyeSimulation({ blinkIntervalMin: 200 })).toThrow(/blink intervals/);
     expect(() => new EyeSimulation({ holdMin: 4000 })).toThrow(/maximum below/);
+  });
+});
+
+describe('checkEyeSimulationOptions', () => {
+  it('accepts known options within their ranges and returns them', () => {
+    const o = { seed: 7, blinkHold: 600, blinkIntervalMin: 1500, blinkIntervalMax: 2000 };
+    expect(checkEyeSimulationOptions(o, 'test')).toBe(o);
+    expect(() => new EyeSimulation(o)).not.toThrow();
+  });
+
+  it.each([
+    [null, 'test: expected an object of eye simulation options, got null'],
+    [[1], 'test: expected an object of eye simulation options, got an array'],
+    [{ blinkHoldMs: 5 }, 'test: unknown option "blinkHoldMs" (options: seed, blinkIntervalMin,'],
+    [{ blinkHold: -1 }, 'test: blinkHold: expected a number from 0 to 10000, got -1'],
+    [{ blinkHold: Number.NaN }, 'test: blinkHold: expected a number from 0 to 10000, got NaN'],
+    [{ seed: 1.5 }, 'test: seed: expected an integer from 0 to 4294967295, got 1.5'],
+    [{ yawMin: 20, yawMax: 10 }, 'test: yawMin: expected at most yawMax (10), got 20'],
+    [{ blinkIntervalMin: 200 }, 'test: blinkIntervalMin: expected more than a blink and a saccade (380 ms), got 200'],
+  ])('refuses %j, naming what is wrong', (value, message) => {
+    expect(() => checkEyeSimulationOptions(value, 'test')).toThrow(message);
   });
 });

@@ -57,6 +57,59 @@ export const EYE_SIMULATION_DEFAULTS: Readonly<Required<EyeSimulationOptions>> =
   lidUpPerDegree: 0.016,
 });
 
+/** Each option's accepted range, as [least, greatest] (times in ms, angles in degrees). */
+const OPTION_RANGES: Readonly<Record<keyof EyeSimulationOptions, readonly [number, number]>> = {
+  seed: [0, 2 ** 32 - 1],
+  blinkIntervalMin: [0, 600_000],
+  blinkIntervalMax: [0, 600_000],
+  blinkClose: [0, 10_000],
+  blinkHold: [0, 10_000],
+  blinkOpen: [0, 10_000],
+  holdMin: [0, 600_000],
+  holdMax: [0, 600_000],
+  saccadeMin: [1, 1000],
+  saccadeMax: [1, 1000],
+  yawMin: [-45, 45],
+  yawMax: [-45, 45],
+  pitchMin: [-45, 45],
+  pitchMax: [-45, 45],
+  lidDownPerDegree: [0, 0.1],
+  lidUpPerDegree: [0, 0.1],
+};
+
+/**
+ * Checks eye simulation options given by a caller (`where` names it in messages): an object of known options, each a
+ * number in its range (the seed an integer), whose ranges are ordered and whose blinks fit between each other. Returns
+ * the options; throws `<where>: <option>: expected …, got …` otherwise.
+ */
+export function checkEyeSimulationOptions(value: unknown, where: string): Partial<EyeSimulationOptions> {
+  if (typeof value !== 'object' || value === null || Array.isArray(value))
+    throw new Error(`${where}: expected an object of eye simulation options, got ${Array.isArray(value) ? 'an array' : String(value)}`);
+  const names = Object.keys(OPTION_RANGES);
+  for (const [key, v] of Object.entries(value)) {
+    const range = OPTION_RANGES[key as keyof EyeSimulationOptions];
+    if (!range) throw new Error(`${where}: unknown option "${key}" (options: ${names.join(', ')})`);
+    const integer = key === 'seed';
+    if (typeof v !== 'number' || !Number.isFinite(v) || v < range[0] || v > range[1] || (integer && !Number.isInteger(v)))
+      throw new Error(
+        `${where}: ${key}: expected ${integer ? 'an integer' : 'a number'} from ${range[0]} to ${range[1]}, got ${String(v)}`,
+      );
+  }
+  const o = { ...EYE_SIMULATION_DEFAULTS, ...(value as Partial<EyeSimulationOptions>) };
+  for (const [min, max] of [
+    ['blinkIntervalMin', 'blinkIntervalMax'],
+    ['holdMin', 'holdMax'],
+    ['saccadeMin', 'saccadeMax'],
+    ['yawMin', 'yawMax'],
+    ['pitchMin', 'pitchMax'],
+  ] as const)
+    if (o[min] > o[max]) throw new Error(`${where}: ${min}: expected at most ${max} (${o[max]}), got ${o[min]}`);
+  const blink = o.blinkClose + o.blinkHold + o.blinkOpen + o.saccadeMax;
+  if (!(o.blinkIntervalMin > blink))
+    throw new Error(`${where}: blinkIntervalMin: expected more than a blink and a saccade (${blink} ms), got ${o.blinkIntervalMin}`);
+  return value as Partial<EyeSimulationOptions>;
+}
+
 /** A small seeded generator (mulberry32): uniform numbers in [0, 1), the same sequence for the same seed. */
 export class SeededRandom {
   private readonly draw: () => number;

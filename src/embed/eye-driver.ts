@@ -28,7 +28,7 @@ const LID_IDS: readonly string[] = ['AU43', 'AU5'];
  * face's overlay, so blinks happen on the skin, through the lid muscles, on top of whatever the sliders say.
  */
 export class EyeDriver implements FaceEyes {
-  private readonly simulation: EyeSimulation;
+  private simulation: EyeSimulation;
   private readonly o: Required<EyeDriverOptions>;
   private readonly rest: Quaternion[];
   private readonly euler = new Euler(0, 0, 0, 'YXZ');
@@ -54,8 +54,15 @@ export class EyeDriver implements FaceEyes {
     this.stopFrames = frames.onFrame((now) => this.frame(now));
   }
 
-  /** Starts (from a fresh clock and zeroed counts) or stops the simulation; stopping puts eyes and lids back. */
-  setEnabled(on: boolean): void {
+  /**
+   * Starts (from a fresh clock and zeroed counts) or stops the simulation; stopping puts eyes and lids back. With
+   * `simulation` options (checked by the caller), the simulation takes them over the defaults and starts afresh.
+   */
+  setEnabled(on: boolean, simulation?: Partial<EyeSimulationOptions>): void {
+    if (simulation) {
+      this.simulation = new EyeSimulation(simulation);
+      if (on && this.on) this.on = false;
+    }
     if (on === this.on) return;
     this.on = on;
     if (on) {

@@ -1,3 +1,4 @@
+import { checkEyeSimulationOptions, type EyeSimulationOptions } from '../core/eye-simulation';
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
 import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../core/muscle-display';
 import { newMuscle, type RigDocument, type UpdateOptions } from '../core/rig-document';
@@ -138,7 +139,7 @@ export interface EyeStats {
 
 /** The eye simulation the handle switches (EyeDriver). */
 export interface FaceEyes {
-  setEnabled(on: boolean): void;
+  setEnabled(on: boolean, simulation?: Partial<EyeSimulationOptions>): void;
   enabled(): boolean;
   stats(): EyeStats;
 }
@@ -872,12 +873,15 @@ export class FaceHandle {
 
   /**
    * Starts or stops the eye simulation (thesis 5.3.3): random blinks through the lids and gaze saccades, added on top
-   * of the sliders. Off by default, so that pictures of the face are repeatable.
+   * of the sliders. Off by default, so that pictures of the face are repeatable. `options` (seed, blink intervals and
+   * phases, fixation and saccade times, gaze range, how far the lids follow the gaze; README, "Eye simulation") replace
+   * the simulation's over its defaults, and it starts afresh; bad ones throw, naming the option, and change nothing.
    */
-  setEyeSimulation(on: boolean): void {
+  setEyeSimulation(on: boolean, options?: Partial<EyeSimulationOptions>): void {
     if (typeof on !== 'boolean') throw new Error(`setEyeSimulation: needs a boolean, got ${String(on)}`);
+    if (options !== undefined) checkEyeSimulationOptions(options, 'setEyeSimulation');
     this.running();
-    this.eyeSimulation().setEnabled(on);
+    this.eyeSimulation().setEnabled(on, options);
     this.emit('eyes');
   }
 

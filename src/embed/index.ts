@@ -7,6 +7,7 @@ export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay
 export type { Easing, Timeline, TimelineAction, TimelineKey, TimelineTrack } from '../core/timeline';
 export type { TimelineError } from '../core/timeline-schema';
 export type { ActionUnitListing, PresetListing } from '../core/facs';
+export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/eye-simulation';
 export type { SkinParameters } from '../core/solver';
 export type { Rig } from '../core/rig-types';
 export type { RenderTiming } from '../render/head-view';
