@@ -20,8 +20,8 @@ export default defineConfig(({ mode }) => {
     base: './',
     resolve: {
       alias: [
-        { find: /^\.\/spawn-skin-worker$/, replacement: path('src/worker/spawn-skin-worker-inline.ts') },
-        { find: /^\.\/spawn-partner-worker$/, replacement: path('src/worker/spawn-partner-worker-inline.ts') },
+        { find: /^\.\/spawn-skin-worker$/, replacement: path('src/sim/main/spawn-skin-worker-inline.ts') },
+        { find: /^\.\/spawn-partner-worker$/, replacement: path('src/sim/thread/spawn-partner-worker-inline.ts') },
       ],
     },
     worker: { format: 'es' },

@@ -1,7 +1,7 @@
 import { createFace } from '../embed/create-face';
 import { encodeExpression } from '../embed/expression-hash';
 import { RESOLUTIONS, type Resolution } from '../embed/face-options';
-import { chooseSolverMode, chooseWorkers } from '../worker/solver-mode';
+import { chooseSolverMode, chooseWorkers } from '../sim/main/solver-mode';
 import { HashSync } from './hash-sync';
 
 /** How often the status bar's solver line is refreshed, in ms (text changes allocate, so not every frame). */

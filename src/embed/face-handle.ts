@@ -10,7 +10,7 @@ import type { GizmoMode, GizmoPart } from '../render/muscle-gizmo';
 import type { MaterialDescription } from '../render/materials';
 import type { HairSnapshot } from '../render/hair-view';
 import type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
-import type { SkinSimulation, SkinSimulationStats } from '../worker/skin-simulation';
+import type { SkinSimulation, SkinSimulationStats } from '../sim/main/skin-simulation';
 import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
 import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader';
 import type { LandmarkGuide, LandmarkGuideState } from './landmark-guide';

@@ -1,7 +1,7 @@
 import type { RigChange, RigDocument } from '../core/rig-document';
 import type { Rig } from '../core/rig-types';
 import type { MuscleView } from '../render/muscle-view';
-import type { SkinSimulation } from '../worker/skin-simulation';
+import type { SkinSimulation } from '../sim/main/skin-simulation';
 import type { FaceExpression } from './face-expression';
 
 /** What an edited rig reaches on a face: the solver, the glyphs, the expression, and the jaw's teeth. */

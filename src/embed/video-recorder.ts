@@ -1,6 +1,6 @@
 import type { HeadView, ViewCapture } from '../render/head-view';
 import type { SkinView } from '../render/skin-view';
-import type { SkinSimulation } from '../worker/skin-simulation';
+import type { SkinSimulation } from '../sim/main/skin-simulation';
 import type { FaceHandle } from './face-handle';
 import { videoFrameCount, type VideoOptions } from './video-options';
 

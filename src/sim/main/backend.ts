@@ -1,6 +1,6 @@
 import type { ChangedInputs } from './input-staging';
-import type { FrameSlot } from './layout';
-import type { RigEdit, SolverClock, SolverMode } from './protocol';
+import type { FrameSlot } from '../shared/layout';
+import type { RigEdit, SolverClock, SolverMode } from '../shared/protocol';
 
 /** How SkinSimulation reaches a solver: where it runs, how inputs get there and how frames come back. */
 export interface SolverBackend {

@@ -1,7 +1,7 @@
-import type { Collider } from '../core/colliders';
-import { validateMuscle } from '../core/muscles';
-import type { Muscle } from '../core/rig-types';
-import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../core/solver';
+import type { Collider } from '../../core/colliders';
+import { validateMuscle } from '../../core/muscles';
+import type { Muscle } from '../../core/rig-types';
+import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../../core/solver';
 import type { SolverBackend } from './backend';
 import { InputStaging } from './input-staging';
 import {
@@ -18,11 +18,11 @@ import {
   slotSolveMs,
   slotWorkers,
   type ControlViews,
-} from './layout';
+} from '../shared/layout';
 import { MainBackend } from './main-backend';
-import type { RigEdit, SolverClock, SolverMode } from './protocol';
+import type { RigEdit, SolverClock, SolverMode } from '../shared/protocol';
 import { SharedBackend } from './shared-backend';
-import { SolverHost } from './solver-host';
+import { SolverHost } from '../shared/solver-host';
 import { TransferBackend } from './transfer-backend';
 import { WorkerConnection } from './worker-connection';
 

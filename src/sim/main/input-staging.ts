@@ -5,7 +5,7 @@ import {
   validateParameters,
   writeMuscleTargets,
   type SkinParameters,
-} from '../core/solver';
+} from '../../core/solver';
 import {
   CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,
@@ -16,7 +16,7 @@ import {
   readParameters,
   writeParameters,
   type ControlViews,
-} from './layout';
+} from '../shared/layout';
 
 /** Which parts of the inputs a published batch changed. */
 export interface ChangedInputs {

@@ -7,8 +7,8 @@ import {
   slotByteOffset,
   type FrameSlot,
   type SlotLayout,
-} from './layout';
-import type { RigEdit, SolverClock } from './protocol';
+} from '../shared/layout';
+import type { RigEdit, SolverClock } from '../shared/protocol';
 import type { WorkerConnection } from './worker-connection';
 
 /** Tries to copy a frame this many times when the worker keeps publishing during the copy, then keeps the last. */

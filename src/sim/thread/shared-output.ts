@@ -7,8 +7,8 @@ import {
   slotByteOffset,
   type FrameSlot,
   type SlotLayout,
-} from './layout';
-import type { SolverHost } from './solver-host';
+} from '../shared/layout';
+import type { SolverHost } from '../shared/solver-host';
 
 /**
  * The worker's side of the shared output block: writes each frame into the slot the reader is not pointed at, then

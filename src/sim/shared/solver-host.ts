@@ -1,12 +1,12 @@
-import type { Collider } from '../core/colliders';
+import type { Collider } from '../../core/colliders';
 import type { RigEdit } from './protocol';
-import { JawFollower } from '../core/jaw-follower';
-import { MuscleRig } from '../core/muscles';
-import { mulberry32 } from '../core/random';
-import type { Muscle } from '../core/rig-types';
-import type { Memory } from '../core/memory';
-import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../core/solver';
-import { buildTopology, describeTopology, type SkinTopology } from '../core/topology';
+import { JawFollower } from '../../core/jaw-follower';
+import { MuscleRig } from '../../core/muscles';
+import { mulberry32 } from '../../core/random';
+import type { Muscle } from '../../core/rig-types';
+import type { Memory } from '../../core/memory';
+import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../../core/solver';
+import { buildTopology, describeTopology, type SkinTopology } from '../../core/topology';
 import {
   CONSTRAINT_INDEX,
   CONSTRAINT_KINDS,

@@ -1,8 +1,8 @@
 import type { SolverBackend } from './backend';
-import { ControlReader } from './control-reader';
-import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
-import type { RigEdit, SolverClock } from './protocol';
-import type { SolverHost } from './solver-host';
+import { ControlReader } from '../shared/control-reader';
+import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from '../shared/layout';
+import type { RigEdit, SolverClock } from '../shared/protocol';
+import type { SolverHost } from '../shared/solver-host';
 
 /**
  * `main` mode: the same solver host on the main thread, stepped from the render loop within a time budget. Inputs go

@@ -1,4 +1,4 @@
-import type { FromWorker, InitMessage, ReadyMessage, ToWorker } from './protocol';
+import type { FromWorker, InitMessage, ReadyMessage, ToWorker } from '../shared/protocol';
 import { spawnSkinWorker } from './spawn-skin-worker';
 
 /** The skin worker, started and initialised: its messages, its failure if any, and its end. */

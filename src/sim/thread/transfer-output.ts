@@ -1,5 +1,5 @@
-import { frameSlot, type FrameSlot, type SlotLayout } from './layout';
-import type { SolverHost } from './solver-host';
+import { frameSlot, type FrameSlot, type SlotLayout } from '../shared/layout';
+import type { SolverHost } from '../shared/solver-host';
 
 /**
  * The worker's side of `transfer` mode: two slot buffers go back and forth. A frame solved while both are on the

@@ -4,13 +4,13 @@
  * inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
-import { createBoard, PartnerTimeoutError } from '../core/partner-board';
-import { PartnerLink } from '../core/partner-link';
-import { ControlReader } from './control-reader';
-import { contractionCapacity, controlLayout, controlViews, initControl, slotLayout } from './layout';
-import type { FromWorker, InitMessage, RunMessage, ToWorker } from './protocol';
+import { createBoard, PartnerTimeoutError } from '../../core/partner-board';
+import { PartnerLink } from '../../core/partner-link';
+import { ControlReader } from '../shared/control-reader';
+import { contractionCapacity, controlLayout, controlViews, initControl, slotLayout } from '../shared/layout';
+import type { FromWorker, InitMessage, RunMessage, ToWorker } from '../shared/protocol';
 import { SharedOutput } from './shared-output';
-import { SolverHost } from './solver-host';
+import { SolverHost } from '../shared/solver-host';
 import { spawnPartnerWorker } from './spawn-partner-worker';
 import { TransferOutput } from './transfer-output';
 

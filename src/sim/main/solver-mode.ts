@@ -1,4 +1,4 @@
-import type { SolverMode } from './protocol';
+import type { SolverMode } from '../shared/protocol';
 
 const MODES: readonly SolverMode[] = ['shared', 'transfer', 'main'];
 

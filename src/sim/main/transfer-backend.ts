@@ -1,7 +1,7 @@
 import type { SolverBackend } from './backend';
 import type { ChangedInputs } from './input-staging';
-import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from './layout';
-import type { RigEdit, SolverClock } from './protocol';
+import { frameSlot, type ControlViews, type FrameSlot, type SlotLayout } from '../shared/layout';
+import type { RigEdit, SolverClock } from '../shared/protocol';
 import type { WorkerConnection } from './worker-connection';
 
 /**

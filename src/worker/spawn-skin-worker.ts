@@ -1,4 +1,0 @@
-/** Starts the skin worker from its own module file, beside this one. */
-export function spawnSkinWorker(): Worker {
-  return new Worker(new URL('./skin-worker.ts', import.meta.url), { type: 'module', name: 'softface skin solver' });
-}
