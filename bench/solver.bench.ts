@@ -15,8 +15,8 @@
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, platform } from 'node:os';
 import { NodeIO } from '@gltf-transform/core';
-import { SkinSolver } from '../src/core/solver';
-import { buildTopology, type SkinTopology } from '../src/core/topology';
+import { SkinSolver } from '../src/core/solver/solver';
+import { buildTopology, type SkinTopology } from '../src/core/solver/topology';
 import { loadHeadSimulation, type Resolution } from '../tests/fixtures/head-simulation';
 import { startPartnerThread } from '../tests/fixtures/partner';
 

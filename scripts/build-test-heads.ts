@@ -15,7 +15,7 @@ import { MeshoptSimplifier } from 'meshoptimizer';
 import { writeGlb } from './model/glb';
 import { cutHead, DECIMETRE, MATERIALS, sourceMesh } from './model/head';
 import { parseObj } from './model/obj';
-import { faceCount, toRenderMesh, vertexCount, type PolyMesh } from '../src/core/polymesh';
+import { faceCount, toRenderMesh, vertexCount, type PolyMesh } from '../src/core/head/polymesh';
 
 const args = process.argv.slice(2);
 const outIndex = args.indexOf('--out');

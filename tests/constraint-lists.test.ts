@@ -12,8 +12,8 @@ import {
   PART_ODD_SEAM,
   PARTS,
   vertexBlocks,
-} from '../src/core/constraint-lists';
-import { buildTopology } from '../src/core/topology';
+} from '../src/core/solver/constraint-lists';
+import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 
 describe('constraint lists', () => {

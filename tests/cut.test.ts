@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { boundaryLoops, cutAlongLoop, findEdgeLoop } from '../scripts/model/cut';
-import { faceCount, vertexCount } from '../src/core/polymesh';
+import { faceCount, vertexCount } from '../src/core/head/polymesh';
 import { cappedTube, grid } from './fixtures/meshes';
 
 describe('edge loops and the cut', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { EditHistory } from '../src/core/edit-history';
+import { EditHistory } from '../src/core/rig/edit-history';
 
 /** A counter edited through the history, as RigDocument drives it. */
 function counter(limit?: number) {

@@ -1,5 +1,5 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { ACTION_UNITS } from '../src/core/facs';
+import { ACTION_UNITS } from '../src/core/expression/facs';
 import { mulberry32 } from '../src/core/random';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES, returnToRest } from './fixtures/head-simulation';
 

@@ -1,5 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { checkEyeSimulationOptions, EYE_SIMULATION_DEFAULTS as D, EyeSimulation, SeededRandom } from '../src/core/eye-simulation';
+import {
+  checkEyeSimulationOptions,
+  EYE_SIMULATION_DEFAULTS as D,
+  EyeSimulation,
+  SeededRandom,
+} from '../src/core/expression/eye-simulation';
 
 interface Run {
   blinkStarts: number[];

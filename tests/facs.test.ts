@@ -1,8 +1,8 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { ACTION_UNITS, ExpressionState, gradeOf } from '../src/core/facs';
-import { parseRigText } from '../src/core/rig-schema';
-import type { LinearMuscle, MuscleSide, Rig } from '../src/core/rig-types';
+import { ACTION_UNITS, ExpressionState, gradeOf } from '../src/core/expression/facs';
+import { parseRigText } from '../src/core/rig/rig-schema';
+import type { LinearMuscle, MuscleSide, Rig } from '../src/core/rig/rig-types';
 
 const DEFAULT_RIG = parseRigText(readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8'), 'default.json');
 

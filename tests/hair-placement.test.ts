@@ -1,7 +1,7 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { poseHair, type HairStrands } from '../src/core/hair';
-import { placeBrows, placeLashes } from '../src/core/hair-placement';
-import { DEFAULT_LANDMARKS } from '../src/core/landmarks';
+import { poseHair, type HairStrands } from '../src/core/hair/hair';
+import { placeBrows, placeLashes } from '../src/core/hair/hair-placement';
+import { DEFAULT_LANDMARKS } from '../src/core/head/landmarks';
 import { loadHeadSkin } from './fixtures/head';
 import { faceLandmarks } from './fixtures/face-landmarks';
 

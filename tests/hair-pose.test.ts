@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { anchorFrame, poseHair, ribbonTriangles, strandsAtRest, ROOT_VERTICES, type HairStrands } from '../src/core/hair';
+import { anchorFrame, poseHair, ribbonTriangles, strandsAtRest, ROOT_VERTICES, type HairStrands } from '../src/core/hair/hair';
 import { mulberry32 } from '../src/core/random';
 
 /** A bumpy sheet in the xy plane facing +z: positions, normals (from the height's slope) and triangles. */

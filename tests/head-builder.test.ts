@@ -3,7 +3,7 @@ import { boundaryLoops } from '../scripts/model/cut';
 import { writeGlb } from '../scripts/model/glb';
 import { buildHeadLevels, cutHead, sourceMesh } from '../scripts/model/head';
 import { parseObj } from '../scripts/model/obj';
-import { vertexCount } from '../src/core/polymesh';
+import { vertexCount } from '../src/core/head/polymesh';
 import { syntheticHm08Obj } from './fixtures/synthetic-hm08';
 
 describe('head model builder (on a synthetic hm08-like mesh)', () => {

@@ -1,13 +1,13 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { eulerMatrix } from '../src/core/math3';
-import { applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, weldSeams, type Axis } from '../src/core/head-mesh';
-import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_NAMES } from '../src/core/landmarks';
+import { applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, weldSeams, type Axis } from '../src/core/head/head-mesh';
+import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_NAMES } from '../src/core/head/landmarks';
 import { mulberry32 } from '../src/core/random';
-import { eulerDegrees, warpRig } from '../src/core/rig-warp';
-import { parseRigText } from '../src/core/rig-schema';
-import type { Vec3 } from '../src/core/rig-types';
-import { fitThinPlate, warpJacobian, warpPoint } from '../src/core/thin-plate';
+import { eulerDegrees, warpRig } from '../src/core/rig/rig-warp';
+import { parseRigText } from '../src/core/rig/rig-schema';
+import type { Vec3 } from '../src/core/rig/rig-types';
+import { fitThinPlate, warpJacobian, warpPoint } from '../src/core/head/thin-plate';
 import { loadHeadSkin } from './fixtures/head';
 
 const rig = parseRigText(readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8'), 'default.json');

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { decimateHead, levelPlan, subdivideHead } from '../src/core/head-levels';
-import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_NAMES } from '../src/core/landmarks';
-import { buildTopology } from '../src/core/topology';
+import { decimateHead, levelPlan, subdivideHead } from '../src/core/head/head-levels';
+import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_NAMES } from '../src/core/head/landmarks';
+import { buildTopology } from '../src/core/solver/topology';
 import { loadHeadSkin } from './fixtures/head';
 
 describe('resolution levels of a loaded head', () => {

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import type { Collider } from '../src/core/colliders';
-import { JawFollower } from '../src/core/jaw-follower';
-import type { Muscle } from '../src/core/rig-types';
+import type { Collider } from '../src/core/solver/colliders';
+import { JawFollower } from '../src/core/rig/jaw-follower';
+import type { Muscle } from '../src/core/rig/rig-types';
 
 const jaw: Muscle = {
   name: 'jaw',

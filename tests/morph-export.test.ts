@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { planTargets, timelineTargets, timelineWeights } from '../src/core/morph-export';
-import type { Timeline } from '../src/core/timeline';
+import { planTargets, timelineTargets, timelineWeights } from '../src/core/expression/morph-export';
+import type { Timeline } from '../src/core/timeline/timeline';
 import { checkExportOptions, GLTF_EXPORT_DEFAULTS } from '../src/embed/gltf-export-options';
 
 const PRESETS = ['happiness', 'surprise'];

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { computeMuscleTargets, validateMuscle } from '../src/core/muscles';
-import type { LinearMuscle, SphincterMuscle } from '../src/core/rig-types';
+import { computeMuscleTargets, validateMuscle } from '../src/core/rig/muscles';
+import type { LinearMuscle, SphincterMuscle } from '../src/core/rig/rig-types';
 
 /** A flat sheet of skin in the z = 0 plane, `step` apart, over x, y in -0.04..0.04. */
 function sheet(step: number): Float32Array {

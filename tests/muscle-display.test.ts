@@ -2,8 +2,8 @@ import { readFileSync } from 'node:fs';
 import { Matrix4, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { eulerMatrix } from '../src/core/math3';
-import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../src/core/muscle-display';
-import { parseRigText } from '../src/core/rig-schema';
+import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../src/core/rig/muscle-display';
+import { parseRigText } from '../src/core/rig/rig-schema';
 import { MuscleView, rotationOf } from '../src/render/muscle-view';
 
 const RIG = parseRigText(readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8'), 'default.json');

@@ -2,8 +2,8 @@ import { Euler, Matrix4 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
 import { DEGREES, eulerMatrix, rotateAboutAxis } from '../src/core/math3';
-import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle, type MuscleOutputs } from '../src/core/muscles';
-import type { JawMuscle, LidMuscle, LinearMuscle, Muscle, SphincterMuscle, Vec3 } from '../src/core/rig-types';
+import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle, type MuscleOutputs } from '../src/core/rig/muscles';
+import type { JawMuscle, LidMuscle, LinearMuscle, Muscle, SphincterMuscle, Vec3 } from '../src/core/rig/rig-types';
 
 /** A seeded generator of uniform numbers in [0, 1) (mulberry32), so every run sees the same points. */
 const random = mulberry32;

@@ -1,9 +1,9 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { MuscleRig } from '../src/core/muscles';
+import { MuscleRig } from '../src/core/rig/muscles';
 import { mulberry32 as random } from '../src/core/random';
-import { RigDocument } from '../src/core/rig-document';
-import { RigError } from '../src/core/rig-schema';
+import { RigDocument } from '../src/core/rig/rig-document';
+import { RigError } from '../src/core/rig/rig-schema';
 
 const DEFAULT_TEXT = readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8');
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { SkinContact } from '../src/core/skin-contact';
+import { SkinContact } from '../src/core/hair/skin-contact';
 
 /** A flat patch of skin at z = 0 facing +z: a 21 x 21 grid of vertices 0.5 mm apart. */
 function patch() {

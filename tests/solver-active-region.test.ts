@@ -1,7 +1,7 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import type { Collider } from '../src/core/colliders';
-import { SkinSolver } from '../src/core/solver';
-import { buildTopology } from '../src/core/topology';
+import type { Collider } from '../src/core/solver/colliders';
+import { SkinSolver } from '../src/core/solver/solver';
+import { buildTopology } from '../src/core/solver/topology';
 import { draggedPatch, triangleGrid } from './fixtures/grids';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { archSlabs, colliderDistance, slabSide, type Collider } from '../src/core/colliders';
-import { SkinSolver } from '../src/core/solver';
-import { buildTopology } from '../src/core/topology';
+import { archSlabs, colliderDistance, slabSide, type Collider } from '../src/core/solver/colliders';
+import { SkinSolver } from '../src/core/solver/solver';
+import { buildTopology } from '../src/core/solver/topology';
 import { loadHeadSkin } from './fixtures/head';
 import { triangleGrid } from './fixtures/grids';
 

@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { computeMuscleTargets } from '../src/core/muscles';
-import type { LinearMuscle, Muscle } from '../src/core/rig-types';
+import { computeMuscleTargets } from '../src/core/rig/muscles';
+import type { LinearMuscle, Muscle } from '../src/core/rig/rig-types';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 /** The muscle inputs a fresh rig of `muscles` computes for `contractions` over `rest`. */

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
-import { SkinSolver } from '../src/core/solver';
-import { buildTopology } from '../src/core/topology';
+import { SkinSolver } from '../src/core/solver/solver';
+import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 
 // A free patch: no tissue pulling to rest, no bending, no momentum, so only the length (and orientation) projections

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { computeNormals } from '../src/core/topology';
+import { computeNormals } from '../src/core/solver/topology';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 import { startPartnerThread } from './fixtures/partner';
 

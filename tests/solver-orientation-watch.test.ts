@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { PARTS } from '../src/core/constraint-lists';
-import { SkinSolver } from '../src/core/solver';
-import { ORIENT_FULL, ORIENT_WATCH, ORIENT_WATCHED, projectOrientationPart, type PartArrays } from '../src/core/solver-kernels';
-import { buildTopology } from '../src/core/topology';
+import { PARTS } from '../src/core/solver/constraint-lists';
+import { SkinSolver } from '../src/core/solver/solver';
+import { ORIENT_FULL, ORIENT_WATCH, ORIENT_WATCHED, projectOrientationPart, type PartArrays } from '../src/core/solver/solver-kernels';
+import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 
 /** A 1 x 1 cm sheet at 1 mm spacing, every triangle listed; its orientation arrays as the passes see them. */

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { createBoard, PartnerTimeoutError } from '../src/core/partner-board';
-import { PartnerLink } from '../src/core/partner-link';
+import { createBoard, PartnerTimeoutError } from '../src/core/solver/partner-board';
+import { PartnerLink } from '../src/core/solver/partner-link';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 describe('a partner thread that stops answering', () => {

@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { SkinSolver } from '../src/core/solver';
-import { buildTopology, type SkinTopology } from '../src/core/topology';
+import { SkinSolver } from '../src/core/solver/solver';
+import { buildTopology, type SkinTopology } from '../src/core/solver/topology';
 import { loadHeadSkin } from './fixtures/head';
 import { triangleGrid } from './fixtures/grids';
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { SkinSolver } from '../src/core/solver';
-import { buildTopology } from '../src/core/topology';
+import { SkinSolver } from '../src/core/solver/solver';
+import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 
 const grid = triangleGrid(0.04, 0.03, 0.002, 0.05);

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { SkinSolver, START_MOMENTUM_FRAMES, type SkinParameters } from '../src/core/solver';
-import { buildTopology } from '../src/core/topology';
+import { SkinSolver, START_MOMENTUM_FRAMES, type SkinParameters } from '../src/core/solver/solver';
+import { buildTopology } from '../src/core/solver/topology';
 import { draggedPatch, triangleGrid } from './fixtures/grids';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 

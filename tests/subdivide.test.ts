@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { boundaryLoops } from '../scripts/model/cut';
-import { buildEdges, faceCount, vertexCount } from '../src/core/polymesh';
-import { catmullClark } from '../src/core/subdivide';
+import { buildEdges, faceCount, vertexCount } from '../src/core/head/polymesh';
+import { catmullClark } from '../src/core/head/subdivide';
 import { cube, grid } from './fixtures/meshes';
 
 describe('Catmull-Clark subdivision', () => {

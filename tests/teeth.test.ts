@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { NodeIO, type Document, type Node as GltfNode, type Primitive } from '@gltf-transform/core';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { archSlabs } from '../src/core/colliders';
+import { archSlabs } from '../src/core/solver/colliders';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression } from './fixtures/head-simulation';
 
 /** A primitive's positions in head space (the nodes here carry translations only). */

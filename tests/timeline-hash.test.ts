@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { ExpressionState } from '../src/core/facs';
-import { createTimelineSample, sampleTimeline, type Timeline } from '../src/core/timeline';
+import { ExpressionState } from '../src/core/expression/facs';
+import { createTimelineSample, sampleTimeline, type Timeline } from '../src/core/timeline/timeline';
 import { decodeExpression, decodeTimeline, encodeExpression } from '../src/embed/expression-hash';
 
 const TIMELINE: Timeline = {

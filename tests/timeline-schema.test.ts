@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { MAX_TIMELINE_ACTIONS, parseTimeline, parseTimelineText, TimelineError, timelineText } from '../src/core/timeline-schema';
+import { MAX_TIMELINE_ACTIONS, parseTimeline, parseTimelineText, TimelineError, timelineText } from '../src/core/timeline/timeline-schema';
 
 // biome-ignore lint/suspicious/noExplicitAny: the tests spoil fields at any depth, with any value
 type Doc = Record<string, any>;

@@ -10,7 +10,7 @@ import {
   timelineDuration,
   type Timeline,
   type TimelineAction,
-} from '../src/core/timeline';
+} from '../src/core/timeline/timeline';
 
 function timeline(partial: Partial<Timeline>): Timeline {
   return { format: 'softface-timeline', version: 1, tracks: {}, actions: [], ...partial };

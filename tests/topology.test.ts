@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { buildTopology, computeNormals, describeTopology } from '../src/core/topology';
+import { buildTopology, computeNormals, describeTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 
 /** A 3 x 3 grid split into two UV islands along its middle column: the seam vertices appear twice. */

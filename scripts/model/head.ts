@@ -1,11 +1,11 @@
-import { HEAD_NODES } from '../../src/core/head-nodes';
+import { HEAD_NODES } from '../../src/core/head/head-nodes';
 import { boundaryLoops, cutAlongLoop, findEdgeLoop, subsetFaces } from './cut';
 import { buildEyeball, type TriGeometry } from './eye';
 import { buildArch, fitArchOutline, fitOcclusalPlane } from './teeth';
 import type { MaterialSpec, NodeSpec } from './glb';
 import type { ObjMesh } from './obj';
-import { catmullClark } from '../../src/core/subdivide';
-import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from '../../src/core/polymesh';
+import { catmullClark } from '../../src/core/head/subdivide';
+import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from '../../src/core/head/polymesh';
 
 /** MakeHuman works in decimetres; glTF and the app work in metres. */
 export const DECIMETRE = 0.1;

@@ -6,10 +6,10 @@
  */
 
 import * as v from 'valibot';
-import { isActionUnitId } from '../../src/core/facs';
-import { pathStep, problemOf, type RigProblem } from '../../src/core/rig-schema';
-import { parseTimeline, TimelineError } from '../../src/core/timeline-schema';
-import { PRESET_TARGET_PREFIX, type Timeline } from '../../src/core/timeline';
+import { isActionUnitId } from '../../src/core/expression/facs';
+import { pathStep, problemOf, type RigProblem } from '../../src/core/rig/rig-schema';
+import { parseTimeline, TimelineError } from '../../src/core/timeline/timeline-schema';
+import { PRESET_TARGET_PREFIX, type Timeline } from '../../src/core/timeline/timeline';
 import {
   CAMERA_DEFAULTS,
   CAMERA_RANGES,

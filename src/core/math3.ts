@@ -2,7 +2,7 @@
  * Small 3D helpers for the muscle fields, on plain numbers and flat arrays (no three.js, no allocation), because
  * they run once per vertex, muscle and substep.
  */
-import type { EulerDegrees } from './rig-types';
+import type { EulerDegrees } from './rig/rig-types';
 
 /** Radians per degree. */
 export const DEGREES = Math.PI / 180;

@@ -1,11 +1,11 @@
 import { Quaternion, Vector3 } from 'three';
 import { DEGREES, eulerMatrix } from '../core/math3';
-import { RigDocument } from '../core/rig-document';
-import { parseRig, parseRigText } from '../core/rig-schema';
-import type { Rig } from '../core/rig-types';
-import { HEAD_NODES } from '../core/head-nodes';
+import { RigDocument } from '../core/rig/rig-document';
+import { parseRig, parseRigText } from '../core/rig/rig-schema';
+import type { Rig } from '../core/rig/rig-types';
+import { HEAD_NODES } from '../core/head/head-nodes';
 import { headColliders } from '../render/head-colliders';
-import { DEFAULT_LANDMARKS, type Landmarks } from '../core/landmarks';
+import { DEFAULT_LANDMARKS, type Landmarks } from '../core/head/landmarks';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView, type ViewBackground } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';

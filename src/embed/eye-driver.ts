@@ -1,6 +1,6 @@
 import { Euler, Quaternion, type Object3D } from 'three';
 import { DEGREES } from '../core/math3';
-import { EyeSimulation, type EyeSimulationOptions } from '../core/eye-simulation';
+import { EyeSimulation, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 import type { EyeStats, FaceEyes, FaceHandle } from './face-handle';
 import type { FrameHook } from '../render/head-view';
 

@@ -1,7 +1,7 @@
 import { Raycaster, Vector2, Vector3, type Camera, type Mesh } from 'three';
-import type { BrushSphere } from '../core/rig-types';
-import type { RigDocument } from '../core/rig-document';
-import type { Muscle } from '../core/rig-types';
+import type { BrushSphere } from '../core/rig/rig-types';
+import type { RigDocument } from '../core/rig/rig-document';
+import type { Muscle } from '../core/rig/rig-types';
 import type { HeadView } from '../render/head-view';
 import { MuscleGizmo, type GizmoMode, type GizmoPart } from '../render/muscle-gizmo';
 import type { MuscleView } from '../render/muscle-view';

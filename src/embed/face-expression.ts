@@ -1,5 +1,5 @@
-import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/facs';
-import type { Rig } from '../core/rig-types';
+import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
+import type { Rig } from '../core/rig/rig-types';
 import type { HashExpression } from './expression-hash';
 
 /** Where a face's muscle contractions go after every change: the solver, the jaw's teeth, the muscle glyphs. */

@@ -1,4 +1,4 @@
-import type { Rig } from '../core/rig-types';
+import type { Rig } from '../core/rig/rig-types';
 import {
   APPEARANCE_DEFAULTS,
   APPEARANCE_RANGES,

@@ -1,4 +1,4 @@
-import { MAX_EXPORT_FPS } from '../core/morph-export';
+import { MAX_EXPORT_FPS } from '../core/expression/morph-export';
 
 /** How far `exportGLTF` has come: targets solved so far of all, and the one it solves now (null once all are). */
 export interface GLTFExportProgress {

@@ -11,13 +11,20 @@ import {
   type HeadFrame,
   type TriangleMesh,
   type Unit,
-} from '../core/head-mesh';
-import { decimateHead, LEVEL_TRIANGLES, levelPlan, subdivideHead, type HeadLevel, type LevelPlan } from '../core/head-levels';
-import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_LABELS, LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/landmarks';
-import { parseRig } from '../core/rig-schema';
-import type { Rig, Vec3 } from '../core/rig-types';
-import { warpRig } from '../core/rig-warp';
-import { fitThinPlate } from '../core/thin-plate';
+} from '../core/head/head-mesh';
+import { decimateHead, LEVEL_TRIANGLES, levelPlan, subdivideHead, type HeadLevel, type LevelPlan } from '../core/head/head-levels';
+import {
+  DEFAULT_LANDMARKS,
+  findLandmarks,
+  LANDMARK_LABELS,
+  LANDMARK_NAMES,
+  type LandmarkName,
+  type Landmarks,
+} from '../core/head/landmarks';
+import { parseRig } from '../core/rig/rig-schema';
+import type { Rig, Vec3 } from '../core/rig/rig-types';
+import { warpRig } from '../core/rig/rig-warp';
+import { fitThinPlate } from '../core/head/thin-plate';
 import { buildLoadedHead, readHeadScene, skinOf, type HeadFile, type PartSources } from '../render/head-import';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 

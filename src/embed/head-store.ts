@@ -1,5 +1,5 @@
 import { del, get, set } from 'idb-keyval';
-import type { Landmarks } from '../core/landmarks';
+import type { Landmarks } from '../core/head/landmarks';
 import type { HeadFile } from '../render/head-import';
 import type { LoadHeadOptions } from './head-loader';
 

@@ -1,6 +1,6 @@
 import type { Object3D } from 'three';
-import { LANDMARK_LABELS, type LandmarkName, type Landmarks } from '../core/landmarks';
-import type { Vec3 } from '../core/rig-types';
+import { LANDMARK_LABELS, type LandmarkName, type Landmarks } from '../core/head/landmarks';
+import type { Vec3 } from '../core/rig/rig-types';
 import type { HeadView } from '../render/head-view';
 import { LandmarkGuideView } from '../render/landmark-guide';
 import type { MissingLandmarksError } from './head-loader';

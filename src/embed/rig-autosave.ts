@@ -1,7 +1,7 @@
 import { del, get, set } from 'idb-keyval';
-import type { RigDocument } from '../core/rig-document';
-import { parseRig } from '../core/rig-schema';
-import type { Rig } from '../core/rig-types';
+import type { RigDocument } from '../core/rig/rig-document';
+import { parseRig } from '../core/rig/rig-schema';
+import type { Rig } from '../core/rig/rig-types';
 
 /** How long after an edit the rig is written (a drag's many edits make one write). */
 const AUTOSAVE_DELAY_MS = 250;

@@ -1,5 +1,5 @@
-import type { RigChange, RigDocument } from '../core/rig-document';
-import type { Rig } from '../core/rig-types';
+import type { RigChange, RigDocument } from '../core/rig/rig-document';
+import type { Rig } from '../core/rig/rig-types';
 import type { MuscleView } from '../render/muscle-view';
 import type { SkinSimulation } from '../sim/main/skin-simulation';
 import type { FaceExpression } from './face-expression';

@@ -6,7 +6,7 @@ import {
   timelineDuration,
   type Timeline,
   type TimelineSample,
-} from '../core/timeline';
+} from '../core/timeline/timeline';
 import type { FrameHooks } from './eye-driver';
 import type { FaceHandle, FaceTimeline, TimelineState } from './face-handle';
 

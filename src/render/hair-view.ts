@@ -1,8 +1,8 @@
 import { BufferAttribute, BufferGeometry, Color, DoubleSide, DynamicDrawUsage, Mesh, MeshStandardMaterial } from 'three';
-import { FrontCaster } from '../core/front-caster';
-import { poseHair, type HairStrands } from '../core/hair';
-import { placeBrows, placeLashes, type HairEye, type HairLandmarks } from '../core/hair-placement';
-import { SkinContact } from '../core/skin-contact';
+import { FrontCaster } from '../core/hair/front-caster';
+import { poseHair, type HairStrands } from '../core/hair/hair';
+import { placeBrows, placeLashes, type HairEye, type HairLandmarks } from '../core/hair/hair-placement';
+import { SkinContact } from '../core/hair/skin-contact';
 import { APPEARANCE_DEFAULTS, type AppearanceOptions } from './view-options';
 
 /** Names of the hair meshes (children of the skin mesh), as a glTF export shows them. */

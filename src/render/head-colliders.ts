@@ -1,6 +1,6 @@
 import { Matrix4, Mesh, Vector3, type Object3D } from 'three';
-import { archSlabs, type Collider } from '../core/colliders';
-import { HEAD_NODES } from '../core/head-nodes';
+import { archSlabs, type Collider } from '../core/solver/colliders';
+import { HEAD_NODES } from '../core/head/head-nodes';
 import type { HeadModel } from './head-model';
 
 /**

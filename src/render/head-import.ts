@@ -1,10 +1,10 @@
 import { Box3, BufferAttribute, BufferGeometry, Group, LoadingManager, Matrix4, Mesh, type Object3D, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
-import { HEAD_NODES } from '../core/head-nodes';
-import type { HeadFrame, TriangleMesh } from '../core/head-mesh';
-import type { Landmarks } from '../core/landmarks';
-import { warpPoint, type ThinPlateWarp } from '../core/thin-plate';
+import { HEAD_NODES } from '../core/head/head-nodes';
+import type { HeadFrame, TriangleMesh } from '../core/head/head-mesh';
+import type { Landmarks } from '../core/head/landmarks';
+import { warpPoint, type ThinPlateWarp } from '../core/head/thin-plate';
 import { whiteVertexColors, type HeadModel } from './head-model';
 import { skinTint, SKIN_TINT_DEFAULTS } from './skin-tint';
 

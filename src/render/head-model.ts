@@ -1,6 +1,6 @@
 import { type Box3, BufferAttribute, Mesh, type Object3D, Texture, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
-import { HEAD_NODES } from '../core/head-nodes';
+import { HEAD_NODES } from '../core/head/head-nodes';
 import { createHeadMaterials } from './materials';
 import type { HairView } from './hair-view';
 import { mouthLight, SKIN_TINT_DEFAULTS, skinTint } from './skin-tint';

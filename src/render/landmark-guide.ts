@@ -10,8 +10,8 @@ import {
   Vector2,
   Vector3,
 } from 'three';
-import type { TriangleMesh } from '../core/head-mesh';
-import type { Vec3 } from '../core/rig-types';
+import type { TriangleMesh } from '../core/head/head-mesh';
+import type { Vec3 } from '../core/rig/rig-types';
 import type { HeadView } from './head-view';
 
 /** A pointer that moves less than this (px) between press and release clicks rather than drags (turns the view). */

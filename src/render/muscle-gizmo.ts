@@ -1,8 +1,8 @@
 import { Euler, Object3D, type Vector3, type Camera } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { DEGREES } from '../core/math3';
-import { MuscleField } from '../core/muscles';
-import type { Muscle, Vec3 } from '../core/rig-types';
+import { MuscleField } from '../core/rig/muscles';
+import type { Muscle, Vec3 } from '../core/rig/rig-types';
 import { rotationOf } from './muscle-view';
 
 /** What the gizmo does, and which part of a muscle it holds (see GizmoPart in the handle). */

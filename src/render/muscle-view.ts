@@ -21,8 +21,8 @@ import {
   type Object3D,
 } from 'three';
 import { DEGREES } from '../core/math3';
-import { MuscleField } from '../core/muscles';
-import type { EulerDegrees, Muscle, Vec3 } from '../core/rig-types';
+import { MuscleField } from '../core/rig/muscles';
+import type { EulerDegrees, Muscle, Vec3 } from '../core/rig/rig-types';
 
 /** Glyph colours by muscle type (sRGB), picked to stand apart from each other and from the skin. */
 const MUSCLE_COLOURS: Readonly<Record<Muscle['type'], number>> = Object.freeze({

@@ -1,6 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import { gradeOf, type Grade } from '../core/facs';
+import { gradeOf, type Grade } from '../core/expression/facs';
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
 
 /** One slider of the panel: an Action Unit side (`AU12L`) or a midline unit (`AU17`). */

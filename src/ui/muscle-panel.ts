@@ -1,7 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import { ACTION_UNITS } from '../core/facs';
-import type { Muscle } from '../core/rig-types';
+import { ACTION_UNITS } from '../core/expression/facs';
+import type { Muscle } from '../core/rig/rig-types';
 import { gizmoParts, type FaceChange, type FaceHandle } from '../embed/face-handle';
 
 /** Number fields by muscle type: key, label, min, max, step. Vectors get one field per axis. */

@@ -1,6 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import { emptyTimeline, PRESET_TARGET_PREFIX, type Timeline } from '../core/timeline';
+import { emptyTimeline, PRESET_TARGET_PREFIX, type Timeline } from '../core/timeline/timeline';
 import type { FaceChange, FaceHandle } from '../embed/face-handle';
 import { downloadBlob } from './download';
 import { FileImport } from './file-import';

@@ -5,7 +5,7 @@ import {
   validateParameters,
   writeMuscleTargets,
   type SkinParameters,
-} from '../../core/solver';
+} from '../../core/solver/solver';
 import {
   CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,

@@ -1,7 +1,7 @@
-import type { Collider } from '../../core/colliders';
-import { validateMuscle } from '../../core/muscles';
-import type { Muscle } from '../../core/rig-types';
-import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../../core/solver';
+import type { Collider } from '../../core/solver/colliders';
+import { validateMuscle } from '../../core/rig/muscles';
+import type { Muscle } from '../../core/rig/rig-types';
+import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../../core/solver/solver';
 import type { SolverBackend } from './backend';
 import { InputStaging } from './input-staging';
 import {

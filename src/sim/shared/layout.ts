@@ -10,8 +10,8 @@
  * Output block (solver writes, main thread reads): an Int32 header, then two frame slots. Each slot has its own
  * header (frame number, sleep state, solve time, bounds...) so that metadata always matches the vertices beside it.
  */
-import { MAX_RIG_MUSCLES } from '../../core/rig-schema';
-import type { ConstraintCounts, SkinParameters } from '../../core/solver';
+import { MAX_RIG_MUSCLES } from '../../core/rig/rig-schema';
+import type { ConstraintCounts, SkinParameters } from '../../core/solver/solver';
 
 // ---- control block -------------------------------------------------------------------------------------------
 

@@ -1,12 +1,12 @@
-import type { Collider } from '../../core/colliders';
+import type { Collider } from '../../core/solver/colliders';
 import type { RigEdit } from './protocol';
-import { JawFollower } from '../../core/jaw-follower';
-import { MuscleRig } from '../../core/muscles';
+import { JawFollower } from '../../core/rig/jaw-follower';
+import { MuscleRig } from '../../core/rig/muscles';
 import { mulberry32 } from '../../core/random';
-import type { Muscle } from '../../core/rig-types';
-import type { Memory } from '../../core/memory';
-import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../../core/solver';
-import { buildTopology, describeTopology, type SkinTopology } from '../../core/topology';
+import type { Muscle } from '../../core/rig/rig-types';
+import type { Memory } from '../../core/solver/memory';
+import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../../core/solver/solver';
+import { buildTopology, describeTopology, type SkinTopology } from '../../core/solver/topology';
 import {
   CONSTRAINT_INDEX,
   CONSTRAINT_KINDS,

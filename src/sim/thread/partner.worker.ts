@@ -3,9 +3,9 @@
  * second half of each position, length, orientation, bending and collision pass while the skin worker projects the
  * first (see SolverPartner). It says `running` once it waits for jobs; the skin worker hands it work only from then on.
  */
-import { boardViews } from '../../core/partner-board';
-import type { PartArrays } from '../../core/solver-kernels';
-import { SolverPartner } from '../../core/solver-partner';
+import { boardViews } from '../../core/solver/partner-board';
+import type { PartArrays } from '../../core/solver/solver-kernels';
+import { SolverPartner } from '../../core/solver/solver-partner';
 
 /** Skin worker to partner worker: the solver's shared arrays and the board. */
 export interface PartnerInit {

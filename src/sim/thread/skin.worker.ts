@@ -4,8 +4,8 @@
  * inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
-import { createBoard, PartnerTimeoutError } from '../../core/partner-board';
-import { PartnerLink } from '../../core/partner-link';
+import { createBoard, PartnerTimeoutError } from '../../core/solver/partner-board';
+import { PartnerLink } from '../../core/solver/partner-link';
 import { ControlReader } from '../shared/control-reader';
 import { contractionCapacity, controlLayout, controlViews, initControl, slotLayout } from '../shared/layout';
 import type { FromWorker, InitMessage, RunMessage, ToWorker } from '../shared/protocol';

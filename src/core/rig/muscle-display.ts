@@ -3,7 +3,7 @@
  * state, the muscle view draws it.
  */
 
-import { ACTION_UNITS } from './facs';
+import { ACTION_UNITS } from '../expression/facs';
 import type { Rig } from './rig-types';
 
 /** What is shown: all muscles, and (independently, so that switching `all` off restores them) some Action Units. */

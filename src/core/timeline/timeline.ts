@@ -5,7 +5,7 @@
  * nothing per frame. Pure: no DOM, no three.
  */
 
-import { isActionUnitId } from './facs';
+import { isActionUnitId } from '../expression/facs';
 
 /** How a segment goes from its key to the next: a straight line, or the cubic ease curves. */
 export type Easing = 'linear' | 'ease-in' | 'ease-out' | 'ease-in-out';

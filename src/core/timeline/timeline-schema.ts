@@ -5,8 +5,8 @@
  */
 
 import * as v from 'valibot';
-import { isActionUnitId } from './facs';
-import { jsonSyntaxMessage, pathStep, problemOf, show as showValue, utf8Length, type RigProblem } from './rig-schema';
+import { isActionUnitId } from '../expression/facs';
+import { jsonSyntaxMessage, pathStep, problemOf, show as showValue, utf8Length, type RigProblem } from '../rig/rig-schema';
 import { EASINGS, PRESET_TARGET_PREFIX, TIMELINE_FORMAT, TIMELINE_VERSION, type Timeline } from './timeline';
 
 /** Largest timeline document `parseTimelineText` accepts, in bytes of UTF-8. */

@@ -1,6 +1,6 @@
-import type { Collider } from './colliders';
-import { HEAD_NODES } from './head-nodes';
-import { DEGREES, rotateAboutAxis } from './math3';
+import type { Collider } from '../solver/colliders';
+import { HEAD_NODES } from '../head/head-nodes';
+import { DEGREES, rotateAboutAxis } from '../math3';
 import { MuscleField } from './muscles';
 import type { Muscle, Vec3 } from './rig-types';
 

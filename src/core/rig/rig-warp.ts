@@ -3,9 +3,9 @@
  * warp fitted on landmarks, frames turn and radii stretch with the warp's local derivative, and lengths that are
  * not tied to a direction (fades, brush radii) scale with its affine part. Pure: no three.js, no DOM.
  */
-import { eulerMatrix } from './math3';
+import { eulerMatrix } from '../math3';
 import type { BrushSphere, EulerDegrees, Muscle, Rig, Vec3 } from './rig-types';
-import { warpJacobian, warpPoint, type ThinPlateWarp } from './thin-plate';
+import { warpJacobian, warpPoint, type ThinPlateWarp } from '../head/thin-plate';
 
 /** The rig on the warped head: a new document, the input is not changed. */
 export function warpRig(rig: Rig, warp: ThinPlateWarp): Rig {

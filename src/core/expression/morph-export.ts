@@ -4,7 +4,14 @@
  */
 
 import { isActionUnitId } from './facs';
-import { createTimelineSample, PRESET_TARGET_PREFIX, sampleTimeline, targetSides, timelineDuration, type Timeline } from './timeline';
+import {
+  createTimelineSample,
+  PRESET_TARGET_PREFIX,
+  sampleTimeline,
+  targetSides,
+  timelineDuration,
+  type Timeline,
+} from '../timeline/timeline';
 
 /** One morph target: its name in the file, and the expression it holds (one Action Unit id or one preset, at 1). */
 export interface MorphTarget {

@@ -6,7 +6,7 @@
  * The thesis's printed formulas carry typos (a garbled radial falloff, an ellipsoid test without squares); each field
  * below says which of its ideas it implements and uses the smooth form that was meant.
  */
-import { DEGREES, eulerMatrix, rotationOffset, rotationOffsetBy } from './math3';
+import { DEGREES, eulerMatrix, rotationOffset, rotationOffsetBy } from '../math3';
 import type { BrushSphere, Muscle, Vec3 } from './rig-types';
 
 const HALF_PI = Math.PI / 2;

@@ -3,7 +3,7 @@
  * current one (a refused edit throws a `RigError` naming the path and changes nothing), with undo and redo of whole
  * steps and transactions that make a drag one step. Pure: no DOM, no three.js.
  */
-import { ACTION_UNITS } from './facs';
+import { ACTION_UNITS } from '../expression/facs';
 import { EditHistory } from './edit-history';
 import { mirrorMuscle, otherSide, twinName } from './rig-mirror';
 import { parseRig, RigError } from './rig-schema';

@@ -3,7 +3,7 @@
  * the expression state that turns Action Unit sliders and preset weights into muscle contractions. Pure: no DOM.
  */
 
-import type { PresetDefinition, Rig } from './rig-types';
+import type { PresetDefinition, Rig } from '../rig/rig-types';
 
 /** An Action Unit of the catalogue: id `AU12`, its FACS number and name, and whether each side is set on its own. */
 export interface ActionUnitInfo {

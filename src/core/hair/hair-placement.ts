@@ -7,8 +7,8 @@
  */
 import { FrontCaster, type FrontHit } from './front-caster';
 import { ribbonTriangles, strandsAtRest, type HairStrands } from './hair';
-import { mulberry32 } from './random';
-import type { Vec3 } from './rig-types';
+import { mulberry32 } from '../random';
+import type { Vec3 } from '../rig/rig-types';
 
 /** The skin at rest: positions and normals (xyz per render vertex) and its triangles. */
 export interface HairSurface {

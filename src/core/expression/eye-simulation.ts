@@ -3,7 +3,7 @@
  * still for a while and then moved quickly (a saccade) to a random target, and the lid Action Unit shares that
  * follow from both. No DOM, no three.js, no allocation once constructed: a driver calls `advance` every frame.
  */
-import { mulberry32 } from './random';
+import { mulberry32 } from '../random';
 
 /** Timing, range and lid options of the eye simulation; times in ms, angles in degrees. */
 export interface EyeSimulationOptions {

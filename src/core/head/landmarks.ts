@@ -4,7 +4,7 @@
  * are pits in it (the skin turns inward there), the nose tip is its highest point near the midline, the chin and
  * brows are the most forward points of the profile below the mouth and above the eyes. Pure: no three.js, no DOM.
  */
-import type { Vec3 } from './rig-types';
+import type { Vec3 } from '../rig/rig-types';
 
 /** The landmarks, in the order the editor asks for those it could not find. */
 export const LANDMARK_NAMES = [

@@ -3,7 +3,7 @@
  * least bending (kernel |r|, the biharmonic one in three dimensions) on top of an affine part. It carries a rig made
  * on one head over to another head whose landmarks were found. Pure numbers: no three.js, no DOM.
  */
-import type { Vec3 } from './rig-types';
+import type { Vec3 } from '../rig/rig-types';
 
 /** A fitted thin-plate spline: `apply` maps points, `jacobian` gives the local linear part. */
 export interface ThinPlateWarp {
