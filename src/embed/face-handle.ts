@@ -1,12 +1,20 @@
 import { checkEyeSimulationOptions, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
 import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../core/rig/muscle-display';
-import { newMuscle, type RigDocument, type UpdateOptions } from '../core/rig/rig-document';
+import type { RigDocument, UpdateOptions } from '../core/rig/rig-document';
 import { parseRigText } from '../core/rig/rig-schema';
 import type { Muscle, Rig } from '../core/rig/rig-types';
 import type { SkinParameters } from '../core/solver/solver';
 import type { RenderTiming } from '../render/head-view';
-import type { GizmoMode, GizmoPart } from '../render/muscle-gizmo';
+import {
+  EditorSession,
+  type AutosaveStatus,
+  type BrushOptions,
+  type EditorState,
+  type FaceEditorView,
+  type GizmoMode,
+  type GizmoPart,
+} from './editor-session';
 import type { MaterialDescription } from '../render/materials';
 import type { HairSnapshot } from '../render/hair-view';
 import type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
@@ -58,60 +66,7 @@ export type FaceChange =
   | 'landmarks'
   | 'timeline';
 
-/**
- * What the gizmo does (`translate`, `rotate`, `scale`), and which part of the selected muscle it holds: a linear
- * muscle's `insertion` or `origin` (its bone end), a sphincter's or lid's `ellipsoid`, the jaw's `box` or `hinge`.
- */
-export type { GizmoMode, GizmoPart };
-
-/**
- * The vertex brush: off, or painting skin into (`add`) or out of (`remove`) the selected muscle's influence with
- * spheres of `radius` metres, stored in the rig in rest space.
- */
-export interface BrushOptions {
-  mode: 'off' | 'add' | 'remove';
-  radius: number;
-}
-
-/** The editor's state, as `describeEditor` reports it (read-only). */
-export interface EditorState {
-  on: boolean;
-  selected: string | null;
-  mode: GizmoMode;
-  part: GizmoPart | null;
-  /** Contraction of the selected muscle while it is edited, 0..1 (on top of the Action Units). */
-  preview: number;
-  /** Where the gizmo is on the page (client pixels), if it shows. */
-  gizmo: { x: number; y: number } | null;
-  /** Undo and redo steps available. */
-  history: { undo: number; redo: number };
-  /** Whether edits are mirrored onto the twin. */
-  mirror: boolean;
-  /** Whether the rig differs from the one the face was made with. */
-  edited: boolean;
-  /** The autosave: `off`, or whether the edited rig is stored (`clean`: nothing to store). */
-  autosave: 'off' | 'clean' | 'pending' | 'saved' | 'failed';
-  /** The rig's name, for its exported file (`<name>.rig.json`). */
-  rigName: string;
-  brush: BrushOptions;
-}
-
-/** The editor's view side the handle drives (FaceEditor): gizmo, picking, highlight. */
-export interface FaceEditorView {
-  setEnabled(on: boolean): void;
-  select(name: string | null): void;
-  setMode(mode: GizmoMode): void;
-  setPart(part: GizmoPart | null): void;
-  part(): GizmoPart | null;
-  /** Where the gizmo is on the page, in client pixels; null when it does not show. */
-  gizmoPoint(): { x: number; y: number } | null;
-  /** Where a muscle's glyph can be clicked (the middle of a linear muscle's rod, an ellipsoid's or box's centre). */
-  musclePoint(name: string): { x: number; y: number } | null;
-  /** The brush was switched on or off: the gizmo makes way for it. */
-  brushChanged(): void;
-  /** The skin point at the middle of the view (or the orbit centre if the skin is not there), in the rig's frame. */
-  frontPoint(): [number, number, number];
-}
+export { gizmoParts, type BrushOptions, type EditorState, type FaceEditorView, type GizmoMode, type GizmoPart } from './editor-session';
 
 export type { MuscleDisplay };
 
@@ -247,19 +202,10 @@ export class FaceHandle {
    */
   private listeners: readonly FaceChangeListener[] = [];
   private expression: FaceExpression | undefined;
-  private rigDocument: RigDocument | undefined;
-  private originalRig: Rig | undefined;
-  private rigFileName = 'rig';
-  private autosaveStatus: (() => 'clean' | 'pending' | 'saved' | 'failed') | undefined;
-  private editorView: FaceEditorView | undefined;
   private heads: FaceHeads | undefined;
   private shell: FaceShell | undefined;
-  private editorOn = false;
-  private selected: string | null = null;
-  private gizmoMode: GizmoMode = 'translate';
-  private previewValue = 0;
-  private mirrorEdits = false;
-  private brush: BrushOptions = { mode: 'off', radius: 0.006 };
+  /** The muscle editor's state (selection, gizmo, preview, mirror, brush) and the rig document it edits. */
+  private readonly editor = new EditorSession(() => this.expression);
   private disposed = false;
   private resolveReady!: () => void;
   private rejectReady!: (error: Error) => void;
@@ -362,14 +308,8 @@ export class FaceHandle {
    * @internal the face's own wiring, left out of the library's type declarations
    */
   attachRig(document: RigDocument, original: Rig, name: string): void {
-    this.rigDocument = document;
-    this.originalRig = original;
-    this.rigFileName = name;
-    document.onChange((_, rig) => {
+    this.editor.attachRig(document, original, name, () => {
       if (this.disposed) return;
-      // A muscle that is gone (removed, renamed, undone) cannot stay selected.
-      if (this.selected !== null && !rig.muscles.some((m) => m.name === this.selected)) this.setSelection(null);
-      else this.applyPreview();
       this.showMuscles();
       this.emit('rig');
     });
@@ -379,8 +319,8 @@ export class FaceHandle {
    * Connects the autosave, whose status `describeEditor` reports.
    * @internal the face's own wiring, left out of the library's type declarations
    */
-  attachAutosave(status: () => 'clean' | 'pending' | 'saved' | 'failed'): void {
-    this.autosaveStatus = status;
+  attachAutosave(status: () => AutosaveStatus): void {
+    this.editor.attachAutosave(status);
   }
 
   /**
@@ -396,10 +336,7 @@ export class FaceHandle {
    * @internal the face's own wiring, left out of the library's type declarations
    */
   attachEditor(view: FaceEditorView): void {
-    this.editorView = view;
-    view.setMode(this.gizmoMode);
-    view.setEnabled(this.editorOn);
-    view.select(this.selected);
+    this.editor.attachView(view);
   }
 
   /**
@@ -1002,7 +939,7 @@ export class FaceHandle {
           ids,
           ids.map((id) => saved.overlay[id]),
         );
-        this.applyPreview();
+        this.editor.applyPreview();
         this.eyes?.setEnabled(saved.eyes);
         if (saved.playing) player.play();
         this.emit('expression');
@@ -1030,10 +967,8 @@ export class FaceHandle {
    * turns or scales the selected muscle's part; off, the display is as `setMuscleDisplay` asked.
    */
   setEditor(on: boolean): void {
-    if (typeof on !== 'boolean') throw new Error(`setEditor: needs a boolean, got ${String(on)}`);
-    this.document();
-    this.editorOn = on;
-    this.editorView?.setEnabled(on);
+    this.alive();
+    this.editor.setEnabled(on);
     this.showMuscles();
     this.emit('editor');
   }
@@ -1041,40 +976,33 @@ export class FaceHandle {
   /** Whether the editor is on. */
   getEditor(): boolean {
     this.alive();
-    return this.editorOn;
+    return this.editor.enabled();
   }
 
   /** Selects a muscle by name for the gizmo and the Muscle panel, or `null` for none; an unknown name throws. */
   selectMuscle(name: string | null): void {
-    const doc = this.document();
-    if (name !== null) doc.indexOf(name, 'selectMuscle');
-    this.setSelection(name);
+    this.alive();
+    this.editor.select(name);
     this.emit('editor');
   }
 
   /** The selected muscle's name, or null. */
   getSelectedMuscle(): string | null {
     this.alive();
-    return this.selected;
+    return this.editor.selection();
   }
 
   /** What the gizmo does: `translate`, `rotate` or `scale` (what a part cannot do, it ignores). */
   setGizmoMode(mode: GizmoMode): void {
-    if (!['translate', 'rotate', 'scale'].includes(mode))
-      throw new Error(`setGizmoMode: expected "translate", "rotate" or "scale", got ${JSON.stringify(mode)}`);
     this.alive();
-    this.gizmoMode = mode;
-    this.editorView?.setMode(mode);
+    this.editor.setGizmoMode(mode);
     this.emit('editor');
   }
 
   /** Attaches the gizmo to a part of the selected muscle (see GizmoPart); a part it does not have throws. */
   setGizmoPart(part: GizmoPart): void {
-    const muscle = this.selectedMuscle('setGizmoPart');
-    const parts = gizmoParts(muscle);
-    if (!parts.includes(part))
-      throw new Error(`setGizmoPart: a ${muscle.type} muscle has the parts ${parts.join(', ')}, got ${JSON.stringify(part)}`);
-    this.editorView?.setPart(part);
+    this.alive();
+    this.editor.setGizmoPart(part);
     this.emit('editor');
   }
 
@@ -1083,25 +1011,21 @@ export class FaceHandle {
    * it); it follows the selection.
    */
   setPreviewContraction(value: number): void {
-    if (typeof value !== 'number' || !Number.isFinite(value))
-      throw new Error(`setPreviewContraction: needs a finite number, got ${String(value)}`);
-    this.document();
-    this.previewValue = Math.min(1, Math.max(0, value));
-    this.applyPreview();
+    this.alive();
+    this.editor.setPreviewContraction(value);
     this.emit('editor');
   }
 
   /** With `on`, the gizmo's and the Muscle panel's edits also reflect the muscle onto its left/right twin. */
   setMirrorEdits(on: boolean): void {
-    if (typeof on !== 'boolean') throw new Error(`setMirrorEdits: needs a boolean, got ${String(on)}`);
     this.alive();
-    this.mirrorEdits = on;
+    this.editor.setMirrorEdits(on);
     this.emit('editor');
   }
 
   getMirrorEdits(): boolean {
     this.alive();
-    return this.mirrorEdits;
+    return this.editor.mirrorEdits();
   }
 
   /**
@@ -1110,58 +1034,37 @@ export class FaceHandle {
    */
   setBrush(partial: Partial<BrushOptions>): void {
     this.alive();
-    const next = { ...this.brush, ...partial };
-    if (!['off', 'add', 'remove'].includes(next.mode))
-      throw new Error(`setBrush: mode must be "off", "add" or "remove", got ${JSON.stringify(next.mode)}`);
-    if (typeof next.radius !== 'number' || !(next.radius >= 0.001 && next.radius <= 0.05))
-      throw new Error(`setBrush: radius must be a number of metres from 0.001 to 0.05, got ${String(next.radius)}`);
-    for (const key of Object.keys(partial))
-      if (key !== 'mode' && key !== 'radius') throw new Error(`setBrush: unknown option ${JSON.stringify(key)}`);
-    this.brush = next;
-    this.editorView?.brushChanged();
+    this.editor.setBrush(partial);
     this.emit('editor');
   }
 
   getBrush(): BrushOptions {
     this.alive();
-    return { ...this.brush };
+    return this.editor.getBrush();
   }
 
   /** The editor's state and where its gizmo is on the page (read-only: for tests and tools). */
   describeEditor(): EditorState {
-    const doc = this.document();
-    return {
-      on: this.editorOn,
-      selected: this.selected,
-      mode: this.gizmoMode,
-      part: this.editorView?.part() ?? null,
-      preview: this.previewValue,
-      gizmo: this.editorView?.gizmoPoint() ?? null,
-      history: doc.historySizes(),
-      mirror: this.mirrorEdits,
-      edited: this.isRigEdited(),
-      autosave: this.autosaveStatus?.() ?? 'off',
-      rigName: this.rigFileName,
-      brush: { ...this.brush },
-    };
+    this.alive();
+    return this.editor.describe();
   }
 
   /** Whether the rig differs from the one the face was made with (its `rig` option, or the package's). */
   isRigEdited(): boolean {
-    const doc = this.document();
-    return JSON.stringify(doc.rig) !== JSON.stringify(this.originalRig);
+    this.alive();
+    return this.editor.isRigEdited();
   }
 
   /** Brings back the rig the face was made with (one undoable step). */
   revertRig(): void {
-    const doc = this.document();
-    if (this.originalRig) doc.replace(this.originalRig, 'revertRig');
+    this.alive();
+    this.editor.revertRig();
   }
 
   /** Where a shown muscle's glyph can be clicked on the page, in client pixels, or null (read-only: for tests). */
   locateMuscle(name: string): { x: number; y: number } | null {
-    this.document().indexOf(name, 'locateMuscle');
-    return this.editorView?.musclePoint(name) ?? null;
+    this.alive();
+    return this.editor.locateMuscle(name);
   }
 
   /** A plain copy of the current rig document (changing it changes nothing). */
@@ -1200,14 +1103,9 @@ export class FaceHandle {
    * midline).
    */
   createMuscle(type: Muscle['type']): string {
-    const doc = this.document();
-    const at = this.editorView?.frontPoint() ?? [0, 0.7, 0.1];
-    const suffix = at[0] > 0.005 ? '-l' : at[0] < -0.005 ? '-r' : '';
-    const taken = new Set(doc.rig.muscles.map((m) => m.name));
-    let name = `new-${type}${suffix}`;
-    for (let k = 2; taken.has(name); k++) name = `new-${type}-${k}${suffix}`;
-    doc.addMuscle(newMuscle(type, name, at));
-    this.selectMuscle(name);
+    this.alive();
+    const name = this.editor.createMuscle(type);
+    this.emit('editor');
     return name;
   }
 
@@ -1218,10 +1116,10 @@ export class FaceHandle {
 
   /** Renames a muscle; its links and the selection follow. */
   renameMuscle(name: string, newName: string): void {
-    const doc = this.document();
-    const wasSelected = this.selected === name;
-    doc.renameMuscle(name, newName);
-    if (wasSelected) this.selectMuscle(newName);
+    this.alive();
+    const wasSelected = this.editor.selection() === name;
+    this.editor.renameMuscle(name, newName);
+    if (wasSelected) this.emit('editor');
   }
 
   /** Adds a copy of a muscle, 4 mm higher and linked to no Action Unit; returns its name. */
@@ -1270,36 +1168,16 @@ export class FaceHandle {
     return this.document().toJSON();
   }
 
-  private setSelection(name: string | null): void {
-    this.selected = name;
-    this.editorView?.select(name);
-    this.applyPreview();
-  }
-
-  /** Gives the preview contraction to the selected muscle (or none). */
-  private applyPreview(): void {
-    if (!this.expression || !this.rigDocument) return;
-    const index = this.selected === null ? -1 : this.rigDocument.rig.muscles.findIndex((m) => m.name === this.selected);
-    this.expression.setPreview(index >= 0 && this.previewValue > 0 ? index : null, this.previewValue);
-  }
-
-  private selectedMuscle(what: string): Muscle {
-    const doc = this.document();
-    if (this.selected === null) throw new Error(`${what}: no muscle is selected`);
-    return doc.muscle(this.selected);
-  }
-
   private document(): RigDocument {
     this.alive();
-    if (!this.rigDocument) throw new Error('the face is not ready yet: await face.ready first');
-    return this.rigDocument;
+    return this.editor.document();
   }
 
   /** Makes the glyphs show the muscles the display asks for (none until the glyphs and the expression are attached). */
   private showMuscles(): void {
     if (!this.muscles) return;
     const d = this.muscleDisplay;
-    if (d.all || this.editorOn) this.muscles.setVisible('all');
+    if (d.all || this.editor.enabled()) this.muscles.setVisible('all');
     else if (!this.expression || d.actionUnits.length === 0) this.muscles.setVisible('none');
     else this.muscles.setVisible(new Set(shownMuscleNames(this.expression.rig, d)));
   }
@@ -1352,17 +1230,5 @@ export class FaceHandle {
 
   private alive(): void {
     if (this.disposed) throw new Error('the face was disposed');
-  }
-}
-
-/** The parts of a muscle the gizmo can hold, the first being where it goes on selection. */
-export function gizmoParts(muscle: Muscle): GizmoPart[] {
-  switch (muscle.type) {
-    case 'linear':
-      return ['insertion', 'origin'];
-    case 'jaw':
-      return ['box', 'hinge'];
-    default:
-      return ['ellipsoid'];
   }
 }
