@@ -18,165 +18,55 @@ import {
 import type { MaterialDescription } from '../render/materials';
 import type { HairSnapshot } from '../render/hair-view';
 import type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
-import type { SkinSimulation, SkinSimulationStats } from '../sim/main/skin-simulation';
-import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
+import type { SkinSimulation } from '../sim/main/skin-simulation';
+import { readExpression, type ExpressionEntries } from './expression-hash';
 import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader';
-import type { LandmarkGuide, LandmarkGuideState } from './landmark-guide';
+import type { LandmarkGuideState } from './landmark-guide';
 import type { Vec3 } from '../core/rig/rig-types';
 import type { FaceExpression } from './face-expression';
 import type { Timeline } from '../core/timeline/timeline';
 import { parseTimeline, parseTimelineText } from '../core/timeline/timeline-schema';
 import { planTargets, timelineWeights } from '../core/expression/morph-export';
-import type { HeadWriteOptions, JawPose, MorphClip, MorphShape } from '../render/gltf-export';
+import type { MorphShape } from '../render/gltf-export';
 import { checkExportOptions, type GLTFExportOptions } from './gltf-export-options';
 import { checkVideoOptions, type VideoOptions } from './video-options';
 
-/** The welded skin at one moment, in simulation vertex order. */
-export interface SkinSnapshot {
-  /** Rest positions, xyz per vertex. */
-  rest: Float32Array;
-  /** Current positions and unit normals, xyz per vertex. */
-  positions: Float32Array;
-  normals: Float32Array;
-  /** Triangles over the vertices, counter-clockwise from outside. */
-  triangles: Uint32Array;
-}
-
-export type FaceStats = SkinSimulationStats;
-
-/**
- * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters,
- * whether the eye simulation runs, which muscles are shown, the rig (an edit, undo or redo, a new rig), or the
- * editor (on or off, the selected muscle, its gizmo's mode or part, the preview contraction), the head (another
- * head loaded, or the default one back), the landmark guide (started, a landmark placed, ended), or the timeline
- * (loaded, played, paused, sought, and every frame it plays).
- */
-export type FaceChange =
-  | 'expression'
-  | 'light'
-  | 'camera'
-  | 'render'
-  | 'appearance'
-  | 'skin'
-  | 'eyes'
-  | 'muscles'
-  | 'rig'
-  | 'editor'
-  | 'head'
-  | 'landmarks'
-  | 'timeline';
-
 export { gizmoParts, type BrushOptions, type EditorState, type FaceEditorView, type GizmoMode, type GizmoPart } from './editor-session';
-
 export type { MuscleDisplay };
-
-/** The muscle glyphs the handle shows and hides (MuscleView). */
-export interface FaceMuscles {
-  setVisible(names: ReadonlySet<string> | 'all' | 'none'): void;
-  /** The names of the muscles drawn now. */
-  shown(): string[];
-}
-
-/** What the eye simulation has done since the page started it first: counts, and the gaze now in degrees. */
-export interface EyeStats {
-  /** Whether it runs. */
-  on: boolean;
-  /** Blinks and saccades started. */
-  blinks: number;
-  saccades: number;
-  /** Lid closure of the blink now, 0 open .. 1 closed. */
-  blink: number;
-  /** The simulation's clock: ms of rendered frames since it was switched on. */
-  time: number;
-  /** Positive yaw looks to the subject's left, positive pitch up. */
-  gaze: { yaw: number; pitch: number };
-}
-
-/** The eye simulation the handle switches (EyeDriver). */
-export interface FaceEyes {
-  setEnabled(on: boolean, simulation?: Partial<EyeSimulationOptions>): void;
-  enabled(): boolean;
-  stats(): EyeStats;
-}
-
-/** The head side the handle drives (EmbeddedFace): loading another head, going back to the default one. */
-export interface FaceHeads {
-  loadHead(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription>;
-  revertHead(): Promise<void>;
-  describeHead(): HeadDescription;
-  guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription>;
-  landmarkGuide(): LandmarkGuide | undefined;
-}
-
-/** The face's element around its canvas: the panels and the background (EmbeddedFace). */
-export interface FaceShell {
-  setPanels(on: boolean): Promise<void>;
-  hasPanels(): boolean;
-  setBackground(background: string): void;
-  getBackground(): string;
-}
-
-/** What carries over from one head to the next: the expression, the eye simulation, the skin parameters. */
-export interface CarriedState {
-  expression: HashExpression;
-  eyes: boolean;
-  skin: SkinParameters;
-}
-
-/** Where the timeline is: whether one is loaded, whether it plays, its clock and duration in seconds, and its loop flag. */
-export interface TimelineState {
-  loaded: boolean;
-  playing: boolean;
-  time: number;
-  duration: number;
-  loop: boolean;
-}
-
-/** The timeline player the handle drives (TimelinePlayer). */
-export interface FaceTimeline {
-  set(timeline: Timeline | null): void;
-  timeline(): Timeline | null;
-  play(): void;
-  pause(): void;
-  seek(seconds: number): void;
-  state(): TimelineState;
-}
-
-/** The writer `exportGLTF` hands the solved shapes to (HeadExporter). */
-export interface FaceGLTFWriter {
-  /** Render vertices of the skin. */
-  readonly vertexCount: number;
-  jawPose(): JawPose | null;
-  write(shapes: readonly MorphShape[], clip: MorphClip | null, options: HeadWriteOptions): Promise<ArrayBuffer | Record<string, unknown>>;
-}
-
-/** The recorder the handle drives (VideoRecorder). */
-export interface FaceRecorder {
-  /** Records `seconds` with checked options. */
-  record(options: Required<VideoOptions>, seconds: number): Promise<Blob>;
-  recording(): boolean;
-}
-
-/** Told after every successful change made through the handle (panels refresh their sliders with it). */
-export type FaceChangeListener = (change: FaceChange) => void;
-
-/** The view the handle drives lights and render options through (HeadView). */
-export interface FaceView {
-  setLight(partial: Partial<LightOptions>): void;
-  lightOptions(): LightOptions;
-  setRenderOptions(partial: Partial<RenderOptions>): void;
-  renderOptions(): RenderOptions;
-  setAppearance(partial: Partial<AppearanceOptions>): void;
-  appearanceOptions(): AppearanceOptions;
-  describeHair(vertexAt: (x: number, y: number, z: number) => number): HairSnapshot | null;
-  setCamera(partial: Partial<CameraOptions>): void;
-  cameraOptions(): CameraOptions;
-  locate(point: readonly [number, number, number]): { x: number; y: number } | null;
-  /** Renders a frame and encodes the canvas as a PNG. */
-  snapshot(): Promise<Blob>;
-  measureRender(frames?: number): RenderTiming;
-  describeMaterials(): MaterialDescription[];
-}
+export type {
+  SkinSnapshot,
+  FaceStats,
+  FaceChange,
+  FaceMuscles,
+  EyeStats,
+  FaceEyes,
+  FaceHeads,
+  FaceShell,
+  CarriedState,
+  TimelineState,
+  FaceTimeline,
+  FaceGLTFWriter,
+  FaceRecorder,
+  FaceChangeListener,
+  FaceView,
+} from './face-ports';
+import type {
+  SkinSnapshot,
+  FaceStats,
+  FaceChange,
+  FaceMuscles,
+  EyeStats,
+  FaceEyes,
+  FaceHeads,
+  FaceShell,
+  CarriedState,
+  TimelineState,
+  FaceTimeline,
+  FaceGLTFWriter,
+  FaceRecorder,
+  FaceChangeListener,
+  FaceView,
+} from './face-ports';
 
 /**
  * A face on the page, as scripts (and the tests) drive it: what `createFace` resolves to, and `window.face` in the
