@@ -26,9 +26,8 @@ import type { Vec3 } from '../core/rig/rig-types';
 import type { FaceExpression } from './face-expression';
 import type { Timeline } from '../core/timeline/timeline';
 import { parseTimeline, parseTimelineText } from '../core/timeline/timeline-schema';
-import { planTargets, timelineWeights } from '../core/expression/morph-export';
-import type { MorphShape } from '../render/gltf-export';
 import { checkExportOptions, type GLTFExportOptions } from './gltf-export-options';
+import { bakeGLTF } from './gltf-bake';
 import { checkVideoOptions, type VideoOptions } from './video-options';
 
 export { gizmoParts, type BrushOptions, type EditorState, type FaceEditorView, type GizmoMode, type GizmoPart } from './editor-session';
@@ -766,88 +765,29 @@ export class FaceHandle {
     const o = checkExportOptions(options);
     this.alive();
     await this.ready;
-    const expression = this.expressed();
-    const simulation = this.running();
-    const player = this.timelinePlayer();
     const writer = this.gltfWriter;
     if (!writer) throw new Error('exportGLTF: the face has no head to export yet');
-    const loaded = player.timeline();
-    if (o.timeline === true && !loaded)
-      throw new Error('exportGLTF: timeline: no timeline is loaded (setTimeline first, or leave timeline out)');
-    const timeline = o.timeline === false ? null : loaded;
-    const targets = planTargets(
-      o.actionUnits,
-      o.presets,
-      this.listPresets().map((p) => p.name),
-      timeline,
-    );
-    const weights = timeline ? timelineWeights(timeline, targets, o.fps) : null;
-    o.signal?.throwIfAborted();
-    if (this.exporting) throw new Error('exportGLTF: another export is under way');
-    this.exporting = true;
-    const saved = {
-      expression: {
-        actionUnits: expression.getActionUnits(),
-        presets: Object.fromEntries(expression.listPresets().map((p) => [p.name, p.weight])),
+    return bakeGLTF(
+      {
+        expression: this.expressed(),
+        simulation: this.running(),
+        player: this.timelinePlayer(),
+        writer,
+        eyes: this.eyes,
+        presets: this.listPresets().map((p) => p.name),
+        expressionChanged: () => this.emit('expression'),
+        restorePreview: () => this.editor.applyPreview(),
+        alive: () => !this.disposed,
+        begin: () => {
+          if (this.exporting) throw new Error('exportGLTF: another export is under way');
+          this.exporting = true;
+        },
+        end: () => {
+          this.exporting = false;
+        },
       },
-      overlay: expression.getOverlay(),
-      eyes: this.eyes?.enabled() ?? false,
-      playing: player.state().playing,
-    };
-    const shapes: MorphShape[] = [];
-    const neutral = { actionUnits: {}, presets: {} };
-    try {
-      // Nothing but the target may move the skin: no timeline frames, blinks, overlay or editor preview.
-      if (saved.playing) player.pause();
-      this.eyes?.setEnabled(false);
-      expression.clearOverlay();
-      expression.setPreview(null);
-      expression.set(neutral, 'exportGLTF');
-      this.emit('expression');
-      await this.settleFor(o.settleTimeoutMs, o.signal);
-      for (const [i, target] of targets.entries()) {
-        o.onProgress?.({ done: i, total: targets.length, target: target.name });
-        const one = { [target.id]: 1 };
-        expression.set(target.kind === 'preset' ? { actionUnits: {}, presets: one } : { actionUnits: one, presets: {} }, 'exportGLTF');
-        this.emit('expression');
-        await this.settleFor(o.settleTimeoutMs, o.signal);
-        const positions = new Float32Array(3 * writer.vertexCount);
-        const normals = new Float32Array(3 * writer.vertexCount);
-        simulation.readRender(positions, normals);
-        shapes.push({ name: target.name, positions, normals, jaw: writer.jawPose() });
-        // Back to neutral, so that every target starts from the same settled face.
-        expression.set(neutral, 'exportGLTF');
-        this.emit('expression');
-        await this.settleFor(o.settleTimeoutMs, o.signal);
-      }
-    } finally {
-      this.exporting = false;
-      if (!this.disposed) {
-        expression.set(saved.expression, 'exportGLTF');
-        const ids = Object.keys(saved.overlay);
-        expression.setOverlay(
-          ids,
-          ids.map((id) => saved.overlay[id]),
-        );
-        this.editor.applyPreview();
-        this.eyes?.setEnabled(saved.eyes);
-        if (saved.playing) player.play();
-        this.emit('expression');
-      }
-    }
-    o.onProgress?.({ done: targets.length, total: targets.length, target: null });
-    const clip = weights ? { name: 'timeline', ...weights } : null;
-    const data = await writer.write(shapes, clip, { binary: o.binary });
-    return data instanceof ArrayBuffer
-      ? new Blob([data], { type: 'model/gltf-binary' })
-      : new Blob([JSON.stringify(data)], { type: 'model/gltf+json' });
-  }
-
-  /** Waits for the skin to settle, checking the abort signal before and after. */
-  private async settleFor(timeoutMs: number, signal: AbortSignal | null): Promise<void> {
-    signal?.throwIfAborted();
-    await this.running().settle(timeoutMs);
-    signal?.throwIfAborted();
+      o,
+    );
   }
 
   // ---- the rig editor ----------------------------------------------------------------------------------------
