@@ -31,6 +31,59 @@ import {
   type PartArrays,
 } from './solver-kernels';
 
+/** Which share of a job `runShare` runs: all of it (no partner), the leader's, or the partner's. */
+export const ALONE = -1;
+export const LEADER = 0;
+const PARTNER = 1;
+
+/**
+ * Runs one thread's share of a job that splits the region's vertices, a collider's candidates or a length pass's
+ * colours in two (every job but the orientation and bending passes, which go part by part): the leader's half, the
+ * partner's, or, `ALONE`, all of it. `count` is the region's vertex count (the length passes for JOB_LENGTHS); `a`,
+ * `b`, `c` the job's arguments; `words` the board's words when two threads share the job (the length and normal
+ * passes meet at its barrier between colours), else null. Returns the largest squared move for JOB_STEPS, else 0.
+ * The leader (SkinSolver) and the partner thread call this same function, so both split every job alike.
+ */
+export function runShare(
+  arrays: PartArrays,
+  job: number,
+  count: number,
+  a: number,
+  b: number,
+  c: number,
+  side: number,
+  words: Int32Array | null,
+  direction: Float32Array,
+): number {
+  const from = side === PARTNER ? count >> 1 : 0;
+  const to = side === LEADER ? count >> 1 : count;
+  const thread = side === PARTNER ? 1 : 0;
+  switch (job) {
+    case JOB_LENGTHS:
+      for (let pass = 0; pass < count; pass++) projectLengths(arrays, a, b, words, thread);
+      return 0;
+    case JOB_POSITIONS:
+      projectPositions(arrays, a, b, c, from, to);
+      return 0;
+    case JOB_COLLISIONS:
+      projectCollisions(arrays, thread, side === ALONE ? 1 : 2, direction);
+      return 0;
+    case JOB_NORMALS:
+      projectNormals(arrays, count, words, thread);
+      return 0;
+    case JOB_START_FRAME:
+      startFramePart(arrays, a, b, from, to);
+      return 0;
+    case JOB_RELAX:
+      relaxPart(arrays, a, from, to);
+      return 0;
+    case JOB_STEPS:
+      return recordStepsPart(arrays, from, to);
+    default:
+      throw new Error(`runShare: job ${job} is not split by vertices`);
+  }
+}
+
 /**
  * The partner thread's side of a two-thread solver: whenever the leader's SkinSolver posts a job on the board, it
  * takes the second half of each colour of a length pass, of the region's position and muscle constraints, of each
@@ -58,15 +111,10 @@ export class SolverPartner {
       const part = Atomics.load(words, BOARD_PART);
       if (job === JOB_STOP) return;
       let result = 0;
-      if (job === JOB_LENGTHS) for (let pass = 0; pass < part; pass++) projectLengths(this.arrays, args[0], args[1], words, 1);
-      else if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0], args[1]) ? 1 : 0;
-      else if (job === JOB_POSITIONS) projectPositions(this.arrays, args[0], args[1], args[2], part >> 1, part);
-      else if (job === JOB_COLLISIONS) projectCollisions(this.arrays, 1, 2, this.direction);
+      if (job === JOB_ORIENTATION) result = projectOrientationPart(this.arrays, part, args[0], args[1]) ? 1 : 0;
       else if (job === JOB_BENDING) projectBendingPart(this.arrays, Math.floor(part / PARTS), part % PARTS);
-      else if (job === JOB_NORMALS) projectNormals(this.arrays, part, words, 1);
-      else if (job === JOB_START_FRAME) startFramePart(this.arrays, args[0], args[1], part >> 1, part);
-      else if (job === JOB_RELAX) relaxPart(this.arrays, args[0], part >> 1, part);
-      else if (job === JOB_STEPS) this.board.value[0] = recordStepsPart(this.arrays, part >> 1, part);
+      else if (job === JOB_STEPS) this.board.value[0] = runShare(this.arrays, job, part, 0, 0, 0, PARTNER, words, this.direction);
+      else runShare(this.arrays, job, part, args[0], args[1], args[2], PARTNER, words, this.direction);
       Atomics.store(words, BOARD_RESULT, result);
       done = sequence;
       Atomics.store(words, BOARD_DONE, done);

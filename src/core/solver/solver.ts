@@ -38,21 +38,8 @@ import {
   JOB_STEPS,
 } from './partner-board';
 import type { PartnerLink } from './partner-link';
-import {
-  projectBendingPart,
-  projectCollisions,
-  projectLengths,
-  projectNormals,
-  projectOrientationPart,
-  projectPositions,
-  recordStepsPart,
-  relaxPart,
-  startFramePart,
-  ORIENT_AGAIN,
-  ORIENT_FULL,
-  ORIENT_WATCHED,
-  type PartArrays,
-} from './solver-kernels';
+import { ALONE, LEADER, runShare } from './solver-partner';
+import { projectBendingPart, projectOrientationPart, ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, type PartArrays } from './solver-kernels';
 import { computeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
@@ -747,10 +734,7 @@ export class SkinSolver {
     const count = r.shadedCount;
     zeroAt(out, r.shadedVertices, count);
     zeroAt(out, r.outer, r.outerCount);
-    const partner = this.partner;
-    partner?.start(JOB_NORMALS, count);
-    projectNormals(this.parts, count, partner ? partner.board.words : null, 0);
-    partner?.finish();
+    this.share(JOB_NORMALS, count);
     const N = this.topology.restNormals;
     for (let k = 0; k < r.outerCount; k++) {
       const i = 3 * r.outer[k];
@@ -777,15 +761,7 @@ export class SkinSolver {
   private relax(): void {
     const late = this.motionFrames++ - LATE_MOTION;
     const cap = late > 0 ? LATE_SLOWING ** late : 1;
-    const count = this.region.count;
-    const partner = this.partner;
-    if (!partner) {
-      relaxPart(this.parts, cap, 0, count);
-      return;
-    }
-    partner.start(JOB_RELAX, count, cap);
-    relaxPart(this.parts, cap, 0, count >> 1);
-    partner.finish();
+    this.share(JOB_RELAX, this.region.count, cap);
   }
 
   /**
@@ -842,26 +818,13 @@ export class SkinSolver {
    * carried move that overshoots turns back, and the relaxation treats that as any cycle.
    */
   private startFrame(beta: number, foldBeta: number): void {
-    const count = this.region.count;
-    const partner = this.partner;
-    if (!partner) {
-      startFramePart(this.parts, beta, foldBeta, 0, count);
-      return;
-    }
-    partner.start(JOB_START_FRAME, count, beta, foldBeta);
-    startFramePart(this.parts, beta, foldBeta, 0, count >> 1);
-    partner.finish();
+    this.share(JOB_START_FRAME, this.region.count, beta, foldBeta);
   }
 
   /** Stores each vertex's move of this frame and returns the largest. */
   private recordSteps(): number {
-    const count = this.region.count;
-    const partner = this.partner;
-    if (!partner) return Math.sqrt(recordStepsPart(this.parts, 0, count));
-    partner.start(JOB_STEPS, count);
-    const mine = recordStepsPart(this.parts, 0, count >> 1);
-    partner.finish();
-    return Math.sqrt(Math.max(mine, partner.board.value[0]));
+    const mine = this.share(JOB_STEPS, this.region.count);
+    return Math.sqrt(this.partner ? Math.max(mine, this.partner.board.value[0]) : mine);
   }
 
   /**
@@ -872,15 +835,7 @@ export class SkinSolver {
     const s = this.params.positionStiffness;
     const extra = s * (this.params.inwardResistance - 1);
     const m = this.params.muscleStiffness;
-    const count = this.region.count;
-    const partner = this.partner;
-    if (!partner) {
-      projectPositions(this.parts, s, extra, m, 0, count);
-      return;
-    }
-    partner.start(JOB_POSITIONS, count, s, extra, m);
-    projectPositions(this.parts, s, extra, m, 0, count >> 1);
-    partner.finish();
+    this.share(JOB_POSITIONS, this.region.count, s, extra, m);
   }
 
   /**
@@ -888,12 +843,7 @@ export class SkinSolver {
    * partner if there is one (one job for all the passes).
    */
   private projectLengths(passes: number): void {
-    const { lengthStiffness, bulge } = this.params;
-    const partner = this.partner;
-    partner?.start(JOB_LENGTHS, passes, lengthStiffness, bulge);
-    const board = partner ? partner.board.words : null;
-    for (let pass = 0; pass < passes; pass++) projectLengths(this.parts, lengthStiffness, bulge, board, 0);
-    partner?.finish();
+    this.share(JOB_LENGTHS, passes, this.params.lengthStiffness, this.params.bulge);
   }
 
   /**
@@ -942,14 +892,20 @@ export class SkinSolver {
    * Only the candidates in or next to the active region are checked (see listCandidates); half on the partner if any.
    */
   private projectCollisions(): void {
+    this.share(JOB_COLLISIONS, 0);
+  }
+
+  /**
+   * Runs a job that splits in two (see runShare): all of it here, or the first half here and the second on the partner
+   * thread at the same time. Returns this thread's result (JOB_STEPS: its largest squared move).
+   */
+  private share(job: number, count: number, a = 0, b = 0, c = 0): number {
     const partner = this.partner;
-    if (!partner) {
-      projectCollisions(this.parts, 0, 1, this.direction);
-      return;
-    }
-    partner.start(JOB_COLLISIONS);
-    projectCollisions(this.parts, 0, 2, this.direction);
+    if (!partner) return runShare(this.parts, job, count, a, b, c, ALONE, null, this.direction);
+    partner.start(job, count, a, b, c);
+    const mine = runShare(this.parts, job, count, a, b, c, LEADER, partner.board.words, this.direction);
     partner.finish();
+    return mine;
   }
 
   /**
