@@ -2,7 +2,8 @@ import { Euler, Matrix4 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
 import { DEGREES, eulerMatrix, rotateAboutAxis } from '../src/core/math3';
-import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle, type MuscleOutputs } from '../src/core/rig/muscles';
+import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle } from '../src/core/rig/muscles';
+import type { MuscleInputs } from '../src/core/solver/solver';
 import type { JawMuscle, LidMuscle, LinearMuscle, Muscle, SphincterMuscle, Vec3 } from '../src/core/rig/rig-types';
 
 /** A seeded generator of uniform numbers in [0, 1) (mulberry32), so every run sees the same points. */
@@ -25,7 +26,7 @@ function line(a: Vec3, b: Vec3, step: number): Float32Array {
   return p;
 }
 
-function outputsFor(vertexCount: number): MuscleOutputs {
+function outputsFor(vertexCount: number): MuscleInputs {
   return {
     targets: new Float32Array(3 * vertexCount),
     weights: new Float32Array(vertexCount),

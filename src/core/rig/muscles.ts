@@ -7,6 +7,7 @@
  * below says which of its ideas it implements and uses the smooth form that was meant.
  */
 import { DEGREES, eulerMatrix, rotationOffset, rotationOffsetBy } from '../math3';
+import type { MuscleInputs } from '../solver/solver';
 import type { BrushSphere, Muscle, Vec3 } from './rig-types';
 
 const HALF_PI = Math.PI / 2;
@@ -613,16 +614,6 @@ export class MuscleField {
   }
 }
 
-/** Where computed muscle inputs go: the solver's buffers (`SolverBuffers`) fit. */
-export interface MuscleOutputs {
-  /** Muscle target of each vertex, xyz. */
-  targets: Float32Array;
-  /** Muscle weight along the skin's surface, per vertex, 0..1. */
-  weights: Float32Array;
-  /** Muscle weight along the rest normal, per vertex, 0..1. */
-  normalWeights: Float32Array;
-}
-
 export interface MuscleRigOptions {
   /** Substeps of the combined contraction (the 2003 improvement the thesis cites); default 8. */
   substeps?: number;
@@ -775,7 +766,7 @@ export class MuscleRig {
    * within `margin` of its rest position, where it cannot be in any other zone, and through every active muscle once
    * it has slid farther: the result is that of asking every muscle everywhere, only faster.
    */
-  compute(contractions: ArrayLike<number>, out: MuscleOutputs): number {
+  compute(contractions: ArrayLike<number>, out: MuscleInputs): number {
     const n = this.vertexCount;
     const { targets, weights, normalWeights } = out;
     if (targets.length !== 3 * n || weights.length !== n || normalWeights.length !== n) {
@@ -1019,7 +1010,7 @@ export function computeMuscleTargets(
   rest: Float32Array,
   muscles: readonly Muscle[],
   contractions: ArrayLike<number>,
-  out: MuscleOutputs,
+  out: MuscleInputs,
   options: MuscleRigOptions = {},
 ): number {
   return new MuscleRig(rest, muscles, options).compute(contractions, out);

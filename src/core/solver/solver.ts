@@ -987,8 +987,18 @@ export function checkMuscleTargets(
   }
 }
 
-/** Per-vertex muscle inputs: the solver's buffers and the worker's control block both have them. */
-export type MuscleInputs = Pick<SolverBuffers, 'targets' | 'weights' | 'normalWeights'>;
+/**
+ * The muscles' pull on each vertex, as the rig computes it (MuscleRig.compute) and the solver takes it: the solver's
+ * buffers, the worker's control block and a batch of inputs all have this shape.
+ */
+export interface MuscleInputs {
+  /** Muscle target of each vertex, xyz. */
+  targets: Float32Array;
+  /** Muscle weight along the skin's surface, per vertex, 0..1. */
+  weights: Float32Array;
+  /** Muscle weight along the rest normal, per vertex, 0..1. */
+  normalWeights: Float32Array;
+}
 
 /** Writes checked muscle targets (see checkMuscleTargets) and both weights for some vertices into `into`. */
 export function writeMuscleTargets(

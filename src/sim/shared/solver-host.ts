@@ -5,7 +5,7 @@ import { MuscleRig } from '../../core/rig/muscles';
 import { mulberry32 } from '../../core/random';
 import type { Muscle } from '../../core/rig/rig-types';
 import type { Memory } from '../../core/solver/memory';
-import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type SkinParameters } from '../../core/solver/solver';
+import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type MuscleInputs, type SkinParameters } from '../../core/solver/solver';
 import { buildTopology, describeTopology, type SkinTopology } from '../../core/solver/topology';
 import {
   CONSTRAINT_INDEX,
@@ -29,13 +29,6 @@ export interface SolverHostInput {
   activeRegion?: boolean;
   /** `shared` puts the solver's arrays on shared memory, for a partner thread (see SkinSolver.partArrays). */
   memory?: Memory;
-}
-
-/** The muscle inputs of a batch: targets (xyz per vertex) and the two weights per vertex. */
-export interface MuscleInput {
-  targets: Float32Array;
-  weights: Float32Array;
-  normalWeights: Float32Array;
 }
 
 /** Frames the host may spend settling the rest shape before it counts as ready. */
@@ -98,7 +91,7 @@ export class SolverHost {
   }
 
   /** Applies one input batch (null parts did not change), as of input sequence number `seq`. */
-  apply(seq: number, muscles: MuscleInput | null, parameters: Float64Array | null, contractions: Float32Array | null = null): void {
+  apply(seq: number, muscles: MuscleInputs | null, parameters: Float64Array | null, contractions: Float32Array | null = null): void {
     if (muscles) {
       this.solver.buffers.targets.set(muscles.targets);
       this.solver.buffers.weights.set(muscles.weights);
