@@ -31,20 +31,22 @@ test('a link with an expression in its hash opens that face, and the hash follow
   const link = page.url();
   expect(link).toContain('AU1L=0.6');
 
-  // A burst of changes every 10 ms for a second writes the hash at most every 250 ms, and ends on the last value.
+  // A burst of changes every 10 ms (a second or more: a busy machine stretches the timers) writes the hash at most
+  // every 250 ms of the time it took, and ends on the last value.
   const burst = await page.evaluate(async () => {
     const w = window as unknown as { hashWrites: number };
     const before = w.hashWrites;
+    const start = performance.now();
     for (let i = 1; i <= 100; i++) {
       window.face.setActionUnit('AU26', i / 100);
       await new Promise((r) => setTimeout(r, 10));
     }
     await new Promise((r) => setTimeout(r, 400));
-    return { writes: w.hashWrites - before, hash: location.hash };
+    return { writes: w.hashWrites - before, ms: performance.now() - start, hash: location.hash };
   });
-  console.log(`hash writes during a 1 s burst of 100 changes: ${burst.writes}`);
+  console.log(`hash writes during a burst of 100 changes over ${Math.round(burst.ms)} ms: ${burst.writes}`);
   expect(burst.writes).toBeGreaterThanOrEqual(2);
-  expect(burst.writes).toBeLessThanOrEqual(8);
+  expect(burst.writes).toBeLessThanOrEqual(Math.ceil(burst.ms / 250) + 1);
   expect(burst.hash).toContain('AU26=1');
 
   // The copied link reopens the same face, in a fresh page.
