@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { NodeIO } from '@gltf-transform/core';
-import type { HeadDescription } from '../src/embed/head-loader';
+import type { HeadDescription } from '../src/face/head-loader';
 import type { Page } from '@playwright/test';
 import { openFace } from './face';
 import { expect, test } from './fixtures';

@@ -2,8 +2,8 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { RigDocument } from '../src/core/rig/rig-document';
 import type { Rig } from '../src/core/rig/rig-types';
-import { EditorSession, type FaceEditorView } from '../src/embed/editor-session';
-import type { FaceExpression } from '../src/embed/face-expression';
+import { EditorSession, type FaceEditorView } from '../src/face/editor-session';
+import type { FaceExpression } from '../src/face/face-expression';
 
 const DEFAULT_TEXT = readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8');
 

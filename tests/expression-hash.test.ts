@@ -6,7 +6,7 @@ import {
   encodeExpression,
   expressionEntries,
   readExpression,
-} from '../src/embed/expression-hash';
+} from '../src/face/expression-hash';
 
 describe('the expression carried in the URL hash', () => {
   it('round-trips non-zero Action Units and preset weights, leaving zeros out', () => {

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import type { MorphShape } from '../src/render/gltf-export';
-import type { FaceExpression } from '../src/embed/face-expression';
-import { bakeGLTF, type BakePorts } from '../src/embed/gltf-bake';
-import { checkExportOptions } from '../src/embed/gltf-export-options';
+import type { FaceExpression } from '../src/face/face-expression';
+import { bakeGLTF, type BakePorts } from '../src/face/gltf-bake';
+import { checkExportOptions } from '../src/face/gltf-export-options';
 
 /** Fake ports: the "skin" is one render vertex whose x is the number of Action Units and presets set to 1. */
 function fakeFace() {

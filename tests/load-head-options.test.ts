@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { checkLoadHeadOptions, LOAD_HEAD_DEFAULTS, MAX_HEAD_FILE_BYTES, readHeadFiles } from '../src/embed/head-loader';
+import { checkLoadHeadOptions, LOAD_HEAD_DEFAULTS, MAX_HEAD_FILE_BYTES, readHeadFiles } from '../src/face/head-loader';
 
 describe('loadHead options', () => {
   it('fills in the defaults and keeps what is given', () => {

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { planTargets, timelineTargets, timelineWeights } from '../src/core/expression/morph-export';
 import type { Timeline } from '../src/core/timeline/timeline';
-import { checkExportOptions, GLTF_EXPORT_DEFAULTS } from '../src/embed/gltf-export-options';
+import { checkExportOptions, GLTF_EXPORT_DEFAULTS } from '../src/face/gltf-export-options';
 
 const PRESETS = ['happiness', 'surprise'];
 

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { ExpressionState } from '../src/core/expression/facs';
 import { createTimelineSample, sampleTimeline, type Timeline } from '../src/core/timeline/timeline';
-import { decodeExpression, decodeTimeline, encodeExpression } from '../src/embed/expression-hash';
+import { decodeExpression, decodeTimeline, encodeExpression } from '../src/face/expression-hash';
 
 const TIMELINE: Timeline = {
   format: 'softface-timeline',

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { checkVideoOptions, VIDEO_DEFAULTS, videoFrameCount } from '../src/embed/video-options';
+import { checkVideoOptions, VIDEO_DEFAULTS, videoFrameCount } from '../src/face/video-options';
 
 describe('recordVideo options', () => {
   it('fills in the defaults and keeps what is given', () => {

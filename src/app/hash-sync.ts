@@ -1,4 +1,4 @@
-import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import type { FaceChange, FaceHandle } from '../face/face-handle';
 import {
   appearanceChanges,
   decodeAppearance,
@@ -6,7 +6,7 @@ import {
   decodeTimeline,
   encodeExpression,
   MAX_HASH_TIMELINE_CHARS,
-} from '../embed/expression-hash';
+} from '../face/expression-hash';
 import { APPEARANCE_DEFAULTS, type AppearanceOptions } from '../render/view-options';
 
 /** Options of the URL hash sync. */

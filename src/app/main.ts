@@ -1,5 +1,5 @@
 import { createFace } from '../embed/create-face';
-import { encodeExpression } from '../embed/expression-hash';
+import { encodeExpression } from '../face/expression-hash';
 import { RESOLUTIONS, type Resolution } from '../embed/face-options';
 import { chooseSolverMode, chooseWorkers } from '../sim/main/solver-mode';
 import { HashSync } from './hash-sync';

@@ -1,5 +1,5 @@
-import { EmbeddedFace } from './embedded-face';
-import type { FaceHandle } from './face-handle';
+import { EmbeddedFace } from '../face/embedded-face';
+import type { FaceHandle } from '../face/face-handle';
 import type { FaceOptions } from './face-options';
 
 /** A face on a page: the handle `createFace` resolves to (`window.face` in the app). */

@@ -1,4 +1,4 @@
-import { readExpression, type HashExpression } from './expression-hash';
+import { readExpression, type HashExpression } from '../face/expression-hash';
 import { checkFaceOption, type Resolution, type SolverChoice } from './face-options';
 
 /** The attributes `<soft-face>` reads. */

@@ -8,7 +8,7 @@ import {
   type AppearanceOptions,
   type LightOptions,
 } from '../render/view-options';
-import { readExpression, type ExpressionEntries } from './expression-hash';
+import { readExpression, type ExpressionEntries } from '../face/expression-hash';
 
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 /** The head's mesh resolution: low (4,284 skin vertices), medium (17,091) or high (68,277). */

@@ -2,10 +2,10 @@ import type { SkinParameters } from '../core/solver/solver';
 import type { AppearanceOptions, LightOptions, RenderOptions } from '../render/view-options';
 import type { Face } from './create-face';
 import { ATTRIBUTE_DEFAULTS, FACE_ATTRIBUTES, readAttributes, type FaceAttribute, type FaceAttributeValues } from './element-attributes';
-import { EmbeddedFace } from './embedded-face';
-import { expressionEntries, type HashExpression } from './expression-hash';
-import { checkExpression } from './face-expression';
-import type { FaceChange, MuscleDisplay } from './face-handle';
+import { EmbeddedFace } from '../face/embedded-face';
+import { expressionEntries, type HashExpression } from '../face/expression-hash';
+import { checkExpression } from '../face/face-expression';
+import type { FaceChange, MuscleDisplay } from '../face/face-handle';
 
 /** What a `change` event's detail says: what the handle changed, or which shown part the attributes switched. */
 export interface SoftFaceChangeDetail {

@@ -1,7 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import { gradeOf, type Grade } from '../core/expression/facs';
-import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import type { FaceChange, FaceHandle } from '../face/face-handle';
 
 /** One slider of the panel: an Action Unit side (`AU12L`) or a midline unit (`AU17`). */
 interface SideSlider {

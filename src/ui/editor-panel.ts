@@ -1,7 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import { typingInto } from '../embed/face-editor';
-import type { EditorState, FaceChange, FaceHandle, GizmoMode } from '../embed/face-handle';
+import { typingInto } from '../face/face-editor';
+import type { EditorState, FaceChange, FaceHandle, GizmoMode } from '../face/face-handle';
 import { downloadBlob } from './download';
 import { FileImport } from './file-import';
 import { isHeadDrop } from './head-panel';

@@ -1,6 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { FaceHandle } from '../embed/face-handle';
+import type { FaceHandle } from '../face/face-handle';
 import { downloadBlob } from './download';
 import { note } from './note';
 import { named } from './named';

@@ -1,6 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import type { FaceChange, FaceHandle } from '../face/face-handle';
 import { LIGHT_RANGES, type LightOptions } from '../render/view-options';
 
 /**

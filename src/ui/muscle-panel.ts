@@ -2,7 +2,7 @@ import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import { ACTION_UNITS } from '../core/expression/facs';
 import type { Muscle } from '../core/rig/rig-types';
-import { gizmoParts, type FaceChange, type FaceHandle } from '../embed/face-handle';
+import { gizmoParts, type FaceChange, type FaceHandle } from '../face/face-handle';
 
 /** Number fields by muscle type: key, label, min, max, step. Vectors get one field per axis. */
 const SCALARS: Record<Muscle['type'], [string, string, number, number, number][]> = {

@@ -1,6 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { FaceHandle } from '../embed/face-handle';
+import type { FaceHandle } from '../face/face-handle';
 
 /** Something that calls hooks once per drawn frame (HeadView). */
 export interface FrameSource {

@@ -1,5 +1,5 @@
 import GUI from 'lil-gui';
-import type { FaceHandle } from '../embed/face-handle';
+import type { FaceHandle } from '../face/face-handle';
 import { ActionUnitsPanel } from './action-units-panel';
 import { EditorPanel } from './editor-panel';
 import { ExportPanel } from './export-panel';

@@ -1,6 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import type { FaceChange, FaceHandle } from '../face/face-handle';
 
 /** The Presets folder: a 0..1 weight slider per preset (they add up), and a button that zeroes everything. */
 export class PresetsPanel {

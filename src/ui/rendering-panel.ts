@@ -1,6 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import type { FaceChange, FaceHandle } from '../face/face-handle';
 import { RESOLUTIONS, type Resolution } from '../embed/face-options';
 import { downloadBlob, fileTimestamp } from './download';
 

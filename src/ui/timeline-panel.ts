@@ -1,7 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import { emptyTimeline, PRESET_TARGET_PREFIX, type Timeline } from '../core/timeline/timeline';
-import type { FaceChange, FaceHandle } from '../embed/face-handle';
+import type { FaceChange, FaceHandle } from '../face/face-handle';
 import { downloadBlob } from './download';
 import { FileImport } from './file-import';
 import { note } from './note';

@@ -1,7 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { FaceHandle } from '../embed/face-handle';
-import { VIDEO_DEFAULTS, type VideoFormat } from '../embed/video-options';
+import type { FaceHandle } from '../face/face-handle';
+import { VIDEO_DEFAULTS, type VideoFormat } from '../face/video-options';
 import { downloadBlob, fileTimestamp } from './download';
 import { note } from './note';
 import { named } from './named';

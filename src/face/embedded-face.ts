@@ -36,8 +36,8 @@ import {
 } from './head-loader';
 import { HeadStore } from './head-store';
 import { LandmarkGuide } from './landmark-guide';
-import { checkFaceOption, checkFaceOptions, type FaceOptions, type SolverChoice } from './face-options';
-import { packageAssetBase } from './package-assets';
+import { checkFaceOption, checkFaceOptions, type FaceOptions, type SolverChoice } from '../embed/face-options';
+import { packageAssetBase } from '../embed/package-assets';
 
 /**
  * One face in a container: its element (canvas and panels), view, head, solver, muscles, eyes and handle, built
