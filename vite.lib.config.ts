@@ -6,7 +6,7 @@ import { defineConfig } from 'vite';
  * host (`softface.js`, the entry; `element.js`, which registers `<soft-face>`). Mode `standalone`, built second: one
  * module with three.js inside (`softface.standalone.js`) for a plain `<script type="module">`. The skin worker (and
  * within it the solver's partner worker) is inlined (started from a Blob URL, no eval), and the models and rigs are copied beside the modules, where a face
- * looks for them by default (src/embed/package-assets.ts).
+ * looks for them by default (src/face/package-assets.ts).
  */
 const path = (p: string): string => fileURLToPath(new URL(p, import.meta.url));
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { FACE_DEFAULTS, checkFaceOptions } from '../src/embed/face-options';
+import { FACE_DEFAULTS, checkFaceOptions } from '../src/face/face-options';
 
 describe('createFace options', () => {
   it('fill in the defaults, and keep what is given', () => {

@@ -1,6 +1,6 @@
 import { createFace } from '../embed/create-face';
 import { encodeExpression } from '../face/expression-hash';
-import { RESOLUTIONS, type Resolution } from '../embed/face-options';
+import { RESOLUTIONS, type Resolution } from '../face/face-options';
 import { chooseSolverMode, chooseWorkers } from '../sim/main/solver-mode';
 import { HashSync } from './hash-sync';
 

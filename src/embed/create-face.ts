@@ -1,6 +1,6 @@
 import { EmbeddedFace } from '../face/embedded-face';
 import type { FaceHandle } from '../face/face-handle';
-import type { FaceOptions } from './face-options';
+import type { FaceOptions } from '../face/face-options';
 
 /** A face on a page: the handle `createFace` resolves to (`window.face` in the app). */
 export type Face = FaceHandle;

@@ -1,5 +1,5 @@
 import { readExpression, type HashExpression } from '../face/expression-hash';
-import { checkFaceOption, type Resolution, type SolverChoice } from './face-options';
+import { checkFaceOption, type Resolution, type SolverChoice } from '../face/face-options';
 
 /** The attributes `<soft-face>` reads. */
 export const FACE_ATTRIBUTES = ['resolution', 'expression', 'preset', 'solver', 'panels', 'eye-simulation', 'background'] as const;

@@ -1,6 +1,6 @@
 /** The package's entry: `import { createFace } from 'softface'`. The `<soft-face>` element is in `softface/element`. */
 export { createFace, type Face } from './create-face';
-export { FACE_DEFAULTS, RESOLUTIONS, SOLVER_CHOICES, type FaceOptions, type Resolution, type SolverChoice } from './face-options';
+export { FACE_DEFAULTS, RESOLUTIONS, SOLVER_CHOICES, type FaceOptions, type Resolution, type SolverChoice } from '../face/face-options';
 export type { ExpressionEntries } from '../face/expression-hash';
 export type { GLTFExportOptions, GLTFExportProgress } from '../face/gltf-export-options';
 export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay, SkinSnapshot, TimelineState } from '../face/face-handle';

@@ -1,19 +1,15 @@
-import { Quaternion, Vector3 } from 'three';
-import { DEGREES, eulerMatrix } from '../core/math3';
 import { RigDocument } from '../core/rig/rig-document';
-import { parseRig, parseRigText } from '../core/rig/rig-schema';
 import type { Rig } from '../core/rig/rig-types';
 import { HEAD_NODES } from '../core/head/head-nodes';
 import { headColliders } from '../render/head-colliders';
 import { DEFAULT_LANDMARKS, type Landmarks } from '../core/head/landmarks';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
-import { HeadView, type ViewBackground } from '../render/head-view';
+import { HeadView } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
 import { ENVIRONMENT_PATH, loadEnvironment } from '../render/environment';
 import { HairView } from '../render/hair-view';
 import { SkinView } from '../render/skin-view';
 import { HeadExporter } from '../render/gltf-export';
-import type { SolverMode } from '../sim/shared/protocol';
 import { SkinSimulation } from '../sim/main/skin-simulation';
 import { EyeDriver } from './eye-driver';
 import { TimelinePlayer } from './timeline-player';
@@ -23,9 +19,11 @@ import { RigAutosave } from './rig-autosave';
 import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
-import { FaceHandle } from './face-handle';
+import { createControllers, FaceHandle, type FaceControllers } from './face-handle';
+import { FaceParts } from './face-parts';
 import {
   checkLoadHeadOptions,
+  describeShownHead,
   MissingLandmarksError,
   prepareHead,
   readHeadFiles,
@@ -36,8 +34,10 @@ import {
 } from './head-loader';
 import { HeadStore } from './head-store';
 import { LandmarkGuide } from './landmark-guide';
-import { checkFaceOption, checkFaceOptions, type FaceOptions, type SolverChoice } from '../embed/face-options';
-import { packageAssetBase } from '../embed/package-assets';
+import { checkFaceOption, checkFaceOptions, solverMode, viewBackground, type FaceOptions } from './face-options';
+import { assetBase, loadRig, pageUrl, rigKey, rigName } from './face-assets';
+import { jawHinge, jawTurner } from './jaw-turner';
+import { takeBack } from './take-back';
 
 /**
  * One face in a container: its element (canvas and panels), view, head, solver, muscles, eyes and handle, built
@@ -46,6 +46,11 @@ import { packageAssetBase } from '../embed/package-assets';
  */
 export class EmbeddedFace {
   readonly handle: FaceHandle;
+  /** The parts the handle's controllers reach, connected here as the face is built and its head swapped. */
+  private readonly parts = new FaceParts();
+  private readonly controllers: FaceControllers;
+  private started!: () => void;
+  private failed!: (error: Error) => void;
   /** The face's own element in the container; the canvas and the panels are in it. */
   readonly element: HTMLDivElement;
   private readonly view: HeadView;
@@ -76,7 +81,12 @@ export class EmbeddedFace {
     container: HTMLElement,
     private readonly options: Required<FaceOptions>,
   ) {
-    this.handle = new FaceHandle(() => this.dispose());
+    const ready = new Promise<void>((resolve, reject) => {
+      this.started = resolve;
+      this.failed = reject;
+    });
+    this.controllers = createControllers(this.parts, ready);
+    this.handle = new FaceHandle(this.parts, this.controllers, ready, () => this.dispose());
     this.element = container.ownerDocument.createElement('div');
     this.element.className = 'softface';
     // Through the style object, not a style attribute, so that a content security policy without 'unsafe-inline'
@@ -85,13 +95,19 @@ export class EmbeddedFace {
     container.append(this.element);
     this.view = new HeadView(this.element, { background: viewBackground(options.background), motionResolution: options.motionResolution });
     Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
-    this.handle.attachView(this.view);
-    this.handle.attachHeads(this);
-    this.handle.attachShell(this);
+    this.parts.view = this.view;
+    this.parts.heads = this;
+    this.parts.shell = this;
     this.background = options.background;
     // One player for the face's life: a timeline keeps playing across a head change.
-    const player = new TimelinePlayer(this.handle, this.view);
-    this.handle.attachTimeline(player);
+    const player = new TimelinePlayer(
+      {
+        applyFrame: (ids, values, presets, weights) => this.controllers.expression.applyFrame(ids, values, presets, weights),
+        clockMoved: () => this.parts.emit('timeline'),
+      },
+      this.view,
+    );
+    this.parts.player = player;
     this.undo.push(() => player.dispose());
     this.view.start();
   }
@@ -108,7 +124,7 @@ export class EmbeddedFace {
     try {
       await face.build(signal);
     } catch (error) {
-      face.handle.fail(error as Error);
+      face.failed(error as Error);
       face.dispose();
       throw error;
     }
@@ -160,24 +176,16 @@ export class EmbeddedFace {
   dispose(): void {
     if (this.disposed) return;
     this.disposed = true;
+    this.failed(new Error('the face was disposed before it was ready'));
     this.handle.dispose();
     this.panels?.dispose();
     this.panels = undefined;
-    // Every part is taken back even if one fails; the first failure is reported after.
-    let failure: unknown;
-    const attempt = (step: () => void): void => {
-      try {
-        step();
-      } catch (error) {
-        failure ??= error;
-      }
-    };
-    attempt(() => this.guide?.cancel());
-    attempt(() => this.unmount());
-    while (this.undo.length > 0) attempt(this.undo.pop()!);
-    attempt(() => this.view.dispose());
-    this.element.remove();
-    if (failure !== undefined) throw failure;
+    try {
+      takeBack([() => this.view.dispose(), ...this.undo, () => this.unmount(), () => this.guide?.cancel()]);
+    } finally {
+      this.undo.length = 0;
+      this.element.remove();
+    }
   }
 
   private async build(signal: AbortSignal | undefined): Promise<void> {
@@ -276,10 +284,10 @@ export class EmbeddedFace {
     } catch (error) {
       if (!(error instanceof MissingLandmarksError)) throw error;
       this.guide?.cancel();
-      const guide = new LandmarkGuide(this.view, error, this.currentHeadRoot(), () => this.handle.guideChanged());
+      const guide = new LandmarkGuide(this.view, error, this.currentHeadRoot(), () => this.parts.emit('landmarks'));
       this.guide = guide;
       this.handle.setEditor(false);
-      this.handle.guideChanged();
+      this.parts.emit('landmarks');
       let landmarks: Partial<Landmarks>;
       try {
         landmarks = await guide.done;
@@ -287,7 +295,7 @@ export class EmbeddedFace {
         guide.dispose();
         if (this.guide === guide) this.guide = undefined;
         if (!this.disposed && this.shownHead) this.view.frameBounds(this.shownHead.bounds);
-        this.handle.guideChanged();
+        this.parts.emit('landmarks');
       }
       return this.loadHead(files, { ...o, landmarks: { ...(o.landmarks ?? {}), ...landmarks } });
     }
@@ -369,7 +377,7 @@ export class EmbeddedFace {
     }
     own.push(() => simulation.dispose());
     // From here on nothing waits: the current head goes and the new one takes its place in one step.
-    const carried = this.expression ? this.handle.carriedState() : undefined;
+    const carried = this.expression ? this.controllers.head.carried() : undefined;
     this.unmount();
     this.view.setHead(head);
     this.shownHead = head;
@@ -426,17 +434,19 @@ export class EmbeddedFace {
       },
     });
     own.push(() => binding.dispose());
-    this.handle.attach(simulation, expression);
-    this.handle.attachGLTFWriter(exporter);
-    this.handle.attachMuscles(muscles);
+    this.parts.simulation = simulation;
+    this.parts.expression = expression;
+    this.started();
+    this.parts.gltfWriter = exporter;
+    this.parts.muscles = muscles;
+    this.controllers.editor.showMuscles();
     // After the binding: listeners of the handle's 'rig' change see a face that already shows the edit.
     const name = prepared ? prepared.files[0].name.replace(/\.(glb|gltf|obj)$/i, '') : rigName(o.rig);
-    this.handle.attachRig(document, original, name);
+    this.controllers.editor.attachRig(document, original, name);
     if (autosave) {
       const saver = autosave;
       saver.watch(document);
-      this.handle.attachAutosave(() => saver.status);
-      saver.onStatus = () => this.handle.editorChanged();
+      saver.onStatus = this.controllers.editor.attachAutosave(() => saver.status);
       // A reload right after an edit would otherwise lose it.
       const leave = (): void => saver.flush();
       window.addEventListener('pagehide', leave);
@@ -447,45 +457,32 @@ export class EmbeddedFace {
     }
     const editor = new FaceEditor(this.handle, this.view, muscles, document, () => this.handle.getMirrorEdits(), head.skin, restRender);
     own.push(() => editor.dispose());
-    this.handle.attachEditor(editor);
+    this.controllers.editor.session.attachView(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same
     // millisecond; the state machine takes a seed for its tests.
     const eyes = new EyeDriver(this.handle, this.view, head.eyes, {
       simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 },
     });
     own.push(() => eyes.dispose());
-    this.handle.attachEyes(eyes);
-    this.handle.attachRecorder(new VideoRecorder({ handle: this.handle, simulation, view: this.view, skin: skinView }));
+    this.parts.eyes = eyes;
+    this.parts.recorder = new VideoRecorder({ handle: this.handle, simulation, view: this.view, skin: skinView });
     this.mounted = own;
-    const frame = prepared?.frame;
-    this.head = {
-      source: prepared ? 'loaded' : 'default',
-      level: prepared ? prepared.level : o.resolution,
-      name: prepared ? prepared.files[0].name : (this.modelUrl.split('/').pop() ?? ''),
+    this.head = describeShownHead(prepared, {
+      level: o.resolution,
+      file: this.modelUrl.split('/').pop() ?? '',
       vertices: simulation.stats().vertices,
       triangles: geometry.index!.count / 3,
-      units: frame?.units ?? 'm',
-      up: frame?.up ?? '+y',
-      forward: frame?.forward ?? '+z',
-      landmarks: prepared ? structuredClone(prepared.landmarks) : (structuredClone(DEFAULT_LANDMARKS) as Landmarks),
-      parts: prepared ? { ...prepared.sources } : { eyes: 'file', teeth: 'file', jaw: 'file' },
       loadMs: started > 0 ? Math.round(performance.now() - started) : 0,
-    };
-    if (carried) this.handle.restoreState(carried);
-    this.handle.headChanged();
+    });
+    if (carried) this.controllers.head.restore(carried);
+    this.parts.emit('head');
   }
 
   /** Takes back the shown head's solver, glyphs, editor, eyes and autosave (the view and panels stay). */
   private unmount(): void {
-    let failure: unknown;
-    while (this.mounted.length > 0) {
-      try {
-        this.mounted.pop()!();
-      } catch (error) {
-        failure ??= error;
-      }
-    }
-    if (failure !== undefined) throw failure;
+    const steps = this.mounted;
+    this.mounted = [];
+    takeBack(steps);
   }
 
   private alive(): void {
@@ -499,99 +496,4 @@ interface MountOptions {
   signal?: AbortSignal;
   /** A head loaded now: its rig starts as carried over (an edited rig kept for an earlier loaded head is dropped). */
   fresh?: boolean;
-}
-
-/** The autosave key's part for a rig: its URL's path (the same rig at any host), or `object` for a rig given as one. */
-function rigKey(rig: string | URL | Rig | null, base: string): string {
-  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'object';
-  return new URL(rig === null ? 'rigs/default.json' : String(rig), rig === null ? base : document.baseURI).pathname;
-}
-
-/** A rig's name for its exported file: its file's name without `.json` (`default`), or `rig`. */
-function rigName(rig: string | URL | Rig | null): string {
-  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'rig';
-  const file = rig === null ? 'default.json' : (new URL(String(rig), document.baseURI).pathname.split('/').pop() ?? '');
-  return file.replace(/(\.rig)?\.json$/i, '') || 'rig';
-}
-
-/** `auto` is `shared` on cross-origin isolated pages and `transfer` elsewhere; `shared` needs isolation. */
-function solverMode(choice: SolverChoice): SolverMode {
-  if (choice === 'auto') return crossOriginIsolated ? 'shared' : 'transfer';
-  if (choice === 'shared' && !crossOriginIsolated) {
-    console.warn("createFace: solver 'shared' needs a cross-origin isolated page (SharedArrayBuffer); using 'transfer'");
-    return 'transfer';
-  }
-  return choice;
-}
-
-function viewBackground(background: string): ViewBackground {
-  return background === 'transparent' ? 'transparent' : Number.parseInt(background.slice(1), 16);
-}
-
-/** A URL given by the page, made absolute against the page. */
-function pageUrl(url: string | URL): string {
-  return new URL(String(url), document.baseURI).href;
-}
-
-/** The folder models and rigs are fetched from, absolute and ending in a slash. */
-function assetBase(given: string | URL | null): string {
-  const base = given === null ? packageAssetBase() : pageUrl(given);
-  return base.endsWith('/') ? base : `${base}/`;
-}
-
-/** The rig given as an object (checked), at a URL, or the package's default rig. */
-async function loadRig(rig: string | URL | Rig | null, base: string): Promise<Rig> {
-  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return parseRig(rig, 'createFace: rig');
-  const url = rig === null ? new URL('rigs/default.json', base).href : pageUrl(rig);
-  let text: string;
-  try {
-    const response = await fetch(url);
-    if (!response.ok) throw new Error(`${response.status} ${response.statusText}`);
-    text = await response.text();
-  } catch (error) {
-    throw new Error(`the muscle rig could not be loaded from ${url}: ${(error as Error).message}`);
-  }
-  return parseRigText(text, url);
-}
-
-/** The jaw node's rest pose and the hinge of the rig it was loaded with. */
-interface JawRest {
-  quaternion: Quaternion;
-  position: Vector3;
-  hinge: Vector3 | undefined;
-}
-
-/** The rig's jaw hinge: its jaw muscle's joint, by default the centre of the box's back face (as the solver takes it). */
-function jawHinge(rig: Rig): Vector3 | undefined {
-  const muscle = rig.muscles.find((m) => m.type === 'jaw');
-  if (muscle?.type !== 'jaw') return undefined;
-  if (muscle.joint) return new Vector3(...muscle.joint);
-  const frame = new Array<number>(9);
-  eulerMatrix(muscle.rotation, frame);
-  const back = muscle.size[2] / 2;
-  return new Vector3(muscle.center[0] - back * frame[2], muscle.center[1] - back * frame[5], muscle.center[2] - back * frame[8]);
-}
-
-/**
- * Turns the lower teeth and tongue (the model's jaw node, placed at the jaw hinge) with the rig's jaw muscle, about
- * the muscle's local x axis, by the angle its contraction asks for. A hinge moved in the editor moves the pivot by as
- * much (the models put the jaw node at the root, in the rig's frame). Allocates nothing per call.
- */
-function jawTurner(head: HeadModel, rig: Rig, rest: JawRest | undefined): ((contractions: Float32Array) => void) | undefined {
-  const index = rig.muscles.findIndex((m) => m.type === 'jaw');
-  const muscle = rig.muscles[index];
-  if (!head.jaw || !rest || !muscle || muscle.type !== 'jaw') return undefined;
-  const jaw = head.jaw;
-  const frame = new Array<number>(9);
-  eulerMatrix(muscle.rotation, frame);
-  const axis = new Vector3(frame[0], frame[3], frame[6]).normalize();
-  const hinge = jawHinge(rig);
-  const pivot = rest.position.clone();
-  if (hinge && rest.hinge) pivot.add(hinge).sub(rest.hinge);
-  const turn = new Quaternion();
-  return (contractions) => {
-    turn.setFromAxisAngle(axis, contractions[index] * muscle.maxAngle * DEGREES);
-    jaw.quaternion.multiplyQuaternions(turn, rest.quaternion);
-    jaw.position.copy(rest.position).sub(pivot).applyQuaternion(turn).add(pivot);
-  };
 }

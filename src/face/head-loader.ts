@@ -254,3 +254,27 @@ export async function prepareHead(
   const { head, sources } = built;
   return { head, level, sources, rig, landmarks, frame, files, options };
 }
+
+/**
+ * What `describeHead` reports for a head just shown: a loaded one (`prepared`) or the default head, whose level, file
+ * name, counts and load time are given.
+ */
+export function describeShownHead(
+  prepared: PreparedHead | undefined,
+  shown: { level: HeadLevel; file: string; vertices: number; triangles: number; loadMs: number },
+): HeadDescription {
+  const frame = prepared?.frame;
+  return {
+    source: prepared ? 'loaded' : 'default',
+    level: prepared ? prepared.level : shown.level,
+    name: prepared ? prepared.files[0].name : shown.file,
+    vertices: shown.vertices,
+    triangles: shown.triangles,
+    units: frame?.units ?? 'm',
+    up: frame?.up ?? '+y',
+    forward: frame?.forward ?? '+z',
+    landmarks: structuredClone(prepared ? prepared.landmarks : (DEFAULT_LANDMARKS as Landmarks)),
+    parts: prepared ? { ...prepared.sources } : { eyes: 'file', teeth: 'file', jaw: 'file' },
+    loadMs: shown.loadMs,
+  };
+}

@@ -8,7 +8,14 @@ import {
   type TimelineSample,
 } from '../core/timeline/timeline';
 import type { FrameHooks } from './eye-driver';
-import type { FaceHandle, FaceTimeline, TimelineState } from './face-handle';
+import type { FaceTimeline, TimelineState } from './face-ports';
+
+/** Where the player's frames go: the face's sliders and preset weights, and the news that its clock moved. */
+export interface TimelineTarget {
+  /** Sets sliders and preset weights (see `ExpressionState.setFrame`); returns whether they changed. */
+  applyFrame(ids: readonly string[], values: ArrayLike<number>, presets: readonly string[], weights: ArrayLike<number>): boolean;
+  clockMoved(): void;
+}
 
 /** Options of the timeline player. */
 export interface TimelinePlayerOptions {
@@ -46,7 +53,7 @@ export class TimelinePlayer implements FaceTimeline {
   private lastFrame = Number.NaN;
 
   constructor(
-    private readonly face: FaceHandle,
+    private readonly face: TimelineTarget,
     frames: FrameHooks,
     options: TimelinePlayerOptions = {},
   ) {
@@ -135,7 +142,7 @@ export class TimelinePlayer implements FaceTimeline {
       this.playing = false;
     } else this.time = localTime(this.timelineNow, t);
     const changed = this.apply();
-    this.face.timelineChanged();
+    this.face.clockMoved();
     return changed;
   }
 
@@ -146,6 +153,6 @@ export class TimelinePlayer implements FaceTimeline {
     sampleTimeline(this.timelineNow, this.time, sample);
     for (let i = 0; i < this.unitIndex.length; i++) this.unitValues[i] = sample.values[this.unitIndex[i]];
     for (let i = 0; i < this.presetIndex.length; i++) this.presetValues[i] = sample.values[this.presetIndex[i]];
-    return this.face.applyTimelineFrame(this.unitIds, this.unitValues, this.presetNames, this.presetValues);
+    return this.face.applyFrame(this.unitIds, this.unitValues, this.presetNames, this.presetValues);
   }
 }

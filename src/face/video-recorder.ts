@@ -93,14 +93,13 @@ export class VideoRecorder {
    */
   private async start(timeline: boolean): Promise<void> {
     const { handle, simulation } = this.parts;
-    const expression = handle.carriedState().expression;
+    const entries: Record<string, number> = handle.getActionUnits();
+    for (const { name, weight } of handle.listPresets()) if (weight !== 0) entries[`preset:${name}`] = weight;
     const overlay = handle.getOverlay();
     handle.reset();
     handle.clearOverlay();
     await simulation.settle(REST_TIMEOUT_MS);
     simulation.setClock('stepped');
-    const entries: Record<string, number> = { ...expression.actionUnits };
-    for (const [name, weight] of Object.entries(expression.presets)) if (weight !== 0) entries[`preset:${name}`] = weight;
     handle.setExpression(entries);
     const ids = Object.keys(overlay);
     if (ids.length > 0) handle.setOverlay(ids, Object.values(overlay));

@@ -10,7 +10,7 @@ import { PresetsPanel } from './presets-panel';
 import { RenderingPanel } from './rendering-panel';
 import { TimelinePanel } from './timeline-panel';
 import { VideoPanel } from './video-panel';
-import type { Resolution } from '../embed/face-options';
+import type { Resolution } from '../face/face-options';
 
 export interface PanelsOptions {
   /** The element the column is placed over, at its top right corner (it needs a position other than static). */

@@ -1,7 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { FaceChange, FaceHandle } from '../face/face-handle';
-import { RESOLUTIONS, type Resolution } from '../embed/face-options';
+import { RESOLUTIONS, type Resolution } from '../face/face-options';
 import { downloadBlob, fileTimestamp } from './download';
 
 /** What the Rendering folder needs from the page. */

@@ -1,4 +1,6 @@
 import type { Rig } from '../core/rig/rig-types';
+import type { ViewBackground } from '../render/head-view';
+import type { SolverMode } from '../sim/shared/protocol';
 import {
   APPEARANCE_DEFAULTS,
   APPEARANCE_RANGES,
@@ -8,7 +10,7 @@ import {
   type AppearanceOptions,
   type LightOptions,
 } from '../render/view-options';
-import { readExpression, type ExpressionEntries } from '../face/expression-hash';
+import { readExpression, type ExpressionEntries } from './expression-hash';
 
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 /** The head's mesh resolution: low (4,284 skin vertices), medium (17,091) or high (68,277). */
@@ -169,4 +171,19 @@ export function checkFaceOptions(options: unknown, what = 'createFace'): Require
     if (value !== undefined) out[key] = checkFaceOption(key as keyof FaceOptions, value, what);
   }
   return out as unknown as Required<FaceOptions>;
+}
+
+/** `auto` is `shared` on cross-origin isolated pages and `transfer` elsewhere; `shared` needs isolation. */
+export function solverMode(choice: SolverChoice): SolverMode {
+  if (choice === 'auto') return crossOriginIsolated ? 'shared' : 'transfer';
+  if (choice === 'shared' && !crossOriginIsolated) {
+    console.warn("createFace: solver 'shared' needs a cross-origin isolated page (SharedArrayBuffer); using 'transfer'");
+    return 'transfer';
+  }
+  return choice;
+}
+
+/** The view's form of a checked `background`: a colour number or `transparent`. */
+export function viewBackground(background: string): ViewBackground {
+  return background === 'transparent' ? 'transparent' : Number.parseInt(background.slice(1), 16);
 }

@@ -1,0 +1,124 @@
+import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
+import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
+import type { FaceParts } from './face-parts';
+
+/** The face's expression: Action Unit sliders per side, preset weights, and the page's overlay on top of them. */
+export class ExpressionController {
+  constructor(private readonly parts: FaceParts) {}
+
+  /**
+   * Sets an Action Unit's intensity, 0..1 (clamped): `AU12` drives both sides, `AU12L` and `AU12R` one (the subject's
+   * left is +x). An unknown id or a non-finite value throws an error naming it and changes nothing.
+   */
+  setActionUnit(id: string, value: number): void {
+    this.parts.expressed().setActionUnit(id, value);
+    this.parts.emit('expression');
+  }
+
+  /** The Action Unit sliders, per side: `{ AU1L: 0, AU1R: 0, ..., AU17: 0, ... }`. */
+  getActionUnits(): Record<string, number> {
+    return this.parts.expressed().getActionUnits();
+  }
+
+  /**
+   * Replaces the whole expression: the Action Units and preset weights given are set, every other one goes to 0. As
+   * text in the URL-hash form (`"AU12=0.8&AU6L=0.5&preset:happiness=0.3"`) or as an object of the same entries
+   * (`{ AU12: 0.8, 'preset:happiness': 0.3 }`). An unknown id or preset, or a value that is not a finite number,
+   * throws naming it and changes nothing.
+   */
+  setExpression(expression: string | ExpressionEntries): void {
+    this.parts.expressed().set(readExpression(expression, 'setExpression'), 'setExpression');
+    this.parts.emit('expression');
+  }
+
+  /**
+   * What each Action Unit side adds up to with the presets and the overlay (the eye simulation's lids), clamped to
+   * 0..1, by side id like `getActionUnits`.
+   */
+  getEffectiveActionUnits(): Record<string, number> {
+    return this.parts.expressed().effective();
+  }
+
+  /** Every Action Unit: id, FACS number, name and sides (`L`, `R` or `M`). */
+  listActionUnits(): ActionUnitListing[] {
+    return this.parts.expressed().listActionUnits();
+  }
+
+  /** Sets a preset's weight, 0..1 (clamped); presets and Action Units add up (and clamp) per side. */
+  applyPreset(name: string, weight = 1): void {
+    this.parts.expressed().applyPreset(name, weight);
+    this.parts.emit('expression');
+  }
+
+  /** The rig's presets with their current weights. */
+  listPresets(): PresetListing[] {
+    return this.parts.expressed().listPresets();
+  }
+
+  /** Zeroes every Action Unit and preset: the neutral face. */
+  reset(): void {
+    this.parts.expressed().reset();
+    this.parts.emit('expression');
+  }
+
+  /**
+   * Sets the page's own contribution to some Action Unit sides (`ids[i]` to `values[i]`, each clamped to 0..1): it
+   * adds to the sliders and presets (clamped per side) without moving them, and tells no listener, because it may
+   * change every frame. The eye simulation drives the lids with it. Bad input throws and changes nothing.
+   */
+  setOverlay(ids: readonly string[], values: ArrayLike<number>): void {
+    const expression = this.parts.expressed();
+    if (ids.length !== values.length) throw new Error(`setOverlay: ${ids.length} ids but ${values.length} values`);
+    for (let i = 0; i < ids.length; i++) {
+      if (!isActionUnitId(ids[i])) throw new Error(`setOverlay: unknown Action Unit id ${JSON.stringify(ids[i])}`);
+      if (typeof values[i] !== 'number' || !Number.isFinite(values[i]))
+        throw new Error(`setOverlay: ${ids[i]} needs a finite number, got ${String(values[i])}`);
+    }
+    expression.setOverlay(ids, values);
+  }
+
+  /** Removes the page's whole contribution (see `setOverlay`). */
+  clearOverlay(): void {
+    this.parts.expressed().clearOverlay();
+  }
+
+  /** The overlay by side id, like `getActionUnits`. */
+  getOverlay(): Record<string, number> {
+    return this.parts.expressed().getOverlay();
+  }
+
+  /** The sliders and preset weights as one expression (what a new head or a recording takes over). */
+  current(): HashExpression {
+    return {
+      actionUnits: this.getActionUnits(),
+      presets: Object.fromEntries(this.listPresets().map((p) => [p.name, p.weight])),
+    };
+  }
+
+  /**
+   * Sets the sliders and preset weights of a timeline frame (see `ExpressionState.setFrame`) and tells listeners if
+   * they changed; returns whether they did. Does nothing before the face is ready.
+   */
+  applyFrame(ids: readonly string[], values: ArrayLike<number>, presets: readonly string[], weights: ArrayLike<number>): boolean {
+    const expression = this.parts.expression;
+    if (this.parts.disposed || !expression) return false;
+    const changed = expression.setFrame(ids, values, presets, weights);
+    if (changed) this.parts.emit('expression');
+    return changed;
+  }
+}
+
+/** The handle's methods that ExpressionController answers. */
+export const EXPRESSION_METHODS = [
+  'setActionUnit',
+  'getActionUnits',
+  'setExpression',
+  'getEffectiveActionUnits',
+  'listActionUnits',
+  'applyPreset',
+  'listPresets',
+  'reset',
+  'setOverlay',
+  'clearOverlay',
+  'getOverlay',
+] as const;

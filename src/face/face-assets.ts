@@ -1,0 +1,42 @@
+import { parseRig, parseRigText } from '../core/rig/rig-schema';
+import type { Rig } from '../core/rig/rig-types';
+import { packageAssetBase } from './package-assets';
+
+/** The autosave key's part for a rig: its URL's path (the same rig at any host), or `object` for a rig given as one. */
+export function rigKey(rig: string | URL | Rig | null, base: string): string {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'object';
+  return new URL(rig === null ? 'rigs/default.json' : String(rig), rig === null ? base : document.baseURI).pathname;
+}
+
+/** A rig's name for its exported file: its file's name without `.json` (`default`), or `rig`. */
+export function rigName(rig: string | URL | Rig | null): string {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return 'rig';
+  const file = rig === null ? 'default.json' : (new URL(String(rig), document.baseURI).pathname.split('/').pop() ?? '');
+  return file.replace(/(\.rig)?\.json$/i, '') || 'rig';
+}
+
+/** A URL given by the page, made absolute against the page. */
+export function pageUrl(url: string | URL): string {
+  return new URL(String(url), document.baseURI).href;
+}
+
+/** The folder models and rigs are fetched from, absolute and ending in a slash. */
+export function assetBase(given: string | URL | null): string {
+  const base = given === null ? packageAssetBase() : pageUrl(given);
+  return base.endsWith('/') ? base : `${base}/`;
+}
+
+/** The rig given as an object (checked), at a URL, or the package's default rig. */
+export async function loadRig(rig: string | URL | Rig | null, base: string): Promise<Rig> {
+  if (rig !== null && typeof rig === 'object' && !(rig instanceof URL)) return parseRig(rig, 'createFace: rig');
+  const url = rig === null ? new URL('rigs/default.json', base).href : pageUrl(rig);
+  let text: string;
+  try {
+    const response = await fetch(url);
+    if (!response.ok) throw new Error(`${response.status} ${response.statusText}`);
+    text = await response.text();
+  } catch (error) {
+    throw new Error(`the muscle rig could not be loaded from ${url}: ${(error as Error).message}`);
+  }
+  return parseRigText(text, url);
+}
