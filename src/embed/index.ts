@@ -10,7 +10,7 @@ export type { ActionUnitListing, PresetListing } from '../core/expression/facs';
 export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 export type { SkinParameters } from '../core/solver/solver';
 export type { Rig } from '../core/rig/rig-types';
-export type { RenderTiming } from '../render/head-view';
+export type { RenderTiming } from '../render/render-timing';
 export type { HairPartSnapshot, HairSnapshot } from '../render/hair-view';
 export type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
 export { VIDEO_DEFAULTS, type VideoFormat, type VideoOptions } from '../face/video-options';

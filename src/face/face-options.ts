@@ -1,5 +1,5 @@
 import type { Rig } from '../core/rig/rig-types';
-import type { ViewBackground } from '../render/head-view';
+import type { ViewBackground } from '../render/view-options';
 import type { SolverMode } from '../sim/shared/protocol';
 import {
   APPEARANCE_DEFAULTS,

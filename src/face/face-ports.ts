@@ -6,7 +6,7 @@
 import type { EyeSimulationOptions } from '../core/expression/eye-simulation';
 import type { SkinParameters } from '../core/solver/solver';
 import type { Timeline } from '../core/timeline/timeline';
-import type { RenderTiming } from '../render/head-view';
+import type { RenderTiming } from '../render/render-timing';
 import type { MaterialDescription } from '../render/materials';
 import type { HairSnapshot } from '../render/hair-view';
 import type { HeadWriteOptions, JawPose, MorphClip, MorphShape } from '../render/gltf-export';

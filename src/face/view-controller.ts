@@ -1,5 +1,5 @@
 import type { HairSnapshot } from '../render/hair-view';
-import type { RenderTiming } from '../render/head-view';
+import type { RenderTiming } from '../render/render-timing';
 import type { MaterialDescription } from '../render/materials';
 import type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
 import type { Vec3 } from '../core/rig/rig-types';

@@ -2,62 +2,38 @@ import {
   ACESFilmicToneMapping,
   type Box3,
   Color,
-  DirectionalLight,
-  HemisphereLight,
   Mesh,
   PMREMGenerator,
-  PerspectiveCamera,
+  type PerspectiveCamera,
   Scene,
   SRGBColorSpace,
-  Texture,
-  Vector3,
+  type Texture,
   WebGLRenderer,
   type Material,
-  type Object3D,
 } from 'three';
-import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import type { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
-import { boxCentre, type HeadModel } from './head-model';
+import type { HeadModel } from './head-model';
+import { timeRenders, type RenderTiming } from './render-timing';
+import { ViewCamera } from './view-camera';
+import { ViewLights } from './view-lights';
 import type { HairSnapshot } from './hair-view';
 import { describeMaterial, type MaterialDescription } from './materials';
 import { motionDraw, type MotionDrawState } from './motion-draw';
 import {
   APPEARANCE_DEFAULTS,
   APPEARANCE_RANGES,
-  CAMERA_DEFAULTS,
-  CAMERA_RANGES,
-  LIGHT_DEFAULTS,
-  LIGHT_RANGES,
   RENDER_DEFAULTS,
   checkOptions,
   type AppearanceOptions,
   type CameraOptions,
   type LightOptions,
   type RenderOptions,
+  HEAD_VIEW_DEFAULTS,
+  type HeadViewOptions,
+  type ViewBackground,
 } from './view-options';
-
-/** A background colour (sRGB hex), or `transparent` to show the page behind the canvas. */
-export type ViewBackground = number | 'transparent';
-
-/** Options of the view. */
-export interface HeadViewOptions {
-  background: ViewBackground;
-  /** Vertical field of view in degrees. */
-  fov: number;
-  /** Cap on the device pixel ratio, to bound the cost of fill on dense screens. */
-  maxPixelRatio: number;
-  /**
-   * Share of the pixel ratio the view draws at while the picture changes and its draws are slow (see `slowDrawMs`):
-   * 0.5 draws a quarter of the pixels. Once nothing new has come for MOTION_END_MS (see motion-draw.ts) the picture
-   * is drawn again at full resolution. 1 turns this off.
-   */
-  motionResolution: number;
-  /**
-   * A draw at full resolution that holds the next animation frame back longer than this (ms) is slow: software WebGL,
-   * or a GPU that cannot fill the canvas at 20 frames a second.
-   */
-  slowDrawMs: number;
-}
+import { disposeTree } from './dispose-tree';
 
 /**
  * Work done at each animation frame while the view is in view; `now` is the frame's timestamp in ms. It returns true
@@ -66,24 +42,6 @@ export interface HeadViewOptions {
  * hook bounds how long it holds.
  */
 export type FrameHook = (now: number) => boolean | 'hold' | undefined;
-
-/** What `measureRender` reports: main-thread time of `renderer.render` and what the last frame drew. */
-export interface RenderTiming {
-  frames: number;
-  /** Main-thread milliseconds spent in `renderer.render` per frame: mean and median. */
-  meanMs: number;
-  medianMs: number;
-  /** Main-thread milliseconds spent posing the brows and lashes on the skin per frame (as at each new skin frame): mean and median. */
-  hairMeanMs: number;
-  hairMedianMs: number;
-  /** Wall milliseconds per frame over the whole run, waiting at the end for the GPU to finish (pixel cost included). */
-  finishedMs: number;
-  /** From `renderer.info` after the last frame. */
-  calls: number;
-  triangles: number;
-  programs: number;
-  textures: number;
-}
 
 /** A fixed-size rendering of the view for a recorder: the render loop holds until `dispose`. */
 export interface ViewCapture {
@@ -95,11 +53,6 @@ export interface ViewCapture {
   dispose(): void;
 }
 
-/** Camera updates a capture allows for the orbit controls' damping to come to rest before the first picture. */
-const MAX_DAMPING_UPDATES = 10_000;
-
-/** How far the key light sits from the head's centre, in metres (a directional light: only its direction counts). */
-const KEY_DISTANCE = 1.3;
 /**
  * How long, and at least how many frames, the view keeps drawing after it was told of a change: covers what lands a
  * frame or two later (the environment map, shader compiles, a panel's change applied in the next task), on a page
@@ -107,15 +60,6 @@ const KEY_DISTANCE = 1.3;
  */
 const DRAW_AFTER_CHANGE_MS = 250;
 const DRAW_AFTER_CHANGE_FRAMES = 3;
-const DEGREES = Math.PI / 180;
-
-const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({
-  background: 0x1d2024,
-  fov: 28,
-  maxPixelRatio: 2,
-  motionResolution: 0.5,
-  slowDrawMs: 50,
-});
 
 /** A three.js scene that shows a head: renderer, camera, orbit controls and the default lights. */
 export class HeadView {
@@ -123,15 +67,10 @@ export class HeadView {
   readonly scene = new Scene();
   readonly camera: PerspectiveCamera;
   readonly controls: OrbitControls;
-  readonly ambient: HemisphereLight;
-  readonly key: DirectionalLight;
+  /** The camera's framing and placing. */
+  private readonly view: ViewCamera;
+  private readonly lights: ViewLights;
   private head: HeadModel | undefined;
-  /** Where the key light aims and turns around: the head's centre once a head is shown. */
-  private readonly centre = new Vector3();
-  /** The framing camera's offset from the head's centre (CAMERA_DEFAULTS), and scratch for reading the camera. */
-  private readonly home = new Vector3(0, 0, 1);
-  private readonly scratch = new Vector3();
-  private readonly light: Required<LightOptions> = { ...LIGHT_DEFAULTS };
   private readonly render: Required<RenderOptions> = { ...RENDER_DEFAULTS };
   private readonly appearance: Required<AppearanceOptions> = { ...APPEARANCE_DEFAULTS };
   private frame = 0;
@@ -196,17 +135,11 @@ export class HeadView {
     this.setBackground(o.background);
     this.scene.environmentIntensity = 0.2;
 
-    this.ambient = new HemisphereLight(0xf4f1ec, 0x3a302c);
-    this.key = new DirectionalLight();
-    this.scene.add(this.ambient, this.key, this.key.target);
-    this.applyLight();
+    this.lights = new ViewLights(this.scene);
 
-    this.camera = new PerspectiveCamera(o.fov, 1, 0.01, 20);
-    this.camera.position.set(0, 0.7, 1);
-    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.controls.enableDamping = true;
-    this.controls.minDistance = 0.15;
-    this.controls.maxDistance = 2.5;
+    this.view = new ViewCamera(o.fov, this.renderer.domElement, this.invalidate);
+    this.camera = this.view.camera;
+    this.controls = this.view.controls;
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
@@ -259,14 +192,13 @@ export class HeadView {
 
   /** Changes some light options; throws, changing nothing, on an unknown option or a value of the wrong type or range. */
   setLight(partial: Partial<LightOptions>): void {
-    Object.assign(this.light, checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, LIGHT_RANGES));
-    this.applyLight();
+    this.lights.set(partial);
     this.invalidate();
   }
 
   /** A copy of the current light options. */
   lightOptions(): LightOptions {
-    return { ...this.light };
+    return this.lights.options();
   }
 
   /** Changes some render options (wireframe, eyes, teeth); throws, changing nothing, on bad input. */
@@ -337,13 +269,12 @@ export class HeadView {
   capture(width: number, height: number): ViewCapture {
     if (this.capturing) throw new Error('the view is already being captured');
     this.capturing = true;
-    for (let i = 0; i < MAX_DAMPING_UPDATES && this.controls.update(); i++);
+    this.view.stop();
     const renderer = this.renderer;
     this.setReduced(false);
     renderer.setPixelRatio(1);
     renderer.setSize(width, height, false);
-    this.camera.aspect = width / height;
-    this.camera.updateProjectionMatrix();
+    this.view.setAspect(width / height);
     let done = false;
     return {
       canvas: renderer.domElement,
@@ -411,47 +342,11 @@ export class HeadView {
     return [...seen].map(describeMaterial);
   }
 
-  /**
-   * Renders `frames` frames back to back, timing each `renderer.render` call with `performance.now()` (a benchmark:
-   * it blocks the page while it runs).
-   */
+  /** Renders `frames` frames back to back and times them (a benchmark: it blocks the page; see timeRenders). */
   measureRender(frames = 100): RenderTiming {
-    const times: number[] = [];
-    const gl = this.renderer.getContext();
-    const pixel = new Uint8Array(4);
-    // One frame first, so that shader compilation and texture upload are not counted.
     this.setReduced(false);
     this.renderFrame();
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    const hair = this.head?.hair;
-    const hairTimes: number[] = [];
-    const start = performance.now();
-    for (let i = 0; i < frames; i++) {
-      // As at every new skin frame: the hair is posed on the skin, and its attributes go to the GPU in the render.
-      const h0 = performance.now();
-      hair?.skinChanged();
-      hairTimes.push(performance.now() - h0);
-      const t0 = performance.now();
-      this.renderer.render(this.scene, this.camera);
-      times.push(performance.now() - t0);
-    }
-    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    const finishedMs = (performance.now() - start) / frames;
-    times.sort((a, b) => a - b);
-    hairTimes.sort((a, b) => a - b);
-    const info = this.renderer.info;
-    return {
-      frames,
-      meanMs: times.reduce((s, t) => s + t, 0) / frames,
-      medianMs: times[Math.floor(frames / 2)],
-      hairMeanMs: hairTimes.reduce((s, t) => s + t, 0) / frames,
-      hairMedianMs: hairTimes[Math.floor(frames / 2)],
-      finishedMs,
-      calls: info.render.calls,
-      triangles: info.render.triangles,
-      programs: info.programs?.length ?? 0,
-      textures: info.memory.textures,
-    };
+    return timeRenders(this.renderer, this.scene, this.camera, this.head?.hair, frames);
   }
 
   /**
@@ -468,7 +363,7 @@ export class HeadView {
     window.removeEventListener('keydown', this.invalidate);
     this.resizeObserver.disconnect();
     this.viewObserver.disconnect();
-    this.controls.dispose();
+    this.view.dispose();
     disposeTree(this.scene);
     this.scene.environment?.dispose();
     this.renderer.dispose();
@@ -512,17 +407,9 @@ export class HeadView {
     this.frameBounds(head.bounds);
   }
 
-  /** Points the camera at the middle of `bounds` from the front (+z), far enough to see it whole. */
+  /** Points the camera at the middle of `bounds` from the front (+z), far enough to see it whole; the key light follows. */
   frameBounds(bounds: Box3): void {
-    const centre = boxCentre(bounds);
-    const size = bounds.getSize(new Vector3());
-    const fit = (0.5 * Math.max(size.y, size.x / this.camera.aspect)) / Math.tan((this.camera.fov * Math.PI) / 360);
-    const distance = 1.15 * fit + size.z / 2;
-    this.controls.target.copy(centre);
-    this.home.set(0, 0.03 * size.y, distance);
-    this.centre.copy(centre);
-    this.applyLight();
-    this.placeCamera(CAMERA_DEFAULTS);
+    this.lights.aimAt(this.view.frame(bounds));
   }
 
   /**
@@ -530,61 +417,19 @@ export class HeadView {
    * (see CameraOptions); throws, changing nothing, on an unknown option or a value of the wrong type or range.
    */
   setCamera(partial: Partial<CameraOptions>): void {
-    const checked = checkOptions<CameraOptions>('setCamera', partial, CAMERA_DEFAULTS, CAMERA_RANGES);
-    this.placeCamera({ ...this.cameraOptions(), ...checked });
+    this.view.set(partial);
   }
 
   /** Where the camera is now, as CameraOptions (after the user's orbit drags too). */
   cameraOptions(): CameraOptions {
-    const offset = this.scratch.subVectors(this.camera.position, this.controls.target);
-    const home = this.home;
-    // Rounded to a millionth (floating-point noise), and -0 read as 0.
-    const round = (x: number): number => Math.round(x * 1e6) / 1e6 + 0;
-    const pitch = Math.asin(offset.y / offset.length()) - Math.atan2(home.y, home.z);
-    return {
-      yaw: round(Math.atan2(offset.x, offset.z) / DEGREES),
-      pitch: round(pitch / DEGREES),
-      distance: round(offset.length() / home.length()),
-    };
+    return this.view.options();
   }
 
   /** Where a point of the shown head's skin (its model space) is on the page, in client pixels; null without a head. */
   locate(point: readonly [number, number, number]): { x: number; y: number } | null {
     if (!this.head) return null;
     this.head.skin.updateWorldMatrix(true, false);
-    this.camera.updateMatrixWorld();
-    const p = this.scratch.set(point[0], point[1], point[2]).applyMatrix4(this.head.skin.matrixWorld).project(this.camera);
-    const r = this.renderer.domElement.getBoundingClientRect();
-    return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
-  }
-
-  private placeCamera(o: CameraOptions): void {
-    const home = this.home;
-    const pitch = Math.atan2(home.y, home.z) + o.pitch * DEGREES;
-    const r = o.distance * home.length();
-    const yaw = o.yaw * DEGREES;
-    this.camera.position
-      .set(Math.sin(yaw) * Math.cos(pitch), Math.sin(pitch), Math.cos(yaw) * Math.cos(pitch))
-      .multiplyScalar(r)
-      .add(this.controls.target);
-    this.controls.update();
-    this.invalidate();
-  }
-
-  private applyLight(): void {
-    const l = this.light;
-    this.ambient.intensity = l.ambientIntensity;
-    this.key.intensity = l.keyIntensity;
-    this.key.color.set(l.keyColor);
-    const azimuth = l.keyAzimuth * DEGREES;
-    const elevation = l.keyElevation * DEGREES;
-    const horizontal = KEY_DISTANCE * Math.cos(elevation);
-    this.key.position.set(
-      this.centre.x + horizontal * Math.sin(azimuth),
-      this.centre.y + KEY_DISTANCE * Math.sin(elevation),
-      this.centre.z + horizontal * Math.cos(azimuth),
-    );
-    this.key.target.position.copy(this.centre);
+    return this.view.project(point, this.head.skin.matrixWorld, this.renderer.domElement);
   }
 
   /** Applies the render options to the shown head (again whenever a head is shown). */
@@ -615,26 +460,8 @@ export class HeadView {
     const w = Math.max(1, this.container.clientWidth);
     const h = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(w, h, false);
-    this.camera.aspect = w / h;
-    this.camera.updateProjectionMatrix();
+    this.view.setAspect(w / h);
     this.invalidate();
-  }
-}
-
-/** Frees the geometries, materials and textures of every object under `root`, each once. */
-function disposeTree(root: Object3D): void {
-  const materials = new Set<Material>();
-  root.traverse((o) => {
-    // Meshes, lines and points: whatever draws a geometry.
-    if (!('geometry' in o)) return;
-    const withGeometry = o as Object3D & { geometry?: { dispose(): void }; material?: Material | Material[] };
-    withGeometry.geometry?.dispose();
-    const m = withGeometry.material;
-    if (m) for (const material of Array.isArray(m) ? m : [m]) materials.add(material);
-  });
-  for (const material of materials) {
-    for (const value of Object.values(material)) if (value instanceof Texture) value.dispose();
-    material.dispose();
   }
 }
 

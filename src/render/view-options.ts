@@ -122,3 +122,35 @@ export function checkOptions<T extends object>(
   }
   return partial as Partial<T>;
 }
+
+/** A background colour (sRGB hex), or `transparent` to show the page behind the canvas. */
+export type ViewBackground = number | 'transparent';
+
+/** Options of the view. */
+export interface HeadViewOptions {
+  background: ViewBackground;
+  /** Vertical field of view in degrees. */
+  fov: number;
+  /** Cap on the device pixel ratio, to bound the cost of fill on dense screens. */
+  maxPixelRatio: number;
+  /**
+   * Share of the pixel ratio the view draws at while the picture changes and its draws are slow (see `slowDrawMs`):
+   * 0.5 draws a quarter of the pixels. Once nothing new has come for MOTION_END_MS (see motion-draw.ts) the picture
+   * is drawn again at full resolution. 1 turns this off.
+   */
+  motionResolution: number;
+  /**
+   * A draw at full resolution that holds the next animation frame back longer than this (ms) is slow: software WebGL,
+   * or a GPU that cannot fill the canvas at 20 frames a second.
+   */
+  slowDrawMs: number;
+}
+
+/** The view's defaults. */
+export const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.freeze({
+  background: 0x1d2024,
+  fov: 28,
+  maxPixelRatio: 2,
+  motionResolution: 0.5,
+  slowDrawMs: 50,
+});
