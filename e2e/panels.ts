@@ -1,5 +1,5 @@
 import type { Locator, Page } from '@playwright/test';
-import { BACKGROUND, measurePNG } from './fixtures';
+import { BACKGROUND, expect, measurePNG } from './fixtures';
 
 /** A panel control by its `data-control` name (`AU12L`, `AU12-link`, `preset-happiness`, `light-keyAzimuth`, ...). */
 export function control(page: Page, name: string): Locator {
@@ -140,24 +140,40 @@ export function pictureDifference(a: FaceCrop, b: FaceCrop): number {
   return s / a.grey.length;
 }
 
+/** Animation frames a still picture must outlast: the view draws a change for up to 3 frames after it. */
+const STILL_FRAMES = 4;
+/** Screenshot pairs tried before giving up. */
+const STILL_TRIES = 20;
+
 /**
- * A screenshot of the page once two in a row, 150 ms apart, are the same to the byte: the face at rest is drawn only
- * when something changed, and a change is first drawn at a lower resolution where draws are slow (software WebGL),
- * then again at full resolution once nothing new has come for a while. A fixed wait before one screenshot caught the
- * lower one now and then.
+ * A screenshot of the app's face once its picture is final: the face at rest is drawn only when something changed,
+ * and a change is first drawn at a lower resolution where draws are slow (software WebGL), then again at full
+ * resolution once nothing new has come for a while. So it waits for that state, the skin settled and the canvas back
+ * at full resolution, then takes screenshots until two in a row, a few animation frames apart, are the same to the
+ * byte. A fixed wait before one screenshot caught the lower one now and then.
  */
 export async function stillScreenshot(
   page: Page,
   options: { clip?: { x: number; y: number; width: number; height: number } } = {},
   timeoutMs = 30_000,
 ): Promise<Buffer> {
-  const end = Date.now() + timeoutMs;
+  await page.evaluate((t) => window.face.settle(t), timeoutMs);
+  const atFull = (): Promise<boolean> =>
+    page.evaluate(() => {
+      const canvas = document.querySelector('canvas') as HTMLCanvasElement;
+      return canvas.width === Math.floor(canvas.clientWidth * Math.min(devicePixelRatio, 2));
+    });
+  await expect.poll(atFull, { timeout: timeoutMs }).toBe(true);
+  const frames = (n: number): Promise<void> =>
+    page.evaluate(async (n) => {
+      for (let i = 0; i < n; i++) await new Promise((resolve) => requestAnimationFrame(resolve));
+    }, n);
   let last = await page.screenshot(options);
-  for (;;) {
-    await page.waitForTimeout(150);
+  for (let tries = 0; tries < STILL_TRIES; tries++) {
+    await frames(STILL_FRAMES);
     const next = await page.screenshot(options);
     if (next.equals(last)) return next;
-    if (Date.now() > end) throw new Error(`stillScreenshot: the picture still changed after ${timeoutMs} ms`);
     last = next;
   }
+  throw new Error(`stillScreenshot: the picture still changed after ${STILL_TRIES} pairs of screenshots`);
 }

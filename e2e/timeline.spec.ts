@@ -57,8 +57,10 @@ test('the handle plays, pauses and seeks a timeline; the face and the sliders fo
   });
   expect(moved).toBeGreaterThan(0.002);
 
-  // Paused, it holds: neither the clock nor the values move.
-  await page.waitForTimeout(700);
+  // Paused, it holds: over animation frames (a playing clock moves on at each), neither the clock nor the values move.
+  await page.evaluate(async () => {
+    for (let i = 0; i < 10; i++) await new Promise((resolve) => requestAnimationFrame(resolve));
+  });
   const held = await page.evaluate(() => ({ state: window.face.timelineState(), units: window.face.getActionUnits() }));
   expect(held).toEqual(paused);
 

@@ -67,7 +67,7 @@ describe('constraint lists', () => {
   }
   const colourOf = (e: number) => {
     let c = 0;
-    while (t.colourStart[c + 1] <= e) c++;
+    while (c < colours && t.colourStart[c + 1] <= e) c++;
     return c;
   };
 

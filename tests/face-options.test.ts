@@ -12,6 +12,7 @@ describe('createFace options', () => {
       expression: 'AU12=0.8',
       light: { keyAzimuth: 90 },
       motionResolution: 1,
+      slowDrawMs: 0,
       resolutionUnused: undefined,
     });
     expect(o).toMatchObject({
@@ -22,6 +23,7 @@ describe('createFace options', () => {
       expression: 'AU12=0.8',
       light: { keyAzimuth: 90 },
       motionResolution: 1,
+      slowDrawMs: 0,
       eyeSimulation: false,
     });
   });
@@ -44,7 +46,7 @@ describe('createFace options', () => {
       [
         { resolutoin: 'low' },
         'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, ' +
-          'expression, eyeSimulation, light, appearance, background, motionResolution, assetBase, onResolution, autosave)',
+          'expression, eyeSimulation, light, appearance, background, motionResolution, slowDrawMs, assetBase, onResolution, autosave)',
       ],
       [{ autosave: 1 }, 'createFace: autosave must be true, false or a key, got 1'],
       [{ appearance: { browDensity: 2 } }, 'createFace: appearance: browDensity must be within 0..1, got 2'],
@@ -53,6 +55,8 @@ describe('createFace options', () => {
       [{ motionResolution: 0.1 }, 'createFace: motionResolution must be a number within 0.25..1, got 0.1'],
       [{ motionResolution: Number.NaN }, 'createFace: motionResolution must be a number within 0.25..1, got NaN'],
       [{ motionResolution: '0.5' }, 'createFace: motionResolution must be a number within 0.25..1, got "0.5"'],
+      [{ slowDrawMs: -1 }, 'createFace: slowDrawMs must be a finite number of ms, at least 0, got -1'],
+      [{ slowDrawMs: Number.POSITIVE_INFINITY }, 'createFace: slowDrawMs must be a finite number of ms, at least 0, got Infinity'],
       [{ autosave: ' ' }, 'createFace: autosave must be true, false or a key, got " "'],
     ];
     for (const [options, message] of cases) expect(() => checkFaceOptions(options), JSON.stringify(options)).toThrow(message);

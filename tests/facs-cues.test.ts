@@ -19,7 +19,7 @@ import {
   type CueMarks,
 } from './fixtures/facs-cues';
 import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
-import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
+import { loadHeadSimulation, MAX_SETTLE_FRAMES, resetToRest } from './fixtures/head-simulation';
 
 // The FACS appearance changes of the Action Units (FACS manual, Ekman, Friesen & Hager 2002) beyond each unit's main
 // move, on the medium head at full intensity, settled as the worker settles it (README, "How far each Action Unit
@@ -31,11 +31,10 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
   let lm: FaceLandmarks;
   let map: FoldMap;
   let cues: CueMarks;
-  /** Settles Action Units together at full intensity (`AU1+AU2+AU4`) and returns the skin's positions. */
+  /** From rest (reset and settled), settles Action Units together at full intensity (`AU1+AU2+AU4`) and returns the skin's positions. */
   const settle = (expression: string): Float32Array => {
-    sim.expression.reset();
+    resetToRest(sim);
     for (const au of expression.split('+')) sim.expression.setActionUnit(au, 1);
-    sim.host.solver.buffers.positions.set(rest);
     sim.apply();
     let frames = 0;
     while (frames < MAX_SETTLE_FRAMES && sim.host.step()) frames++;

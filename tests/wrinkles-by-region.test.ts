@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { crowsFeetLines, foldDepth, foldMap, type FoldMap, type FoldRegions } from './fixtures/fold-regions';
-import { loadHeadSimulation, MAX_SETTLE_FRAMES } from './fixtures/head-simulation';
+import { loadHeadSimulation, MAX_SETTLE_FRAMES, resetToRest } from './fixtures/head-simulation';
 
 // Where FACS describes wrinkles, and the Action Units that make them there (issue: wrinkles where FACS describes them
 // and nowhere else). Each region must fold with its unit and stay smooth at neutral and with units that do not act on
@@ -29,9 +29,8 @@ describe('wrinkles by region, medium head, each Action Unit at full intensity', 
     const { rest, restNormals } = sim.host.topology;
     const map: FoldMap = foldMap(rest, restNormals, sim.triangles);
     for (const e of EXPRESSIONS) {
-      sim.expression.reset();
+      resetToRest(sim);
       if (e !== 'neutral') for (const au of e.split('+')) sim.expression.setActionUnit(au, 1);
-      sim.host.solver.buffers.positions.set(rest);
       sim.apply();
       let frames = 0;
       while (frames < MAX_SETTLE_FRAMES && sim.host.step()) frames++;

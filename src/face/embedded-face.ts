@@ -93,7 +93,11 @@ export class EmbeddedFace {
     // styles allows it. The canvas fills the element; the panels are placed over its corner.
     Object.assign(this.element.style, { position: 'relative', width: '100%', height: '100%', overflow: 'hidden' });
     container.append(this.element);
-    this.view = new HeadView(this.element, { background: viewBackground(options.background), motionResolution: options.motionResolution });
+    this.view = new HeadView(this.element, {
+      background: viewBackground(options.background),
+      motionResolution: options.motionResolution,
+      slowDrawMs: options.slowDrawMs,
+    });
     Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
     this.parts.view = this.view;
     this.parts.heads = this;

@@ -57,6 +57,12 @@ export interface FaceOptions {
    */
   motionResolution?: number;
   /**
+   * How long (ms) a full-resolution draw may hold the next animation frame back before draws count as slow and a
+   * moving face is drawn at `motionResolution`: 50 by default (below 20 frames a second); 0 counts every draw as
+   * slow, a large number none.
+   */
+  slowDrawMs?: number;
+  /**
    * Where models (`models/head-<resolution>.glb`) and rigs (`rigs/default.json`) are fetched from, relative to the
    * page; by default the package's own files, found from the module's own URL.
    */
@@ -83,6 +89,7 @@ export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
   appearance: {},
   background: '#1d2024',
   motionResolution: 0.5,
+  slowDrawMs: 50,
   assetBase: null,
   onResolution: null,
   autosave: false,
@@ -127,6 +134,9 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
       if (typeof value !== 'number' || !(value >= MOTION_RESOLUTION_RANGE[0] && value <= MOTION_RESOLUTION_RANGE[1])) {
         throw bad(`a number within ${MOTION_RESOLUTION_RANGE[0]}..${MOTION_RESOLUTION_RANGE[1]}`);
       }
+      break;
+    case 'slowDrawMs':
+      if (typeof value !== 'number' || !Number.isFinite(value) || value < 0) throw bad('a finite number of ms, at least 0');
       break;
     case 'background':
       if (typeof value !== 'string' || !(COLOUR.test(value) || value === 'transparent')) throw bad('a colour "#rrggbb" or "transparent"');

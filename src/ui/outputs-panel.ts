@@ -12,9 +12,9 @@ export interface OutputsPanelOptions {
   refreshMs?: number;
 }
 
-/** Frames, or else ms, that one fps reading spans at least. */
-const MIN_FRAMES = 4;
-const MAX_WINDOW_MS = 3000;
+/** Frames, or else ms, that one fps reading spans at least (a reading ends at the first refresh that has either). */
+export const FPS_MIN_FRAMES = 4;
+export const FPS_MAX_WINDOW_MS = 3000;
 
 const OUTPUTS_PANEL_DEFAULTS: Required<OutputsPanelOptions> = { refreshMs: 500 };
 
@@ -106,7 +106,7 @@ export class OutputsPanel {
     const elapsed = now - this.since;
     // A slow page (software WebGL draws a couple of frames a second) would read 0 or jump between 0 and 2 over one
     // refresh, so the count runs on until it has a few frames or a few seconds.
-    if (this.frames >= MIN_FRAMES || elapsed >= MAX_WINDOW_MS) {
+    if (this.frames >= FPS_MIN_FRAMES || elapsed >= FPS_MAX_WINDOW_MS) {
       this.outputs.fps = (1000 * this.frames) / elapsed;
       this.frames = 0;
       this.since = now;
