@@ -60,7 +60,10 @@ export interface FaceCrop {
  * measure the same pixels again.
  */
 export async function faceCrop(page: Page, rect?: FaceCrop['rect'], panelLeft = 700): Promise<FaceCrop> {
-  const png = await stillScreenshot(page);
+  // The still picture is judged where the face is: the panel column's live outputs change at every frame.
+  const viewport = page.viewportSize();
+  const still = viewport ? { x: 0, y: 0, width: Math.min(panelLeft, viewport.width), height: viewport.height - 60 } : undefined;
+  const png = await stillScreenshot(page, { still });
   return measurePNG(
     page,
     png,
@@ -140,6 +143,9 @@ export function pictureDifference(a: FaceCrop, b: FaceCrop): number {
   return s / a.grey.length;
 }
 
+/** A part of the page, in CSS pixels. */
+type Clip = { x: number; y: number; width: number; height: number };
+
 /** Animation frames a still picture must outlast: the view draws a change for up to 3 frames after it. */
 const STILL_FRAMES = 4;
 /** Screenshot pairs tried before giving up. */
@@ -150,13 +156,11 @@ const STILL_TRIES = 20;
  * and a change is first drawn at a lower resolution where draws are slow (software WebGL), then again at full
  * resolution once nothing new has come for a while. So it waits for that state, the skin settled and the canvas back
  * at full resolution, then takes screenshots until two in a row, a few animation frames apart, are the same to the
- * byte. A fixed wait before one screenshot caught the lower one now and then.
+ * byte. A fixed wait before one screenshot caught the lower one now and then. `clip` is the part returned; `still`
+ * the part that must stand still (by default `clip`, or the whole page), so that live text elsewhere (the panels'
+ * outputs) does not count.
  */
-export async function stillScreenshot(
-  page: Page,
-  options: { clip?: { x: number; y: number; width: number; height: number } } = {},
-  timeoutMs = 30_000,
-): Promise<Buffer> {
+export async function stillScreenshot(page: Page, options: { clip?: Clip; still?: Clip } = {}, timeoutMs = 30_000): Promise<Buffer> {
   await page.evaluate((t) => window.face.settle(t), timeoutMs);
   const atFull = (): Promise<boolean> =>
     page.evaluate(() => {
@@ -168,11 +172,12 @@ export async function stillScreenshot(
     page.evaluate(async (n) => {
       for (let i = 0; i < n; i++) await new Promise((resolve) => requestAnimationFrame(resolve));
     }, n);
-  let last = await page.screenshot(options);
+  const judged = { clip: options.still ?? options.clip };
+  let last = await page.screenshot(judged);
   for (let tries = 0; tries < STILL_TRIES; tries++) {
     await frames(STILL_FRAMES);
-    const next = await page.screenshot(options);
-    if (next.equals(last)) return next;
+    const next = await page.screenshot(judged);
+    if (next.equals(last)) return options.still ? page.screenshot({ clip: options.clip }) : next;
     last = next;
   }
   throw new Error(`stillScreenshot: the picture still changed after ${STILL_TRIES} pairs of screenshots`);

@@ -37,6 +37,7 @@ import { LandmarkGuide } from './landmark-guide';
 import { checkFaceOption, checkFaceOptions, solverMode, viewBackground, type FaceOptions } from './face-options';
 import { assetBase, loadRig, pageUrl, rigKey, rigName } from './face-assets';
 import { jawHinge, jawTurner } from './jaw-turner';
+import { PanelSlot } from './panel-slot';
 import { takeBack } from './take-back';
 
 /**
@@ -56,10 +57,13 @@ export class EmbeddedFace {
   private readonly view: HeadView;
   /** How to take back each part built so far, run last first by `dispose`. */
   private readonly undo: (() => void)[] = [];
-  /** The panels (src/ui/Panels), imported when first shown. */
-  private panels: { dispose(): void } | undefined;
-  /** What the last `setPanels` asked for: a call that comes while the panels load has the last word. */
-  private panelsWanted = false;
+  /** The panels (src/ui/Panels), imported when first shown: the library's entry imports nothing from src/ui/. */
+  private readonly panels = new PanelSlot(async () => {
+    const { Panels } = await import('../ui/panels');
+    const o = this.options;
+    return () =>
+      new Panels(this.handle, { container: this.element, frames: this.view, resolution: o.resolution, onResolution: o.onResolution });
+  });
   private background: string;
   private disposed = false;
   /** How to take back the shown head and what runs it (solver, glyphs, editor, eyes), last first. */
@@ -139,28 +143,12 @@ export class EmbeddedFace {
   async setPanels(on: boolean): Promise<void> {
     checkFaceOption('panels', on, 'setPanels');
     this.alive();
-    this.panelsWanted = on;
-    if (!on) {
-      this.panels?.dispose();
-      this.panels = undefined;
-      return;
-    }
-    if (this.panels) return;
-    // Loaded on first use: the library's entry imports nothing from src/ui/, and lil-gui comes only with the panels.
-    const { Panels } = await import('../ui/panels');
-    if (this.disposed || !this.panelsWanted || this.panels) return;
-    const o = this.options;
-    this.panels = new Panels(this.handle, {
-      container: this.element,
-      frames: this.view,
-      resolution: o.resolution,
-      onResolution: o.onResolution,
-    });
+    return this.panels.set(on);
   }
 
   /** Whether the face shows its panels. */
   hasPanels(): boolean {
-    return !!this.panels;
+    return this.panels.shown();
   }
 
   /** Changes the background: a colour `"#rrggbb"` or `"transparent"`; a bad value throws naming it. */
@@ -182,8 +170,7 @@ export class EmbeddedFace {
     this.disposed = true;
     this.failed(new Error('the face was disposed before it was ready'));
     this.handle.dispose();
-    this.panels?.dispose();
-    this.panels = undefined;
+    this.panels.dispose();
     try {
       takeBack([() => this.view.dispose(), ...this.undo, () => this.unmount(), () => this.guide?.cancel()]);
     } finally {
