@@ -2,7 +2,9 @@ import { Euler, Matrix4 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
 import { DEGREES, eulerMatrix, rotateAboutAxis } from '../src/core/math3';
-import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle } from '../src/core/rig/muscles';
+import { MuscleField } from '../src/core/rig/muscle-fields';
+import { validateMuscle } from '../src/core/rig/muscle-validation';
+import { MuscleRig, computeMuscleTargets } from '../src/core/rig/muscles';
 import type { MuscleInputs } from '../src/core/solver/solver';
 import type { JawMuscle, LidMuscle, LinearMuscle, Muscle, SphincterMuscle, Vec3 } from '../src/core/rig/rig-types';
 

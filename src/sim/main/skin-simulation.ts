@@ -1,5 +1,5 @@
 import type { Collider } from '../../core/solver/colliders';
-import { validateMuscle } from '../../core/rig/muscles';
+import { validateMuscle } from '../../core/rig/muscle-validation';
 import type { Muscle } from '../../core/rig/rig-types';
 import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../../core/solver/solver';
 import type { SolverBackend } from './backend';
