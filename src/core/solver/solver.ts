@@ -39,7 +39,9 @@ import {
 } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import { ALONE, LEADER, runShare } from './solver-partner';
-import { projectBendingPart, projectOrientationPart, ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, type PartArrays } from './solver-kernels';
+import { ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, projectOrientationPart } from './orientation-kernel';
+import type { PartArrays } from './part-arrays';
+import { projectBendingPart } from './solver-kernels';
 import { computeNormals, type SkinTopology } from './topology';
 
 /** The skin's parameters; every one can change while the solver runs. */
@@ -233,7 +235,7 @@ export class SkinSolver {
   /** The lists the per-frame loops walk (see constraint-lists.ts), part by part. */
   private readonly edgeLists: EdgeLists;
   private readonly triangleLists: TriangleLists;
-  /** What the heaviest loops read and write (see solver-kernels.ts); shared with the partner thread, if any. */
+  /** What the heaviest loops read and write (see part-arrays.ts); shared with the partner thread, if any. */
   private readonly parts: PartArrays;
   private partner: PartnerLink | null = null;
   private readonly memory: Memory;
@@ -839,7 +841,7 @@ export class SkinSolver {
   }
 
   /**
-   * `passes` passes of the length constraints (thesis 4.3.3; see projectLengths in solver-kernels.ts), with the
+   * `passes` passes of the length constraints (thesis 4.3.3; see projectLengths in length-kernels.ts), with the
    * partner if there is one (one job for all the passes).
    */
   private projectLengths(passes: number): void {
