@@ -4,7 +4,7 @@ import { nextMuscleDisplay, shownMuscleNames, type MuscleDisplay } from '../core
 import type { RigDocument, UpdateOptions } from '../core/rig/rig-document';
 import { parseRigText } from '../core/rig/rig-schema';
 import type { Muscle, Rig } from '../core/rig/rig-types';
-import type { SkinParameters } from '../core/solver/solver';
+import type { SkinParameters } from '../core/solver/skin-parameters';
 import type { RenderTiming } from '../render/head-view';
 import {
   EditorSession,

@@ -3,7 +3,7 @@
  * sphincter muscles, the thesis's lid and jaw rotation muscles) into the skin solver's muscle inputs, a target and two
  * weights per vertex (`SolverBuffers.targets/weights/normalWeights`). Pure: no three.js, no DOM.
  */
-import type { MuscleInputs } from '../solver/solver';
+import type { MuscleInputs } from '../solver/muscle-inputs';
 import { brushed, displaceAtFalloff, displaceVertex, reaches, sphereWeight, type TurnCache } from './muscle-fields';
 import { NORMAL_SHARE, packMuscle, STRIDE } from './muscle-packing';
 import { validateMuscle } from './muscle-validation';

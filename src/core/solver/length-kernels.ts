@@ -1,7 +1,9 @@
 /** Length constraints (thesis 4.3.3) as part loops (see solver-kernels.ts): free edges and edges a muscle holds. */
 import { EDGE_RECORD } from './constraint-lists';
+import { allocate, type Memory } from './memory';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
+import type { SkinTopology } from './topology';
 
 /**
  * Length constraints (thesis 4.3.3): restore each edge to its rest length, half the correction to each end. (As
@@ -120,4 +122,29 @@ function projectHeldEdges(
     x[ib + 1] = by - k * dy + push * directions[ib + 1];
     x[ib + 2] = bz - k * dz + push * directions[ib + 2];
   }
+}
+
+/**
+ * Each vertex's push per unit of compression of a held edge (see PartArrays.bulgeDirections): a fixed, deterministic
+ * per-vertex seed in [-0.25, 0.75) along the rest normal. It breaks the symmetry of a flat compressed patch so it
+ * buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than sink. A larger mean lifts
+ * the whole patch in one bulge instead of folding it.
+ */
+export function createBulgeDirections(topology: SkinTopology, memory: Memory): Float32Array {
+  const n = topology.vertexCount;
+  const directions = allocate(Float32Array, 3 * n, memory);
+  for (let v = 0; v < n; v++) {
+    const seed = hash01(v) - 0.25;
+    for (let k = 3 * v; k < 3 * v + 3; k++) directions[k] = seed * topology.restNormals[k];
+  }
+  return directions;
+}
+
+/** A fixed hash of an integer to [0, 1). */
+function hash01(i: number): number {
+  let h = Math.imul(i ^ 0x9e3779b9, 0x85ebca6b);
+  h ^= h >>> 13;
+  h = Math.imul(h, 0xc2b2ae35);
+  h ^= h >>> 16;
+  return (h >>> 0) / 4294967296;
 }

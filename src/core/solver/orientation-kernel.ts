@@ -1,8 +1,42 @@
 /**
- * Orientation constraints as a part loop (see solver-kernels.ts): a triangle may tilt into a fold but not turn over,
- * and the pass modes that let most passes check only the triangles that may need it.
+ * Orientation constraints as a part loop (see solver-kernels.ts): a triangle may tilt into a fold but not turn over.
+ * Here also each triangle's rest frame and least area, and the pass modes that let most passes check only the
+ * triangles that may need it.
  */
 import type { PartArrays } from './part-arrays';
+
+/**
+ * The least share of its rest area a triangle keeps along its rest normal: a triangle tilted 75 degrees into a fold
+ * still passes, one flattened to a sliver or turned over does not.
+ */
+export const MIN_PROJECTED_AREA = 0.25;
+
+/** Each triangle's rest unit normal and twice its least projected area (MIN_PROJECTED_AREA of the rest), xyzA. */
+export function triangleFrames(rest: Float32Array, triangles: Uint32Array): Float32Array {
+  const count = triangles.length / 3;
+  const out = new Float32Array(4 * count);
+  for (let t = 0; t < count; t++) {
+    const a = 3 * triangles[3 * t];
+    const b = 3 * triangles[3 * t + 1];
+    const c = 3 * triangles[3 * t + 2];
+    const ux = rest[b] - rest[a],
+      uy = rest[b + 1] - rest[a + 1],
+      uz = rest[b + 2] - rest[a + 2];
+    const vx = rest[c] - rest[a],
+      vy = rest[c + 1] - rest[a + 1],
+      vz = rest[c + 2] - rest[a + 2];
+    const cx = uy * vz - uz * vy,
+      cy = uz * vx - ux * vz,
+      cz = ux * vy - uy * vx;
+    const twiceArea = Math.hypot(cx, cy, cz);
+    if (twiceArea === 0) continue;
+    out[4 * t] = cx / twiceArea;
+    out[4 * t + 1] = cy / twiceArea;
+    out[4 * t + 2] = cz / twiceArea;
+    out[4 * t + 3] = MIN_PROJECTED_AREA * twiceArea;
+  }
+  return out;
+}
 
 /**
  * Orientation of one part's triangles: each triangle's area projected on its rest normal stays above a fraction of

@@ -65,7 +65,7 @@ export interface PartArrays {
   restart: Uint8Array;
   /** Frames since each vertex last turned back, up to 255 (see relaxPart). */
   calm: Uint8Array;
-  /** Each vertex's way (the sum of its moves) since the loop window began (see SkinSolver.breakLoops). */
+  /** Each vertex's way (the sum of its moves) since the loop window began (see Relaxation.breakLoops). */
   path: Float32Array;
   /**
    * The colliders, and their current shapes (`COLLIDER_SHAPE` values each), which the leader updates when an input
@@ -73,7 +73,7 @@ export interface PartArrays {
    */
   colliders: Collider[];
   colliderShapes: Float64Array;
-  /** Collision candidates: vertex, rest clearance and side of each (see SkinSolver.collisionCandidates). */
+  /** Collision candidates: vertex, rest clearance and side of each (see collision-candidates.ts). */
   colliderVertices: Uint32Array;
   colliderClearance: Float32Array;
   colliderSide: Int8Array;
