@@ -1,6 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { ACTION_UNITS } from '../src/core/expression/facs';
-import { LATE_MOTION } from '../src/core/solver/solver';
+import { LATE_MOTION } from '../src/core/solver/solver-schedule';
 import { ACTION_UNIT_MEASURES, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES, returnToRest, settleExpression } from './fixtures/head-simulation';
 

@@ -1,5 +1,5 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { LATE_MOTION } from '../src/core/solver/solver';
+import { LATE_MOTION } from '../src/core/solver/solver-schedule';
 import { loadDefaultRig, loadHeadSimulation, MAX_SETTLE_FRAMES, returnToRest, settleExpression } from './fixtures/head-simulation';
 
 // Each preset at full weight on the medium head, solved as the worker solves it (SolverHost, colliders, rig).

@@ -13,7 +13,7 @@ import { TimelineController } from '../src/face/timeline-controller';
 import { ViewController } from '../src/face/view-controller';
 import type { SkinSimulation } from '../src/sim/main/skin-simulation';
 import type { Timeline } from '../src/core/timeline/timeline';
-import type { SkinParameters } from '../src/core/solver/solver';
+import type { SkinParameters } from '../src/core/solver/skin-parameters';
 
 const RIG = parseRigText(readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8'), 'default.json');
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { LATE_MOTION } from '../src/core/solver/solver';
+import { LATE_MOTION } from '../src/core/solver/solver-schedule';
 import { measureForeheadFolds } from './fixtures/fold-profile';
 import { loadHeadSimulation, type Resolution } from './fixtures/head-simulation';
 

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { computeMuscleTargets, validateMuscle } from '../src/core/rig/muscles';
+import { computeMuscleTargets } from '../src/core/rig/muscles';
+import { validateMuscle } from '../src/core/rig/muscle-validation';
 import type { LinearMuscle, SphincterMuscle } from '../src/core/rig/rig-types';
 
 /** A flat sheet of skin in the z = 0 plane, `step` apart, over x, y in -0.04..0.04. */

@@ -2,8 +2,10 @@ import { Euler, Matrix4 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
 import { DEGREES, eulerMatrix, rotateAboutAxis } from '../src/core/math3';
-import { MuscleField, MuscleRig, computeMuscleTargets, validateMuscle } from '../src/core/rig/muscles';
-import type { MuscleInputs } from '../src/core/solver/solver';
+import { MuscleField } from '../src/core/rig/muscle-fields';
+import { validateMuscle } from '../src/core/rig/muscle-validation';
+import { MuscleRig, computeMuscleTargets } from '../src/core/rig/muscles';
+import type { MuscleInputs } from '../src/core/solver/muscle-inputs';
 import type { JawMuscle, LidMuscle, LinearMuscle, Muscle, SphincterMuscle, Vec3 } from '../src/core/rig/rig-types';
 
 /** A seeded generator of uniform numbers in [0, 1) (mulberry32), so every run sees the same points. */

@@ -2,7 +2,8 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { newMuscle, RigDocument, type RigChange } from '../src/core/rig/rig-document';
 import { mirrorMuscle, twinName } from '../src/core/rig/rig-mirror';
-import { parseRig, RigError } from '../src/core/rig/rig-schema';
+import { RigError } from '../src/core/rig/rig-problems';
+import { parseRig } from '../src/core/rig/rig-schema';
 import type { LinearMuscle, Rig } from '../src/core/rig/rig-types';
 
 const DEFAULT_TEXT = readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8');

@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { MuscleRig } from '../src/core/rig/muscles';
 import { mulberry32 as random } from '../src/core/random';
 import { RigDocument } from '../src/core/rig/rig-document';
-import { RigError } from '../src/core/rig/rig-schema';
+import { RigError } from '../src/core/rig/rig-problems';
 
 const DEFAULT_TEXT = readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8');
 

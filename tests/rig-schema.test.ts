@@ -1,6 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { MAX_RIG_BYTES, parseRig, parseRigText, RigError } from '../src/core/rig/rig-schema';
+import { RigError } from '../src/core/rig/rig-problems';
+import { MAX_RIG_BYTES, parseRig, parseRigText } from '../src/core/rig/rig-schema';
 import type { Muscle, Rig } from '../src/core/rig/rig-types';
 
 const DEFAULT_TEXT = readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8');

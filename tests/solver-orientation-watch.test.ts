@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { PARTS } from '../src/core/solver/constraint-lists';
 import { SkinSolver } from '../src/core/solver/solver';
-import { ORIENT_FULL, ORIENT_WATCH, ORIENT_WATCHED, projectOrientationPart, type PartArrays } from '../src/core/solver/solver-kernels';
+import { ORIENT_FULL, ORIENT_WATCH, ORIENT_WATCHED, projectOrientationPart } from '../src/core/solver/orientation-kernel';
+import type { PartArrays } from '../src/core/solver/part-arrays';
 import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { MIN_PROJECTED_AREA, SkinSolver } from '../src/core/solver/solver';
+import { MIN_PROJECTED_AREA } from '../src/core/solver/orientation-kernel';
+import { SkinSolver } from '../src/core/solver/solver';
 import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 import { invertedTriangles } from './fixtures/head-simulation';

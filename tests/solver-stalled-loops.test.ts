@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { LATE_MOTION } from '../src/core/solver/solver';
+import { LATE_MOTION } from '../src/core/solver/solver-schedule';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 // Skin that goes round instead of converging (see SkinSolver.breakLoops): the anger preset once did until the

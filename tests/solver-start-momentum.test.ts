@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { SkinSolver, START_MOMENTUM_FRAMES, type SkinParameters } from '../src/core/solver/solver';
+import type { SkinParameters } from '../src/core/solver/skin-parameters';
+import { SkinSolver } from '../src/core/solver/solver';
+import { START_MOMENTUM_FRAMES } from '../src/core/solver/solver-schedule';
 import { buildTopology } from '../src/core/solver/topology';
 import { draggedPatch, triangleGrid } from './fixtures/grids';
 import { loadHeadSimulation } from './fixtures/head-simulation';

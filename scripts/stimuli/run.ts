@@ -8,7 +8,7 @@ import { spawnSync } from 'node:child_process';
 import { mkdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { basename, dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { jsonSyntaxMessage } from '../../src/core/rig/rig-schema';
+import { jsonSyntaxMessage } from '../../src/core/rig/json-text';
 import { expandStimulusList, stimulusManifest } from './stimulus-list';
 
 /** The plan the Playwright side reads, beside the rendered files. */

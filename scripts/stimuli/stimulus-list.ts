@@ -7,7 +7,7 @@
 
 import * as v from 'valibot';
 import { isActionUnitId } from '../../src/core/expression/facs';
-import { pathStep, problemOf, type RigProblem } from '../../src/core/rig/rig-schema';
+import { pathStep, problemOf, type RigProblem } from '../../src/core/rig/rig-problems';
 import { parseTimeline, TimelineError } from '../../src/core/timeline/timeline-schema';
 import { PRESET_TARGET_PREFIX, type Timeline } from '../../src/core/timeline/timeline';
 import {

@@ -8,7 +8,7 @@ export type { Easing, Timeline, TimelineAction, TimelineKey, TimelineTrack } fro
 export type { TimelineError } from '../core/timeline/timeline-schema';
 export type { ActionUnitListing, PresetListing } from '../core/expression/facs';
 export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/expression/eye-simulation';
-export type { SkinParameters } from '../core/solver/solver';
+export type { SkinParameters } from '../core/solver/skin-parameters';
 export type { Rig } from '../core/rig/rig-types';
 export type { RenderTiming } from '../render/render-timing';
 export type { HairPartSnapshot, HairSnapshot } from '../render/hair-view';

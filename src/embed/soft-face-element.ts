@@ -1,4 +1,4 @@
-import type { SkinParameters } from '../core/solver/solver';
+import type { SkinParameters } from '../core/solver/skin-parameters';
 import type { AppearanceOptions, LightOptions, RenderOptions } from '../render/view-options';
 import type { Face } from './create-face';
 import { ATTRIBUTE_DEFAULTS, FACE_ATTRIBUTES, readAttributes, type FaceAttribute, type FaceAttributeValues } from './element-attributes';

@@ -4,7 +4,7 @@
  * data it hands out. No behaviour here.
  */
 import type { EyeSimulationOptions } from '../core/expression/eye-simulation';
-import type { SkinParameters } from '../core/solver/solver';
+import type { SkinParameters } from '../core/solver/skin-parameters';
 import type { Timeline } from '../core/timeline/timeline';
 import type { RenderTiming } from '../render/render-timing';
 import type { MaterialDescription } from '../render/materials';

@@ -1,4 +1,4 @@
-import type { SkinParameters } from '../core/solver/solver';
+import type { SkinParameters } from '../core/solver/skin-parameters';
 import type { FaceParts } from './face-parts';
 import type { FaceStats, SkinSnapshot } from './face-ports';
 

@@ -1,7 +1,7 @@
 import { Euler, Object3D, type Vector3, type Camera } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { DEGREES } from '../core/math3';
-import { MuscleField } from '../core/rig/muscles';
+import { MuscleField } from '../core/rig/muscle-fields';
 import type { Muscle, Vec3 } from '../core/rig/rig-types';
 import { rotationOf } from './muscle-view';
 

@@ -21,7 +21,7 @@ import {
   type Object3D,
 } from 'three';
 import { DEGREES } from '../core/math3';
-import { MuscleField } from '../core/rig/muscles';
+import { MuscleField } from '../core/rig/muscle-fields';
 import type { EulerDegrees, Muscle, Vec3 } from '../core/rig/rig-types';
 
 /** Glyph colours by muscle type (sRGB), picked to stand apart from each other and from the skin. */

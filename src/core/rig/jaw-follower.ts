@@ -1,7 +1,7 @@
 import type { Collider } from '../solver/colliders';
 import { HEAD_NODES } from '../head/head-nodes';
 import { DEGREES, rotateAboutAxis } from '../math3';
-import { MuscleField } from './muscles';
+import { MuscleField } from './muscle-fields';
 import type { Muscle, Vec3 } from './rig-types';
 
 /** The lower teeth's colliders as the model places them at rest. */

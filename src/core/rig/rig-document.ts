@@ -6,7 +6,8 @@
 import { ACTION_UNITS } from '../expression/facs';
 import { EditHistory } from './edit-history';
 import { mirrorMuscle, otherSide, twinName } from './rig-mirror';
-import { parseRig, RigError } from './rig-schema';
+import { RigError } from './rig-problems';
+import { parseRig } from './rig-schema';
 import type { ActionUnitDefinition, Muscle, MuscleSide, Rig, Vec3 } from './rig-types';
 
 /**

@@ -18,18 +18,11 @@ import {
   type Board,
 } from './partner-board';
 import { PARTS } from './constraint-lists';
-import {
-  projectBendingPart,
-  projectCollisions,
-  projectLengths,
-  projectNormals,
-  projectOrientationPart,
-  projectPositions,
-  recordStepsPart,
-  relaxPart,
-  startFramePart,
-  type PartArrays,
-} from './solver-kernels';
+import { recordStepsPart, relaxPart, startFramePart } from './frame-kernels';
+import { projectLengths } from './length-kernels';
+import { projectOrientationPart } from './orientation-kernel';
+import type { PartArrays } from './part-arrays';
+import { projectBendingPart, projectCollisions, projectNormals, projectPositions } from './solver-kernels';
 
 /** Which share of a job `runShare` runs: all of it (no partner), the leader's, or the partner's. */
 export const ALONE = -1;

@@ -1,11 +1,5 @@
-import {
-  SKIN_DEFAULTS,
-  checkMuscleTargets,
-  clearMuscleInputs,
-  validateParameters,
-  writeMuscleTargets,
-  type SkinParameters,
-} from '../../core/solver/solver';
+import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from '../../core/solver/muscle-inputs';
+import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from '../../core/solver/skin-parameters';
 import {
   CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,

@@ -1,7 +1,8 @@
 import type { Collider } from '../../core/solver/colliders';
-import { validateMuscle } from '../../core/rig/muscles';
+import { validateMuscle } from '../../core/rig/muscle-validation';
 import type { Muscle } from '../../core/rig/rig-types';
-import { SKIN_DEFAULTS, validateParameters, type ConstraintCounts, type SkinParameters } from '../../core/solver/solver';
+import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from '../../core/solver/skin-parameters';
+import type { ConstraintCounts } from '../../core/solver/solver-buffers';
 import type { SolverBackend } from './backend';
 import { InputStaging } from './input-staging';
 import {

@@ -11,7 +11,8 @@
  * header (frame number, sleep state, solve time, bounds...) so that metadata always matches the vertices beside it.
  */
 import { MAX_RIG_MUSCLES } from '../../core/rig/rig-schema';
-import type { ConstraintCounts, SkinParameters } from '../../core/solver/solver';
+import type { SkinParameters } from '../../core/solver/skin-parameters';
+import type { ConstraintCounts } from '../../core/solver/solver-buffers';
 
 // ---- control block -------------------------------------------------------------------------------------------
 

@@ -1,7 +1,7 @@
 /** Messages between SkinSimulation (main thread) and the skin worker. */
 import type { Collider } from '../../core/solver/colliders';
 import type { Muscle } from '../../core/rig/rig-types';
-import type { SkinParameters } from '../../core/solver/solver';
+import type { SkinParameters } from '../../core/solver/skin-parameters';
 
 /** How the solver runs: in a worker on shared memory, in a worker with transferred buffers, or on the main thread. */
 export type SolverMode = 'shared' | 'transfer' | 'main';

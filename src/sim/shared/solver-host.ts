@@ -5,7 +5,10 @@ import { MuscleRig } from '../../core/rig/muscles';
 import { mulberry32 } from '../../core/random';
 import type { Muscle } from '../../core/rig/rig-types';
 import type { Memory } from '../../core/solver/memory';
-import { createSolverBuffers, SKIN_DEFAULTS, SkinSolver, type MuscleInputs, type SkinParameters } from '../../core/solver/solver';
+import type { MuscleInputs } from '../../core/solver/muscle-inputs';
+import { SKIN_DEFAULTS, type SkinParameters } from '../../core/solver/skin-parameters';
+import { SkinSolver } from '../../core/solver/solver';
+import { createSolverBuffers } from '../../core/solver/solver-buffers';
 import { buildTopology, describeTopology, type SkinTopology } from '../../core/solver/topology';
 import {
   CONSTRAINT_INDEX,

@@ -4,7 +4,7 @@
  * first (see SolverPartner). It says `running` once it waits for jobs; the skin worker hands it work only from then on.
  */
 import { boardViews } from '../../core/solver/partner-board';
-import type { PartArrays } from '../../core/solver/solver-kernels';
+import type { PartArrays } from '../../core/solver/part-arrays';
 import { SolverPartner } from '../../core/solver/solver-partner';
 
 /** Skin worker to partner worker: the solver's shared arrays and the board. */

@@ -1,0 +1,104 @@
+/**
+ * The relaxation that turns the frame's cycles into convergence (SkinSolver.relax, relaxPart) and the loop breaking
+ * that does the same for slow loops, with the per-vertex state they keep across a motion's frames.
+ *
+ * Each vertex takes a share of its solved move. Where the hard constraints (collisions, orientation) meet stiff
+ * bending, the frame's map can hand a vertex back and forth between two shapes (a period-2 cycle: its move turns back
+ * on the last one). Such a vertex takes half as much of its moves from then on (down to MIN_RELAXATION), which turns
+ * the cycle into a contraction toward the shape between. A cycle repeats: a single turn (a lip bouncing off a tooth as
+ * the skin sets off) halves nothing, a second within CYCLE_TURNS_WITHIN frames does (halving at the first turn left
+ * vertices creeping: docs/solver-notes.md). Shares only shrink within a motion (a new input restores whole moves), so
+ * the frame's map stops changing after a few halvings instead of starting cycles of its own. An under-relaxed step has
+ * the same fixed points as a whole one: the skin comes to rest in the shape the constraints ask for, by convergence,
+ * not by being slowed down (the thesis's iteration has no such step). A safety net remains for skin still drifting
+ * LATE_MOTION frames after an input (a few lid and lip vertices, by micrometres a frame): from then on every share
+ * shrinks each frame.
+ */
+import { allocate, type Memory } from './memory';
+import { LATE_MOTION, LATE_SLOWING, LOOP_LEAST_SHARE, LOOP_SLOWING, LOOP_WINDOW, STALL, STALL_PART } from './solver-schedule';
+import type { SkinTopology } from './topology';
+
+/** A SkinSolver's relaxation shares, turn marks and ways per vertex, and the age of its motion. */
+export class Relaxation {
+  /** Share of its solved move each vertex takes this frame (see relaxPart). */
+  readonly share: Float32Array;
+  /** 1 for a vertex whose last move turned back on the one before: it carries no momentum into the next frame. */
+  readonly restart: Uint8Array;
+  /** Frames since each vertex last turned back, up to 255 (see relaxPart). */
+  readonly calm: Uint8Array;
+  /** Each vertex's way (the sum of its moves) since the loop window began (see breakLoops). */
+  readonly path: Float32Array;
+  /** Frames solved since the last input or parameter change. */
+  motionFrames = 0;
+  /** Scratch marks of the vertices breakLoops slows. */
+  private readonly looping: Uint8Array;
+  /** The longest way a vertex went in the last loop window. */
+  private lastLongest = 0;
+
+  constructor(n: number, memory: Memory) {
+    this.share = allocate(Float32Array, n, memory).fill(1);
+    this.restart = allocate(Uint8Array, n, memory);
+    this.calm = allocate(Uint8Array, n, memory).fill(255);
+    this.path = allocate(Float32Array, n, memory);
+    this.looping = new Uint8Array(n);
+  }
+
+  /** A new motion (new inputs or parameters): every vertex may take whole steps again. */
+  restartMotion(): void {
+    this.motionFrames = 0;
+    this.share.fill(1);
+    this.calm.fill(255);
+    this.path.fill(0);
+    this.lastLongest = 0;
+  }
+
+  /** Counts a relaxed frame and returns the cap on every share in it: 1, shrinking each frame after LATE_MOTION. */
+  nextCap(): number {
+    const late = this.motionFrames++ - LATE_MOTION;
+    return late > 0 ? LATE_SLOWING ** late : 1;
+  }
+
+  /**
+   * Every LOOP_WINDOW frames, over the region's vertices `V[0..count]`: if the longest way a vertex went in the window
+   * is not clearly shorter than in the one before, the skin has stalled: it circles (a smooth loop of a few dozen
+   * frames a turn, where no move turns back on the one before, so the relaxation does not see it) or chatters at its
+   * least share where the hard constraints take turns. The vertices that went far (over STALL_PART of the longest
+   * way) and their neighbours (the loop is a mode of the patch: slowing one vertex moves the loop next to it) take a
+   * quarter of their moves from then on (LOOP_SLOWING). An under-relaxed step has the same fixed points, so where the
+   * constraints have one the skin converges to it; where they only chatter, the patch slows until it sleeps, long
+   * before the safety net (see LATE_MOTION). Skin that converges shortens its way by more than a tenth a window (a
+   * third of a per cent a frame) and is left alone (the threshold's choice: docs/solver-notes.md, "Relaxation and
+   * loops").
+   */
+  breakLoops(V: Uint32Array, count: number, topology: SkinTopology, sleepTolerance: number): void {
+    const path = this.path;
+    const mark = this.looping;
+    const share = this.share;
+    let longest = 0;
+    for (let k = 0; k < count; k++) if (path[V[k]] > longest) longest = path[V[k]];
+    // Skin going less than the sleep tolerance a frame is about to sleep.
+    const least = LOOP_WINDOW * sleepTolerance * topology.size;
+    const stalled = this.motionFrames > LOOP_WINDOW && longest > least && longest > STALL * this.lastLongest;
+    this.lastLongest = longest;
+    const far = Math.max(least, STALL_PART * longest);
+    const start = topology.neighbourStart;
+    const nb = topology.neighbours;
+    let marked = 0;
+    for (let k = 0; k < count; k++) {
+      const v = V[k];
+      if (stalled && path[v] > far) {
+        mark[v] = 1;
+        for (let j = start[v]; j < start[v + 1]; j++) mark[nb[j]] = 1;
+        marked++;
+      }
+      path[v] = 0;
+    }
+    if (marked === 0) return;
+    // Only the region's shares change: a marked neighbour outside it is at rest and joins, if ever, with a whole share.
+    for (let k = 0; k < count; k++) {
+      const v = V[k];
+      if (mark[v] === 1 && share[v] > LOOP_LEAST_SHARE) share[v] *= LOOP_SLOWING;
+    }
+    mark.fill(0);
+  }
+}

@@ -1,0 +1,60 @@
+/** The typed arrays a SkinSolver reads and writes, and what it reports of a frame (timings, constraint counts). */
+import { allocate, type Memory } from './memory';
+import type { SkinTopology } from './topology';
+
+/** Typed arrays the solver reads and writes; pass them to place them in shared memory. */
+export interface SolverBuffers {
+  /** Current positions, xyz per simulation vertex. */
+  positions: Float32Array;
+  /** Current unit normals. */
+  normals: Float32Array;
+  /** Muscle target of each vertex, xyz. */
+  targets: Float32Array;
+  /** Muscle weight of each vertex along the skin's surface, 0..1 (0 on both: no muscle constraint). */
+  weights: Float32Array;
+  /**
+   * Muscle weight of each vertex along its rest normal, 0..1. Muscles that slide skin over the face (linear,
+   * sphincter) leave this low so compressed skin is free to fold; rotation muscles (jaw, lids) carry the skin
+   * bodily and set it as high as the surface weight.
+   */
+  normalWeights: Float32Array;
+}
+
+/** Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). */
+export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local'): SolverBuffers {
+  const n = topology.vertexCount;
+  const copy = (from: Float32Array): Float32Array => {
+    const to = allocate(Float32Array, from.length, memory);
+    to.set(from);
+    return to;
+  };
+  return {
+    positions: copy(topology.rest),
+    normals: copy(topology.restNormals),
+    targets: copy(topology.rest),
+    weights: allocate(Float32Array, n, memory),
+    normalWeights: allocate(Float32Array, n, memory),
+  };
+}
+
+/** Milliseconds spent in each phase of the last solved frame. */
+export interface FrameTimings {
+  /** Position and muscle constraints. */
+  positions: number;
+  lengths: number;
+  bending: number;
+  collisions: number;
+  /** Orientation passes, within the outer iterations and at the frame's end. */
+  orientation: number;
+  normals: number;
+  total: number;
+}
+
+/** Counts of each constraint type, as the app's outputs show them. */
+export interface ConstraintCounts {
+  position: number;
+  length: number;
+  muscle: number;
+  bending: number;
+  collision: number;
+}
