@@ -60,10 +60,10 @@ test('setCamera turns the view about the head and moves it nearer; bad input thr
   expect(Math.abs(r.noseFront - r.width / 2)).toBeLessThan(0.02 * r.width);
   expect(r.width / 2 - r.noseLeft).toBeGreaterThan(0.1 * r.width);
   expect(r.errors).toEqual([
-    'setCamera: yaw must be within -180..180, got 200',
-    'setCamera: pitch needs a finite number, got NaN',
-    'setCamera: unknown option "zoom" (options: yaw, pitch, distance)',
-    'setCamera: distance needs a number, got "2"',
+    'setCamera: yaw: expected a number from -180 to 180, got 200',
+    'setCamera: pitch: expected a number from -80 to 80, got NaN',
+    'setCamera: expected one of the options yaw, pitch, distance, got "zoom"',
+    'setCamera: distance: expected a number from 0.2 to 5, got "2"',
   ]);
   expect(r.after).toEqual(r.side);
   // Back to the front: the same picture as at the start.

@@ -26,9 +26,9 @@ test('createFace rejects bad options, naming them, and leaves nothing behind', a
       await attempt({ resolution: 'low', rig: { muscles: 'none' } }),
     ];
   });
-  expect(results[0]).toBe('createFace: resolution must be one of low, medium, high, got "huge" | left 0');
-  expect(results[1]).toMatch(/^createFace: expression: unknown Action Unit id "AU99" .* \| left 0$/);
-  expect(results[2]).toMatch(/^createFace: expression: unknown preset "joy" \(presets: .*\) \| left 0$/);
+  expect(results[0]).toBe('createFace: resolution: expected one of low, medium, high, got "huge" | left 0');
+  expect(results[1]).toMatch(/^createFace: expression: expected an Action Unit id like .*, got "AU99" \| left 0$/);
+  expect(results[2]).toMatch(/^createFace: expression: expected one of the presets .*, got "joy" \| left 0$/);
   // Relative to the page. (The preview server answers unknown paths with the app's page, so the reason varies.)
   expect(results[3]).toMatch(/^the head could not be loaded from http:\/\/[^ ]*\/e2e\/pages\/models\/no-such-head\.glb: .+ \| left 0$/);
   expect(results[4]).toMatch(/\/e2e\/pages\/rigs\/no-such-rig\.json.* \| left 0$/);

@@ -63,14 +63,14 @@ test('setLight and setRenderOptions reject bad input, naming it, and change noth
     }
     return { errors, light, render, lightAfter: face.getLight(), renderAfter: face.getRenderOptions() };
   });
-  expect(result.errors[0]).toMatch(/setLight: keyElevation .*NaN/);
-  expect(result.errors[1]).toMatch(/setLight: unknown option "spotAngle"/);
-  expect(result.errors[2]).toMatch(/setLight: keyElevation must be within -90\.\.90, got 120/);
-  expect(result.errors[3]).toMatch(/setLight: keyColor .*"blue"/);
-  expect(result.errors[4]).toMatch(/setLight: ambientIntensity needs a number/);
-  expect(result.errors[5]).toMatch(/setRenderOptions: wireframe needs a boolean/);
-  expect(result.errors[6]).toMatch(/setRenderOptions: unknown option "shadows"/);
-  expect(result.errors[7]).toMatch(/setRenderOptions: needs an object/);
+  expect(result.errors[0]).toMatch(/setLight: keyElevation: expected a number from -90 to 90, got NaN/);
+  expect(result.errors[1]).toMatch(/setLight: expected one of the options .*, got "spotAngle"/);
+  expect(result.errors[2]).toMatch(/setLight: keyElevation: expected a number from -90 to 90, got 120/);
+  expect(result.errors[3]).toMatch(/setLight: keyColor: expected a colour "#rrggbb", got "blue"/);
+  expect(result.errors[4]).toMatch(/setLight: ambientIntensity: expected a number from 0 to 3, got/);
+  expect(result.errors[5]).toMatch(/setRenderOptions: wireframe: expected true or false/);
+  expect(result.errors[6]).toMatch(/setRenderOptions: expected one of the options wireframe, showEyes, showTeeth, got "shadows"/);
+  expect(result.errors[7]).toMatch(/setRenderOptions: expected an object of options/);
   expect(result.lightAfter).toEqual(result.light);
   expect(result.renderAfter).toEqual(result.render);
   expect(await sliderValue(page, 'light-keyAzimuth')).toBe(result.light.keyAzimuth);

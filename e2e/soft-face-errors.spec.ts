@@ -20,15 +20,15 @@ test('<soft-face>: a bad attribute value fires an error naming it, and the face 
   expect(before.units.AU12L).toBe(0.6);
 
   const bad: [string, string, RegExp][] = [
-    ['resolution', 'ultra', /^<soft-face>: resolution must be one of low, medium, high, got "ultra"$/],
-    ['solver', 'gpu', /^<soft-face>: solver must be one of auto, shared, transfer, main, got "gpu"$/],
-    ['expression', 'AU99=1', /^<soft-face> expression: unknown Action Unit id "AU99"/],
-    ['expression', 'AU12=lots', /^<soft-face> expression: AU12 needs a finite number, got "lots"$/],
-    ['preset', 'joy:1', /^<soft-face> preset: unknown preset "joy" \(presets: .*happiness/],
-    ['preset', 'happiness:x', /^<soft-face>: preset "happiness:x" must be a preset name and a weight/],
-    ['panels', 'maybe', /^<soft-face>: panels must be present \(on\), "true" or "false", got "maybe"$/],
-    ['eye-simulation', 'yes', /^<soft-face>: eye-simulation must be present \(on\), "true" or "false", got "yes"$/],
-    ['background', 'blue', /^<soft-face>: background must be a colour "#rrggbb" or "transparent", got "blue"$/],
+    ['resolution', 'ultra', /^<soft-face>: resolution: expected one of low, medium, high, got "ultra"$/],
+    ['solver', 'gpu', /^<soft-face>: solver: expected one of auto, shared, transfer, main, got "gpu"$/],
+    ['expression', 'AU99=1', /^<soft-face> expression: expected an Action Unit id like .*, got "AU99"$/],
+    ['expression', 'AU12=lots', /^<soft-face> expression: AU12: expected a finite number, got "lots"$/],
+    ['preset', 'joy:1', /^<soft-face> preset: expected one of the presets .*happiness.*, got "joy"$/],
+    ['preset', 'happiness:x', /^<soft-face>: preset: expected a preset name and a weight, like "happiness:0.5", got "happiness:x"$/],
+    ['panels', 'maybe', /^<soft-face>: panels: expected present \(on\), "true" or "false", got "maybe"$/],
+    ['eye-simulation', 'yes', /^<soft-face>: eye-simulation: expected present \(on\), "true" or "false", got "yes"$/],
+    ['background', 'blue', /^<soft-face>: background: expected a colour "#rrggbb" or "transparent", got "blue"$/],
   ];
   for (const [name, value, message] of bad) {
     await page.evaluate(([name, value]) => document.querySelector('soft-face')!.setAttribute(name, value), [name, value]);
@@ -54,5 +54,5 @@ test('<soft-face>: an error event nobody prevents also reaches the console as a 
   await openEmbedPage(page);
   // Checked as soon as the attribute is set, before any face is built: no head needs to load for this.
   await page.evaluate(() => document.createElement('soft-face').setAttribute('resolution', 'huge'));
-  expect(warnings).toEqual(['<soft-face>: resolution must be one of low, medium, high, got "huge"']);
+  expect(warnings).toEqual(['<soft-face>: resolution: expected one of low, medium, high, got "huge"']);
 });

@@ -243,7 +243,7 @@ test.describe('the Video panel', () => {
     expect(refused.messages[0]).toMatch(/^recordVideo: fps: .*NaN/);
     expect(refused.messages[1]).toMatch(/^recordVideo: width: .*got 0/);
     expect(refused.messages[2]).toMatch(/^recordVideo: width: .*4096.*8192/);
-    expect(refused.messages[3]).toMatch(/^recordVideo: height: must be even/);
+    expect(refused.messages[3]).toMatch(/^recordVideo: height: expected an even number/);
     expect(refused.messages[4]).toMatch(/^recordVideo: seconds: /);
     expect(refused.messages[5]).toMatch(/^recordVideo: format: /);
     // The timeline of a refused recording was not loaded.

@@ -49,11 +49,13 @@ describe('EditorSession', () => {
     told.length = 0;
     const before = session.describe();
     expect(() => session.select('no-such-muscle')).toThrow('selectMuscle');
-    expect(() => session.setGizmoMode('fly' as never)).toThrow('setGizmoMode: expected "translate", "rotate" or "scale", got "fly"');
-    expect(() => session.setGizmoPart('box')).toThrow('setGizmoPart: a linear muscle has the parts insertion, origin, got "box"');
-    expect(() => session.setBrush({ radius: 1 })).toThrow('setBrush: radius must be a number of metres from 0.001 to 0.05, got 1');
-    expect(() => session.setBrush({ mode: 'add', size: 2 } as never)).toThrow('setBrush: unknown option "size"');
-    expect(() => session.setPreviewContraction(Number.NaN)).toThrow('setPreviewContraction: needs a finite number, got NaN');
+    expect(() => session.setGizmoMode('fly' as never)).toThrow('setGizmoMode: expected one of "translate", "rotate", "scale", got "fly"');
+    expect(() => session.setGizmoPart('box')).toThrow('setGizmoPart: expected one of "insertion", "origin", got "box"');
+    expect(() => session.setBrush({ radius: 1 })).toThrow('setBrush: radius: expected a number from 0.001 to 0.05, got 1');
+    expect(() => session.setBrush({ mode: 'add', size: 2 } as never)).toThrow(
+      'setBrush: expected one of the options mode, radius, got "size"',
+    );
+    expect(() => session.setPreviewContraction(Number.NaN)).toThrow('setPreviewContraction: expected a finite number, got NaN');
     expect(session.describe()).toEqual(before);
     expect(told).toEqual([]);
   });

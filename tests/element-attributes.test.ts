@@ -39,12 +39,12 @@ describe('<soft-face> attributes', () => {
   });
 
   it('reject a bad value, naming the attribute', () => {
-    expect(() => read({ resolution: 'ultra' })).toThrow('<soft-face>: resolution must be one of low, medium, high, got "ultra"');
-    expect(() => read({ panels: 'yes' })).toThrow('<soft-face>: panels must be present (on), "true" or "false", got "yes"');
-    expect(() => read({ expression: 'AU12=' })).toThrow('<soft-face> expression: AU12 needs a finite number, got ""');
+    expect(() => read({ resolution: 'ultra' })).toThrow('<soft-face>: resolution: expected one of low, medium, high, got "ultra"');
+    expect(() => read({ panels: 'yes' })).toThrow('<soft-face>: panels: expected present (on), "true" or "false", got "yes"');
+    expect(() => read({ expression: 'AU12=' })).toThrow('<soft-face> expression: AU12: expected a finite number, got ""');
     expect(() => readPresets('happiness:lots')).toThrow(
-      '<soft-face>: preset "happiness:lots" must be a preset name and a weight, like "happiness:0.5"',
+      '<soft-face>: preset: expected a preset name and a weight, like "happiness:0.5", got "happiness:lots"',
     );
-    expect(() => readPresets(':1')).toThrow('<soft-face>: preset ":1" must be a preset name');
+    expect(() => readPresets(':1')).toThrow('<soft-face>: preset: expected a preset name and a weight, like "happiness:0.5", got ":1"');
   });
 });

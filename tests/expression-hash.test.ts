@@ -45,11 +45,11 @@ describe('an expression given to createFace, setExpression or <soft-face>', () =
   });
 
   it('refuses, naming it, an entry that is not a finite number (where the hash skips it)', () => {
-    expect(() => readExpression('AU12=abc', 'setExpression')).toThrow('setExpression: AU12 needs a finite number, got "abc"');
-    expect(() => readExpression('AU12=', 'setExpression')).toThrow('setExpression: AU12 needs a finite number, got ""');
-    expect(() => readExpression({ AU12: Infinity })).toThrow('expression: AU12 needs a finite number, got Infinity');
+    expect(() => readExpression('AU12=abc', 'setExpression')).toThrow('setExpression: AU12: expected a finite number, got "abc"');
+    expect(() => readExpression('AU12=', 'setExpression')).toThrow('setExpression: AU12: expected a finite number, got ""');
+    expect(() => readExpression({ AU12: Infinity })).toThrow('expression: AU12: expected a finite number, got Infinity');
     expect(() => readExpression(42 as unknown as string)).toThrow(
-      'expression: needs text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got 42',
+      'expression: expected text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got 42',
     );
   });
 });

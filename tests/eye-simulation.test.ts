@@ -184,9 +184,9 @@ describe('checkEyeSimulationOptions', () => {
   });
 
   it.each([
-    [null, 'test: expected an object of eye simulation options, got null'],
-    [[1], 'test: expected an object of eye simulation options, got an array'],
-    [{ blinkHoldMs: 5 }, 'test: unknown option "blinkHoldMs" (options: seed, blinkIntervalMin,'],
+    [null, 'test: expected an object of options, got null'],
+    [[1], 'test: expected an object of options, got [1]'],
+    [{ blinkHoldMs: 5 }, 'test: expected one of the options seed, blinkIntervalMin,'],
     [{ blinkHold: -1 }, 'test: blinkHold: expected a number from 0 to 10000, got -1'],
     [{ blinkHold: Number.NaN }, 'test: blinkHold: expected a number from 0 to 10000, got NaN'],
     [{ seed: 1.5 }, 'test: seed: expected an integer from 0 to 4294967295, got 1.5'],

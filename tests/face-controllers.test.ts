@@ -86,7 +86,7 @@ describe('TimelineController', () => {
     expect(() => timeline.play()).toThrow('play: no timeline is loaded (setTimeline first)');
     expect(() => timeline.seek(1)).toThrow('seek: no timeline is loaded');
     timeline.setTimeline({ format: 'softface-timeline', tracks: { AU12L: { keys: [{ time: 0, value: 0 }] } } });
-    expect(() => timeline.seek(Number.POSITIVE_INFINITY)).toThrow('seek: needs a finite number of seconds, got Infinity');
+    expect(() => timeline.seek(Number.POSITIVE_INFINITY)).toThrow('seek: expected a finite number, got Infinity');
     expect(changes).toEqual(['timeline']);
   });
 });
@@ -106,7 +106,7 @@ describe('ViewController', () => {
     expect(changes).toEqual([]);
     controller.setLight({ keyAzimuth: 40 });
     expect(changes).toEqual(['light']);
-    expect(() => controller.measureRender(0)).toThrow('measureRender: frames must be an integer within 1..10000, got 0');
+    expect(() => controller.measureRender(0)).toThrow('measureRender: frames: expected an integer from 1 to 10000, got 0');
     expect(view.measureRender).not.toHaveBeenCalled();
   });
 });
@@ -118,7 +118,7 @@ describe('EyesController', () => {
     parts.eyes = eyes as unknown as FaceEyes;
     const controller = new EyesController(parts);
     expect(() => controller.setEyeSimulation(true, { blinkHold: -1 })).toThrow(/^setEyeSimulation: blinkHold: /);
-    expect(() => controller.setEyeSimulation('yes' as unknown as boolean)).toThrow('setEyeSimulation: needs a boolean, got yes');
+    expect(() => controller.setEyeSimulation('yes' as unknown as boolean)).toThrow('setEyeSimulation: expected true or false, got "yes"');
     expect(eyes.setEnabled).not.toHaveBeenCalled();
     controller.setEyeSimulation(true, { seed: 7 });
     expect(eyes.setEnabled).toHaveBeenCalledWith(true, { seed: 7 });

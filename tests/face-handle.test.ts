@@ -61,8 +61,8 @@ describe('FaceHandle', () => {
     const { handle, start, changes } = makeFace();
     start();
     expect(() => handle.setActionUnit('AU99', 1)).toThrow(/AU99/);
-    expect(() => handle.setOverlay(['AU12L', 'AU12R'], [1])).toThrow('setOverlay: 2 ids but 1 values');
-    expect(() => handle.setOverlay(['AU12L'], [Number.NaN])).toThrow('setOverlay: AU12L needs a finite number, got NaN');
+    expect(() => handle.setOverlay(['AU12L', 'AU12R'], [1])).toThrow('setOverlay: values: expected 2 values, one per id, got [1]');
+    expect(() => handle.setOverlay(['AU12L'], [Number.NaN])).toThrow('setOverlay: AU12L: expected a finite number, got NaN');
     expect(handle.getOverlay().AU12L ?? 0).toBe(0);
     expect(changes).toEqual([]);
   });

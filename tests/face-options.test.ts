@@ -30,36 +30,39 @@ describe('createFace options', () => {
 
   it('reject a bad option with a message naming it and the value', () => {
     const cases: [object, string][] = [
-      [{ resolution: 'ultra' }, 'createFace: resolution must be one of low, medium, high, got "ultra"'],
-      [{ solver: 'gpu' }, 'createFace: solver must be one of auto, shared, transfer, main, got "gpu"'],
-      [{ panels: 'yes' }, 'createFace: panels must be true or false, got "yes"'],
-      [{ eyeSimulation: 1 }, 'createFace: eyeSimulation must be true or false, got 1'],
-      [{ background: 'red' }, 'createFace: background must be a colour "#rrggbb" or "transparent", got "red"'],
-      [{ rig: 42 }, 'createFace: rig must be a URL or a rig object, got 42'],
-      [{ model: {} }, 'createFace: model must be a URL, got an object'],
-      [{ assetBase: '' }, 'createFace: assetBase must be a URL, got ""'],
-      [{ onResolution: 'reload' }, 'createFace: onResolution must be a function, got "reload"'],
-      [{ workers: 3 }, 'createFace: workers must be 1, 2 or "auto", got 3'],
-      [{ light: { keyAzimuth: 400 } }, 'createFace: light: keyAzimuth must be within 0..360, got 400'],
-      [{ expression: 'AU12=much' }, 'createFace: expression: AU12 needs a finite number, got "much"'],
-      [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12 needs a finite number, got "0.5"'],
+      [{ resolution: 'ultra' }, 'createFace: resolution: expected one of low, medium, high, got "ultra"'],
+      [{ solver: 'gpu' }, 'createFace: solver: expected one of auto, shared, transfer, main, got "gpu"'],
+      [{ panels: 'yes' }, 'createFace: panels: expected true or false, got "yes"'],
+      [{ eyeSimulation: 1 }, 'createFace: eyeSimulation: expected true or false, got 1'],
+      [{ background: 'red' }, 'createFace: background: expected a colour "#rrggbb" or "transparent", got "red"'],
+      [{ rig: 42 }, 'createFace: rig: expected a URL or a rig object, got 42'],
+      [{ model: {} }, 'createFace: model: expected a URL, got an object'],
+      [{ assetBase: '' }, 'createFace: assetBase: expected a URL, got ""'],
+      [{ onResolution: 'reload' }, 'createFace: onResolution: expected a function, got "reload"'],
+      [{ workers: 3 }, 'createFace: workers: expected 1, 2 or "auto", got 3'],
+      [{ light: { keyAzimuth: 400 } }, 'createFace: light: keyAzimuth: expected a number from 0 to 360, got 400'],
+      [{ expression: 'AU12=much' }, 'createFace: expression: AU12: expected a finite number, got "much"'],
+      [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12: expected a finite number, got "0.5"'],
       [
         { resolutoin: 'low' },
-        'createFace: unknown option "resolutoin" (options: resolution, rig, model, solver, workers, panels, ' +
-          'expression, eyeSimulation, light, appearance, background, motionResolution, slowDrawMs, assetBase, onResolution, autosave)',
+        'createFace: expected one of the options resolution, rig, model, solver, workers, panels, expression, eyeSimulation, ' +
+          'light, appearance, background, motionResolution, slowDrawMs, assetBase, onResolution, autosave, got "resolutoin"',
       ],
-      [{ autosave: 1 }, 'createFace: autosave must be true, false or a key, got 1'],
-      [{ appearance: { browDensity: 2 } }, 'createFace: appearance: browDensity must be within 0..1, got 2'],
-      [{ appearance: { browColor: 'brown' } }, 'createFace: appearance: browColor needs a colour "#rrggbb", got "brown"'],
-      [{ appearance: { beard: true } }, 'createFace: appearance: unknown option "beard"'],
-      [{ motionResolution: 0.1 }, 'createFace: motionResolution must be a number within 0.25..1, got 0.1'],
-      [{ motionResolution: Number.NaN }, 'createFace: motionResolution must be a number within 0.25..1, got NaN'],
-      [{ motionResolution: '0.5' }, 'createFace: motionResolution must be a number within 0.25..1, got "0.5"'],
-      [{ slowDrawMs: -1 }, 'createFace: slowDrawMs must be a finite number of ms, at least 0, got -1'],
-      [{ slowDrawMs: Number.POSITIVE_INFINITY }, 'createFace: slowDrawMs must be a finite number of ms, at least 0, got Infinity'],
-      [{ autosave: ' ' }, 'createFace: autosave must be true, false or a key, got " "'],
+      [{ autosave: 1 }, 'createFace: autosave: expected true, false or a key, got 1'],
+      [{ appearance: { browDensity: 2 } }, 'createFace: appearance: browDensity: expected a number from 0 to 1, got 2'],
+      [{ appearance: { browColor: 'brown' } }, 'createFace: appearance: browColor: expected a colour "#rrggbb", got "brown"'],
+      [
+        { appearance: { beard: true } },
+        'createFace: appearance: expected one of the options brows, browColor, browDensity, lashes, lashColor, got "beard"',
+      ],
+      [{ motionResolution: 0.1 }, 'createFace: motionResolution: expected a number from 0.25 to 1, got 0.1'],
+      [{ motionResolution: Number.NaN }, 'createFace: motionResolution: expected a number from 0.25 to 1, got NaN'],
+      [{ motionResolution: '0.5' }, 'createFace: motionResolution: expected a number from 0.25 to 1, got "0.5"'],
+      [{ slowDrawMs: -1 }, 'createFace: slowDrawMs: expected a finite number of ms, at least 0, got -1'],
+      [{ slowDrawMs: Number.POSITIVE_INFINITY }, 'createFace: slowDrawMs: expected a finite number of ms, at least 0, got Infinity'],
+      [{ autosave: ' ' }, 'createFace: autosave: expected true, false or a key, got " "'],
     ];
     for (const [options, message] of cases) expect(() => checkFaceOptions(options), JSON.stringify(options)).toThrow(message);
-    expect(() => checkFaceOptions('low')).toThrow('createFace: needs an object of options, got "low"');
+    expect(() => checkFaceOptions('low')).toThrow('createFace: expected an object of options, got "low"');
   });
 });

@@ -118,11 +118,14 @@ describe('ExpressionState sliders', () => {
     const s = new ExpressionState();
     s.setActionUnit('AU4', 0.5);
     const before = s.getActionUnits();
-    expect(() => s.setActionUnit('AU99', 0.5)).toThrow(/unknown Action Unit id "AU99"/);
-    expect(() => s.setActionUnit('AU26L', 0.5)).toThrow(/unknown Action Unit id "AU26L"/); // midline: no sides
-    expect(() => s.setActionUnit('AU4', Number.NaN)).toThrow(/AU4 needs a finite number, got NaN/);
-    expect(() => s.setActionUnit('AU4L', Number.POSITIVE_INFINITY)).toThrow(/AU4L needs a finite number, got Infinity/);
-    expect(() => s.setActionUnit('AU4', '0.7' as unknown as number)).toThrow(/AU4 needs a finite number, got "0.7"/);
+    expect(() => s.setActionUnit('AU99', 0.5)).toThrow(
+      'setActionUnit: expected an Action Unit id like "AU12", "AU12L", "AU12R" or "AU17", got "AU99"',
+    );
+    // A midline unit has no sides.
+    expect(() => s.setActionUnit('AU26L', 0.5)).toThrow(/^setActionUnit: expected an Action Unit id like .*, got "AU26L"$/);
+    expect(() => s.setActionUnit('AU4', Number.NaN)).toThrow(/AU4: expected a finite number, got NaN/);
+    expect(() => s.setActionUnit('AU4L', Number.POSITIVE_INFINITY)).toThrow(/AU4L: expected a finite number, got Infinity/);
+    expect(() => s.setActionUnit('AU4', '0.7' as unknown as number)).toThrow(/AU4: expected a finite number, got "0.7"/);
     expect(s.getActionUnits()).toEqual(before);
     expect(s.effective()).toEqual(before);
   });
@@ -186,8 +189,8 @@ describe('ExpressionState presets', () => {
       { name: 'smile', source: 'test', weight: 1 },
       { name: 'grin-right', source: 'test', weight: 0 },
     ]);
-    expect(() => s.applyPreset('frown', 1)).toThrow(/unknown preset "frown"/);
-    expect(() => s.applyPreset('grin-right', Number.NaN)).toThrow(/grin-right needs a finite weight, got NaN/);
+    expect(() => s.applyPreset('frown', 1)).toThrow(/^applyPreset: expected one of the presets .*, got "frown"$/);
+    expect(() => s.applyPreset('grin-right', Number.NaN)).toThrow(/applyPreset: grin-right: expected a finite number, got NaN/);
     expect(s.listPresets().map((p) => p.weight)).toEqual([1, 0]);
     s.applyPreset('smile', -1);
     expect(s.effective().AU12L).toBe(0);

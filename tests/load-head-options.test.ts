@@ -13,17 +13,19 @@ describe('loadHead options', () => {
   });
 
   it('refuses a bad option, naming it and what it takes', () => {
-    expect(() => checkLoadHeadOptions({ units: 'inch' })).toThrow('loadHead: units must be one of auto, m, dm, cm, mm, got "inch"');
-    expect(() => checkLoadHeadOptions({ up: 'y' })).toThrow('loadHead: up must be one of auto, +x, -x, +y, -y, +z, -z, got "y"');
+    expect(() => checkLoadHeadOptions({ units: 'inch' })).toThrow('loadHead: units: expected one of auto, m, dm, cm, mm, got "inch"');
+    expect(() => checkLoadHeadOptions({ up: 'y' })).toThrow('loadHead: up: expected one of auto, +x, -x, +y, -y, +z, -z, got "y"');
     expect(() => checkLoadHeadOptions({ resolution: 'ultra' })).toThrow(
-      'loadHead: resolution must be one of low, medium, high, file, got "ultra"',
+      'loadHead: resolution: expected one of low, medium, high, file, got "ultra"',
     );
-    expect(() => checkLoadHeadOptions({ landmarks: { nose: [0, 0, 0] } })).toThrow('loadHead: landmarks: unknown landmark "nose"');
+    expect(() => checkLoadHeadOptions({ landmarks: { nose: [0, 0, 0] } })).toThrow(
+      /^loadHead: landmarks: expected one of the landmarks nose-tip, .*, got "nose"$/,
+    );
     expect(() => checkLoadHeadOptions({ landmarks: { chin: [0, Number.NaN, 0] } })).toThrow(
-      'loadHead: landmarks.chin must be [x, y, z] in metres, got [0,null,0]',
+      'loadHead: landmarks.chin: expected [x, y, z] in metres, got [0,NaN,0]',
     );
     expect(() => checkLoadHeadOptions({ scale: 2 })).toThrow(
-      'loadHead: unknown option "scale" (options: skin, units, up, forward, landmarks, resolution)',
+      'loadHead: expected one of the options skin, units, up, forward, landmarks, resolution, got "scale"',
     );
   });
 

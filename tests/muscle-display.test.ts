@@ -35,7 +35,7 @@ describe('muscle display', () => {
     expect(nextMuscleDisplay(a, { all: true })).toEqual({ all: true, actionUnits: ['AU6', 'AU12'] });
     expect(() => nextMuscleDisplay(a, { actionUnits: ['AU12', 'AU99'] })).toThrow(/"AU99"/);
     expect(() => nextMuscleDisplay(a, { actionUnits: ['AU12L'] })).toThrow(/"AU12L"/);
-    expect(() => nextMuscleDisplay(a, { all: 1 })).toThrow(/all needs a boolean/);
+    expect(() => nextMuscleDisplay(a, { all: 1 })).toThrow(/all: expected true or false/);
     expect(() => nextMuscleDisplay(a, { every: true })).toThrow(/"every"/);
     expect(() => nextMuscleDisplay(a, null)).toThrow();
     expect(a).toEqual({ all: false, actionUnits: ['AU6', 'AU12'] });

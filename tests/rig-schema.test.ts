@@ -186,7 +186,7 @@ describe('parseRig', () => {
 
   it('rejects what is not a rig document at all', () => {
     expect(() => parseRig(null)).toThrow('rig: expected a rig document (a JSON object), got null');
-    expect(() => parseRig([])).toThrow('rig: expected a rig document (a JSON object), got an array of 0 items');
+    expect(() => parseRig([])).toThrow('rig: expected a rig document (a JSON object), got []');
   });
 
   it('returns a copy, not the input', () => {

@@ -96,10 +96,10 @@ describe('stimulus lists', () => {
     fixed.stimuli.pop();
     expect(() => expandStimulusList(fixed, 'list.json')).toThrow(
       [
-        'list.json: stimuli[0].expression.AU99: unknown Action Unit or preset "AU99"',
-        'list.json: stimuli[1].light[0]: unknown option "keyColour" (options: ' +
-          'ambientIntensity, keyAzimuth, keyElevation, keyIntensity, keyColor)',
-        'list.json: stimuli[1].camera[0]: yaw must be within -180..180, got 400',
+        'list.json: stimuli[0].expression.AU99: expected an Action Unit or a preset, got "AU99"',
+        'list.json: stimuli[1].light[0]: expected one of the options ' +
+          'ambientIntensity, keyAzimuth, keyElevation, keyIntensity, keyColor, got "keyColour"',
+        'list.json: stimuli[1].camera[0]: yaw: expected a number from -180 to 180, got 400',
         'list.json: stimuli[1].name: a second stimulus named "a"',
         'list.json: stimuli[2]: expected either an expression (a PNG) or a timeline (a WebM)',
       ].join('\n'),

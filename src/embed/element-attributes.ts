@@ -1,3 +1,4 @@
+import { refusal } from '../core/check';
 import { readExpression, type HashExpression } from '../face/expression-hash';
 import { checkFaceOption, type Resolution, type SolverChoice } from '../face/face-options';
 
@@ -28,12 +29,8 @@ const ABSENT: Readonly<Record<FaceAttribute, string>> = Object.freeze({
   background: '#1d2024',
 });
 
-/** How messages about attributes start: `<soft-face>: resolution must be ...`. */
+/** How messages about attributes start: `<soft-face>: resolution: expected ...`. */
 const WHAT = '<soft-face>';
-
-function show(x: string): string {
-  return JSON.stringify(x);
-}
 
 /**
  * A boolean attribute: present (empty, or its own name) or `"true"` is on, absent or `"false"` is off; anything else
@@ -43,7 +40,7 @@ function readBoolean(name: string, value: string): boolean {
   const v = value.trim().toLowerCase();
   if (v === '' || v === 'true' || v === name) return true;
   if (v === 'false') return false;
-  throw new Error(`${WHAT}: ${name} must be present (on), "true" or "false", got ${show(value)}`);
+  throw refusal(WHAT, name, 'present (on), "true" or "false"', value);
 }
 
 /** `happiness:1`, or several: `happiness:0.5, surprise:0.3` (a name alone means weight 1). */
@@ -54,8 +51,7 @@ export function readPresets(value: string): HashExpression {
     const preset = colon < 0 ? entry : entry.slice(0, colon);
     const text = colon < 0 ? '1' : entry.slice(colon + 1);
     const weight = text.trim() === '' ? NaN : Number(text);
-    if (preset === '' || !Number.isFinite(weight))
-      throw new Error(`${WHAT}: preset ${show(entry)} must be a preset name and a weight, like "happiness:0.5"`);
+    if (preset === '' || !Number.isFinite(weight)) throw refusal(WHAT, 'preset', 'a preset name and a weight, like "happiness:0.5"', entry);
     out.presets[preset] = weight;
   }
   return out;

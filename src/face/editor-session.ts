@@ -1,3 +1,4 @@
+import { checkBoolean, checkChoice, checkNumber, checkOptions, type OptionRules } from '../core/check';
 import { newMuscle, type RigDocument } from '../core/rig/rig-document';
 import type { Muscle, Rig } from '../core/rig/rig-types';
 import type { GizmoMode, GizmoPart } from '../render/muscle-gizmo';
@@ -17,6 +18,16 @@ export interface BrushOptions {
   mode: 'off' | 'add' | 'remove';
   radius: number;
 }
+
+const BRUSH_DEFAULTS: Readonly<BrushOptions> = Object.freeze({ mode: 'off', radius: 0.006 });
+
+/** The brush's modes and its radius range in metres (the Muscle panel's slider shows it in mm). */
+export const BRUSH_RULES = Object.freeze({
+  choices: { mode: ['off', 'add', 'remove'] as const },
+  ranges: { radius: [0.001, 0.05] as const },
+}) satisfies OptionRules<BrushOptions>;
+
+const GIZMO_MODES: readonly GizmoMode[] = ['translate', 'rotate', 'scale'];
 
 /** The editor's state, as `describeEditor` reports it (read-only). */
 export interface EditorState {
@@ -85,7 +96,7 @@ export class EditorSession {
   private mode: GizmoMode = 'translate';
   private preview = 0;
   private mirror = false;
-  private brush: BrushOptions = { mode: 'off', radius: 0.006 };
+  private brush: BrushOptions = { ...BRUSH_DEFAULTS };
   private view: FaceEditorView | undefined;
   private doc: RigDocument | undefined;
   private original: Rig | undefined;
@@ -130,7 +141,7 @@ export class EditorSession {
   }
 
   setEnabled(on: boolean): void {
-    if (typeof on !== 'boolean') throw new Error(`setEditor: needs a boolean, got ${String(on)}`);
+    checkBoolean('setEditor', '', on);
     this.document();
     this.on = on;
     this.view?.setEnabled(on);
@@ -151,8 +162,7 @@ export class EditorSession {
   }
 
   setGizmoMode(mode: GizmoMode): void {
-    if (!['translate', 'rotate', 'scale'].includes(mode))
-      throw new Error(`setGizmoMode: expected "translate", "rotate" or "scale", got ${JSON.stringify(mode)}`);
+    checkChoice('setGizmoMode', '', mode, GIZMO_MODES);
     this.mode = mode;
     this.view?.setMode(mode);
   }
@@ -162,21 +172,19 @@ export class EditorSession {
     if (this.selected === null) throw new Error('setGizmoPart: no muscle is selected');
     const muscle = doc.muscle(this.selected);
     const parts = gizmoParts(muscle);
-    if (!parts.includes(part))
-      throw new Error(`setGizmoPart: a ${muscle.type} muscle has the parts ${parts.join(', ')}, got ${JSON.stringify(part)}`);
+    checkChoice('setGizmoPart', '', part, parts);
     this.view?.setPart(part);
   }
 
   setPreviewContraction(value: number): void {
-    if (typeof value !== 'number' || !Number.isFinite(value))
-      throw new Error(`setPreviewContraction: needs a finite number, got ${String(value)}`);
+    checkNumber('setPreviewContraction', '', value);
     this.document();
     this.preview = Math.min(1, Math.max(0, value));
     this.applyPreview();
   }
 
   setMirrorEdits(on: boolean): void {
-    if (typeof on !== 'boolean') throw new Error(`setMirrorEdits: needs a boolean, got ${String(on)}`);
+    checkBoolean('setMirrorEdits', '', on);
     this.mirror = on;
   }
 
@@ -185,14 +193,7 @@ export class EditorSession {
   }
 
   setBrush(partial: Partial<BrushOptions>): void {
-    const next = { ...this.brush, ...partial };
-    if (!['off', 'add', 'remove'].includes(next.mode))
-      throw new Error(`setBrush: mode must be "off", "add" or "remove", got ${JSON.stringify(next.mode)}`);
-    if (typeof next.radius !== 'number' || !(next.radius >= 0.001 && next.radius <= 0.05))
-      throw new Error(`setBrush: radius must be a number of metres from 0.001 to 0.05, got ${String(next.radius)}`);
-    for (const key of Object.keys(partial))
-      if (key !== 'mode' && key !== 'radius') throw new Error(`setBrush: unknown option ${JSON.stringify(key)}`);
-    this.brush = next;
+    this.brush = { ...this.brush, ...checkOptions<BrushOptions>('setBrush', partial, BRUSH_DEFAULTS, BRUSH_RULES) };
     this.view?.brushChanged();
   }
 

@@ -1,3 +1,4 @@
+import { checkNumber, refusal } from '../core/check';
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
 import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
 import type { FaceParts } from './face-parts';
@@ -68,11 +69,10 @@ export class ExpressionController {
    */
   setOverlay(ids: readonly string[], values: ArrayLike<number>): void {
     const expression = this.parts.expressed();
-    if (ids.length !== values.length) throw new Error(`setOverlay: ${ids.length} ids but ${values.length} values`);
+    if (ids.length !== values.length) throw refusal('setOverlay', 'values', `${ids.length} values, one per id`, values);
     for (let i = 0; i < ids.length; i++) {
-      if (!isActionUnitId(ids[i])) throw new Error(`setOverlay: unknown Action Unit id ${JSON.stringify(ids[i])}`);
-      if (typeof values[i] !== 'number' || !Number.isFinite(values[i]))
-        throw new Error(`setOverlay: ${ids[i]} needs a finite number, got ${String(values[i])}`);
+      if (!isActionUnitId(ids[i])) throw refusal('setOverlay', `ids[${i}]`, 'an Action Unit id like "AU43", "AU43L" or "AU43R"', ids[i]);
+      checkNumber('setOverlay', ids[i], values[i]);
     }
     expression.setOverlay(ids, values);
   }

@@ -3,6 +3,7 @@
  * embedding pages give to `createFace` and `<soft-face>`: `AU12L=0.5&AU12R=0.5&preset:happiness=0.3` (non-zero
  * values only; `URLSearchParams` writes the colon as `%3A`, and either form reads back; a leading `#` is optional).
  */
+import { refusal } from '../core/check';
 
 /** What the hash carries: Action Unit sliders by side id, and preset weights by name. */
 export interface HashExpression {
@@ -101,7 +102,7 @@ export function decodeTimeline(hash: string): string | null {
 export function readExpression(expression: string | ExpressionEntries, what = 'expression'): HashExpression {
   const out: HashExpression = { actionUnits: {}, presets: {} };
   const add = (key: string, value: number, given: unknown): void => {
-    if (!Number.isFinite(value)) throw new Error(`${what}: ${key} needs a finite number, got ${show(given)}`);
+    if (!Number.isFinite(value)) throw refusal(what, key, 'a finite number', given);
     if (key.startsWith(PRESET_PREFIX)) out.presets[key.slice(PRESET_PREFIX.length)] = value;
     else out.actionUnits[key] = value;
   };
@@ -112,7 +113,7 @@ export function readExpression(expression: string | ExpressionEntries, what = 'e
   } else if (typeof expression === 'object' && expression !== null && !Array.isArray(expression)) {
     for (const [key, value] of Object.entries(expression)) add(key, typeof value === 'number' ? value : NaN, value);
   } else {
-    throw new Error(`${what}: needs text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }, got ${show(expression)}`);
+    throw refusal(what, '', 'text like "AU12=0.8&preset:happiness=0.3" or an object like { AU12: 0.8 }', expression);
   }
   return out;
 }
@@ -122,10 +123,6 @@ export function expressionEntries(e: HashExpression): Record<string, number> {
   const out: Record<string, number> = { ...e.actionUnits };
   for (const [name, weight] of Object.entries(e.presets)) out[PRESET_PREFIX + name] = weight;
   return out;
-}
-
-function show(x: unknown): string {
-  return typeof x === 'string' ? JSON.stringify(x) : String(x);
 }
 
 /** Slider values have two decimals; four keep the link short without changing them. */

@@ -1,3 +1,4 @@
+import { checkBoolean } from '../core/check';
 import { checkEyeSimulationOptions, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 import type { FaceParts } from './face-parts';
 import type { EyeStats } from './face-ports';
@@ -13,7 +14,7 @@ export class EyesController {
    * the simulation's over its defaults, and it starts afresh; bad ones throw, naming the option, and change nothing.
    */
   setEyeSimulation(on: boolean, options?: Partial<EyeSimulationOptions>): void {
-    if (typeof on !== 'boolean') throw new Error(`setEyeSimulation: needs a boolean, got ${String(on)}`);
+    checkBoolean('setEyeSimulation', '', on);
     if (options !== undefined) checkEyeSimulationOptions(options, 'setEyeSimulation');
     this.parts.running();
     this.parts.eyeSimulation().setEnabled(on, options);

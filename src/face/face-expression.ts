@@ -1,3 +1,4 @@
+import { ACTION_UNIT_ID, checkNumber, refusal } from '../core/check';
 import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
 import type { Rig } from '../core/rig/rig-types';
 import type { HashExpression } from './expression-hash';
@@ -140,13 +141,11 @@ export class FaceExpression {
  */
 export function checkExpression(expression: HashExpression, presets: readonly string[], what: string): void {
   for (const [id, value] of Object.entries(expression.actionUnits)) {
-    if (!isActionUnitId(id))
-      throw new Error(`${what}: unknown Action Unit id ${JSON.stringify(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
-    if (!Number.isFinite(value)) throw new Error(`${what}: ${id} needs a finite number, got ${String(value)}`);
+    if (!isActionUnitId(id)) throw refusal(what, '', ACTION_UNIT_ID, id);
+    checkNumber(what, id, value);
   }
   for (const [name, weight] of Object.entries(expression.presets)) {
-    if (!presets.includes(name))
-      throw new Error(`${what}: unknown preset ${JSON.stringify(name)} (presets: ${presets.join(', ') || 'none'})`);
-    if (!Number.isFinite(weight)) throw new Error(`${what}: preset ${name} needs a finite weight, got ${String(weight)}`);
+    if (!presets.includes(name)) throw refusal(what, '', `one of the presets ${presets.join(', ') || '(none)'}`, name);
+    checkNumber(what, `preset:${name}`, weight);
   }
 }

@@ -1,12 +1,12 @@
 import type { Rig } from '../core/rig/rig-types';
 import type { ViewBackground } from '../render/view-options';
+import { checkObject, checkOptions, numberIn, refusal } from '../core/check';
 import type { SolverMode } from '../sim/shared/protocol';
 import {
   APPEARANCE_DEFAULTS,
   APPEARANCE_RANGES,
   LIGHT_DEFAULTS,
   LIGHT_RANGES,
-  checkOptions,
   type AppearanceOptions,
   type LightOptions,
 } from '../render/view-options';
@@ -99,13 +99,6 @@ const COLOUR = /^#[0-9a-f]{6}$/i;
 /** Allowed range of `motionResolution`: below a quarter the moving face turns to blocks. */
 const MOTION_RESOLUTION_RANGE = [0.25, 1] as const;
 
-function show(x: unknown): string {
-  if (typeof x === 'string') return JSON.stringify(x);
-  if (typeof x === 'function') return 'a function';
-  if (typeof x === 'object' && x !== null) return Array.isArray(x) ? 'an array' : 'an object';
-  return String(x);
-}
-
 function isUrl(x: unknown): x is string | URL {
   return (typeof x === 'string' && x.trim() !== '') || x instanceof URL;
 }
@@ -115,7 +108,7 @@ function isUrl(x: unknown): x is string | URL {
  * attribute of `<soft-face>` it came from) and names the option and the bad value.
  */
 export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unknown, what: string): Required<FaceOptions>[K] {
-  const bad = (expected: string): Error => new Error(`${what}: ${key} must be ${expected}, got ${show(value)}`);
+  const bad = (expected: string): Error => refusal(what, key, expected, value);
   switch (key) {
     case 'resolution':
       if (!RESOLUTIONS.includes(value as Resolution)) throw bad(`one of ${RESOLUTIONS.join(', ')}`);
@@ -132,7 +125,7 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
       break;
     case 'motionResolution':
       if (typeof value !== 'number' || !(value >= MOTION_RESOLUTION_RANGE[0] && value <= MOTION_RESOLUTION_RANGE[1])) {
-        throw bad(`a number within ${MOTION_RESOLUTION_RANGE[0]}..${MOTION_RESOLUTION_RANGE[1]}`);
+        throw bad(numberIn(MOTION_RESOLUTION_RANGE));
       }
       break;
     case 'slowDrawMs':
@@ -155,17 +148,17 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
       if (!(typeof value === 'boolean' || (typeof value === 'string' && value.trim() !== ''))) throw bad('true, false or a key');
       break;
     case 'light':
-      checkOptions<LightOptions>(`${what}: light`, value, LIGHT_DEFAULTS, LIGHT_RANGES);
+      checkOptions<LightOptions>(`${what}: light`, value, LIGHT_DEFAULTS, { ranges: LIGHT_RANGES });
       break;
     case 'appearance':
-      checkOptions<AppearanceOptions>(`${what}: appearance`, value, APPEARANCE_DEFAULTS, APPEARANCE_RANGES);
+      checkOptions<AppearanceOptions>(`${what}: appearance`, value, APPEARANCE_DEFAULTS, { ranges: APPEARANCE_RANGES });
       break;
     case 'expression':
       // Whether its ids and presets exist is checked against the rig, once it is loaded.
       readExpression(value as string, `${what}: expression`);
       break;
     default:
-      throw new Error(`${what}: unknown option ${show(key)} (options: ${Object.keys(FACE_DEFAULTS).join(', ')})`);
+      throw refusal(what, '', `one of the options ${Object.keys(FACE_DEFAULTS).join(', ')}`, key);
   }
   return value as Required<FaceOptions>[K];
 }
@@ -173,10 +166,9 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
 /** Checks every option given and fills in the defaults; throws naming the first bad one. */
 export function checkFaceOptions(options: unknown, what = 'createFace'): Required<FaceOptions> {
   if (options === undefined) return { ...FACE_DEFAULTS };
-  if (typeof options !== 'object' || options === null || Array.isArray(options))
-    throw new Error(`${what}: needs an object of options, got ${show(options)}`);
+  const given = checkObject(what, options);
   const out: Record<string, unknown> = { ...FACE_DEFAULTS };
-  for (const [key, value] of Object.entries(options)) {
+  for (const [key, value] of Object.entries(given)) {
     // Left out and undefined mean the same.
     if (value !== undefined) out[key] = checkFaceOption(key as keyof FaceOptions, value, what);
   }

@@ -1,3 +1,4 @@
+import { checkBoolean, checkObject, refusal } from '../core/check';
 import { MAX_EXPORT_FPS } from '../core/expression/morph-export';
 
 /** How far `exportGLTF` has come: targets solved so far of all, and the one it solves now (null once all are). */
@@ -44,32 +45,22 @@ export const GLTF_EXPORT_DEFAULTS: Readonly<Required<GLTFExportOptions>> = Objec
  */
 export function checkExportOptions(options: unknown, what = 'exportGLTF'): Required<GLTFExportOptions> {
   if (options === undefined) return { ...GLTF_EXPORT_DEFAULTS };
-  if (typeof options !== 'object' || options === null || Array.isArray(options))
-    throw new Error(`${what}: options must be an object, got ${String(options)}`);
-  for (const key of Object.keys(options))
-    if (!(key in GLTF_EXPORT_DEFAULTS)) throw new Error(`${what}: unknown option ${JSON.stringify(key)}`);
+  for (const key of Object.keys(checkObject(what, options)))
+    if (!(key in GLTF_EXPORT_DEFAULTS)) throw refusal(what, '', `one of the options ${Object.keys(GLTF_EXPORT_DEFAULTS).join(', ')}`, key);
   const o = { ...GLTF_EXPORT_DEFAULTS, ...(options as GLTFExportOptions) };
   for (const [key, list] of [
     ['actionUnits', o.actionUnits],
     ['presets', o.presets],
   ] as const) {
-    if (!Array.isArray(list) || !list.every((x) => typeof x === 'string'))
-      throw new Error(`${what}: ${key} must be an array of strings, got ${show(list)}`);
+    if (!Array.isArray(list) || !list.every((x) => typeof x === 'string')) throw refusal(what, key, 'an array of strings', list);
   }
-  if (o.timeline !== null && typeof o.timeline !== 'boolean')
-    throw new Error(`${what}: timeline must be a boolean, got ${show(o.timeline)}`);
+  if (o.timeline !== null && typeof o.timeline !== 'boolean') throw refusal(what, 'timeline', 'true or false', o.timeline);
   if (typeof o.fps !== 'number' || !Number.isFinite(o.fps) || o.fps <= 0 || o.fps > MAX_EXPORT_FPS)
-    throw new Error(`${what}: fps must be a number above 0 and at most ${MAX_EXPORT_FPS}, got ${show(o.fps)}`);
-  if (typeof o.binary !== 'boolean') throw new Error(`${what}: binary must be a boolean, got ${show(o.binary)}`);
+    throw refusal(what, 'fps', `a number above 0 and at most ${MAX_EXPORT_FPS}`, o.fps);
+  checkBoolean(what, 'binary', o.binary);
   if (typeof o.settleTimeoutMs !== 'number' || !(o.settleTimeoutMs > 0))
-    throw new Error(`${what}: settleTimeoutMs must be a positive number of ms, got ${show(o.settleTimeoutMs)}`);
-  if (o.onProgress !== null && typeof o.onProgress !== 'function')
-    throw new Error(`${what}: onProgress must be a function, got ${show(o.onProgress)}`);
-  if (o.signal !== null && !(o.signal instanceof AbortSignal))
-    throw new Error(`${what}: signal must be an AbortSignal, got ${show(o.signal)}`);
+    throw refusal(what, 'settleTimeoutMs', 'a positive number of ms', o.settleTimeoutMs);
+  if (o.onProgress !== null && typeof o.onProgress !== 'function') throw refusal(what, 'onProgress', 'a function', o.onProgress);
+  if (o.signal !== null && !(o.signal instanceof AbortSignal)) throw refusal(what, 'signal', 'an AbortSignal', o.signal);
   return { ...o, actionUnits: [...o.actionUnits], presets: [...o.presets] };
-}
-
-function show(x: unknown): string {
-  return typeof x === 'string' ? JSON.stringify(x) : Array.isArray(x) ? JSON.stringify(x) : String(x);
 }

@@ -1,3 +1,4 @@
+import { checkObject, refusal } from '../core/check';
 import {
   AXES,
   UNITS,
@@ -118,13 +119,10 @@ export class MissingLandmarksError extends Error {
 /** Checks `loadHead` options and fills in the defaults; throws naming the first bad one. */
 export function checkLoadHeadOptions(options: unknown): Required<LoadHeadOptions> {
   if (options === undefined || options === null) return { ...LOAD_HEAD_DEFAULTS };
-  if (typeof options !== 'object' || Array.isArray(options))
-    throw new Error(`loadHead: needs an object of options, got ${String(options)}`);
   const out: Record<string, unknown> = { ...LOAD_HEAD_DEFAULTS };
-  for (const [key, value] of Object.entries(options)) {
+  for (const [key, value] of Object.entries(checkObject('loadHead', options))) {
     if (value === undefined) continue;
-    const bad = (expected: string): Error =>
-      new Error(`loadHead: ${key} must be ${expected}, got ${JSON.stringify(value) ?? String(value)}`);
+    const bad = (expected: string): Error => refusal('loadHead', key, expected, value);
     switch (key) {
       case 'skin':
         if (value !== null && (typeof value !== 'string' || value === '')) throw bad('a mesh name');
@@ -145,14 +143,14 @@ export function checkLoadHeadOptions(options: unknown): Required<LoadHeadOptions
         if (typeof value !== 'object' || Array.isArray(value)) throw bad('an object of points');
         for (const [name, p] of Object.entries(value)) {
           if (!LANDMARK_NAMES.includes(name as LandmarkName))
-            throw new Error(`loadHead: landmarks: unknown landmark "${name}" (landmarks: ${LANDMARK_NAMES.join(', ')})`);
+            throw refusal('loadHead', 'landmarks', `one of the landmarks ${LANDMARK_NAMES.join(', ')}`, name);
           if (!Array.isArray(p) || p.length !== 3 || !p.every((x) => typeof x === 'number' && Number.isFinite(x))) {
-            throw new Error(`loadHead: landmarks.${name} must be [x, y, z] in metres, got ${JSON.stringify(p)}`);
+            throw refusal('loadHead', `landmarks.${name}`, '[x, y, z] in metres', p);
           }
         }
         break;
       default:
-        throw new Error(`loadHead: unknown option "${key}" (options: ${Object.keys(LOAD_HEAD_DEFAULTS).join(', ')})`);
+        throw refusal('loadHead', '', `one of the options ${Object.keys(LOAD_HEAD_DEFAULTS).join(', ')}`, key);
     }
     out[key] = value;
   }

@@ -1,3 +1,4 @@
+import { refusal } from '../core/check';
 import type { RigDocument, UpdateOptions } from '../core/rig/rig-document';
 import { parseRigText } from '../core/rig/rig-schema';
 import type { Muscle, Rig } from '../core/rig/rig-types';
@@ -22,7 +23,7 @@ export class RigController {
    * file's name, replaces `setRig` there) and changes nothing.
    */
   setRig(rig: string | Rig, source = 'setRig'): void {
-    if (typeof source !== 'string') throw new Error(`setRig: source must be a string, got ${String(source)}`);
+    if (typeof source !== 'string') throw refusal('setRig', 'source', 'a string', source);
     const doc = this.document();
     doc.replace(typeof rig === 'string' ? parseRigText(rig, source) : rig, source);
   }

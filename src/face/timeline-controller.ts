@@ -1,3 +1,4 @@
+import { checkNumber, refusal } from '../core/check';
 import type { Timeline } from '../core/timeline/timeline';
 import { parseTimeline, parseTimelineText } from '../core/timeline/timeline-schema';
 import type { FaceParts } from './face-parts';
@@ -14,7 +15,7 @@ export class TimelineController {
    * and changes nothing. While it plays or is sought it sets the sliders and presets it names; the rest stay.
    */
   setTimeline(timeline: string | object, source = 'setTimeline'): void {
-    if (typeof source !== 'string') throw new Error(`setTimeline: source must be a string, got ${String(source)}`);
+    if (typeof source !== 'string') throw refusal('setTimeline', 'source', 'a string', source);
     const player = this.parts.timeline();
     const options = {
       presets: this.parts
@@ -59,8 +60,7 @@ export class TimelineController {
    */
   seek(seconds: number): void {
     const player = this.parts.timeline();
-    if (typeof seconds !== 'number' || !Number.isFinite(seconds))
-      throw new Error(`seek: needs a finite number of seconds, got ${String(seconds)}`);
+    checkNumber('seek', '', seconds);
     if (!player.timeline()) throw new Error('seek: no timeline is loaded (setTimeline first)');
     player.seek(seconds);
     this.parts.emit('timeline');

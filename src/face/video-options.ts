@@ -1,4 +1,5 @@
 /** The options of `face.recordVideo`, checked at the boundary. */
+import { checkChoice, checkNumber, checkObject, refusal } from '../core/check';
 
 /** What a recording is saved as: a WebM video (VP9, or VP8 where VP9 cannot be encoded) or a zip of PNG frames. */
 export type VideoFormat = 'webm' | 'png-zip';
@@ -51,32 +52,28 @@ const FORMATS: readonly VideoFormat[] = ['webm', 'png-zip'];
 
 /** Fills in the defaults and checks every option; a bad one throws naming it (`recordVideo: fps: ...`). */
 export function checkVideoOptions(options: VideoOptions): Required<VideoOptions> {
-  if (typeof options !== 'object' || options === null) throw new Error(`recordVideo: options must be an object, got ${String(options)}`);
-  for (const name of Object.keys(options)) {
-    if (!(name in VIDEO_DEFAULTS))
-      throw new Error(`recordVideo: unknown option "${name}" (known: ${Object.keys(VIDEO_DEFAULTS).join(', ')})`);
+  for (const name of Object.keys(checkObject('recordVideo', options))) {
+    if (!(name in VIDEO_DEFAULTS)) throw refusal('recordVideo', '', `one of the options ${Object.keys(VIDEO_DEFAULTS).join(', ')}`, name);
   }
   const o: Required<VideoOptions> = { ...VIDEO_DEFAULTS };
   for (const [name, value] of Object.entries(options)) if (value !== undefined) (o as Record<string, unknown>)[name] = value;
-  number('fps', o.fps, 1, 120, false);
-  number('width', o.width, 16, MAX_VIDEO_SIZE, true);
-  number('height', o.height, 16, MAX_VIDEO_SIZE, true);
+  checkNumber('recordVideo', 'fps', o.fps, [1, 120]);
+  checkNumber('recordVideo', 'width', o.width, [16, MAX_VIDEO_SIZE], true);
+  checkNumber('recordVideo', 'height', o.height, [16, MAX_VIDEO_SIZE], true);
   // The encoders take 4:2:0 pictures, whose colour planes are half the size each way.
-  if (o.width % 2 !== 0) throw new Error(`recordVideo: width: must be even, got ${o.width}`);
-  if (o.height % 2 !== 0) throw new Error(`recordVideo: height: must be even, got ${o.height}`);
-  number('seconds', o.seconds, 0, MAX_VIDEO_SECONDS, false);
-  number('solverFramesPerVideoFrame', o.solverFramesPerVideoFrame, 1, 100, true);
-  number('bitrate', o.bitrate, 10_000, 100_000_000, false);
-  if (!FORMATS.includes(o.format))
-    throw new Error(`recordVideo: format: expected one of ${FORMATS.join(', ')}, got ${JSON.stringify(o.format)}`);
+  if (o.width % 2 !== 0) throw refusal('recordVideo', 'width', 'an even number', o.width);
+  if (o.height % 2 !== 0) throw refusal('recordVideo', 'height', 'an even number', o.height);
+  checkNumber('recordVideo', 'seconds', o.seconds, [0, MAX_VIDEO_SECONDS]);
+  checkNumber('recordVideo', 'solverFramesPerVideoFrame', o.solverFramesPerVideoFrame, [1, 100], true);
+  checkNumber('recordVideo', 'bitrate', o.bitrate, [10_000, 100_000_000]);
+  checkChoice('recordVideo', 'format', o.format, FORMATS);
   if (o.timeline !== null && typeof o.timeline !== 'string' && typeof o.timeline !== 'object') {
-    throw new Error(`recordVideo: timeline: expected a timeline document (JSON text or object) or null, got ${String(o.timeline)}`);
+    throw refusal('recordVideo', 'timeline', 'a timeline document (JSON text or object) or null', o.timeline);
   }
   if (o.signal !== null && !(typeof o.signal === 'object' && typeof (o.signal as AbortSignal).throwIfAborted === 'function')) {
-    throw new Error(`recordVideo: signal: expected an AbortSignal, got ${String(o.signal)}`);
+    throw refusal('recordVideo', 'signal', 'an AbortSignal', o.signal);
   }
-  if (o.onProgress !== null && typeof o.onProgress !== 'function')
-    throw new Error(`recordVideo: onProgress: expected a function, got ${String(o.onProgress)}`);
+  if (o.onProgress !== null && typeof o.onProgress !== 'function') throw refusal('recordVideo', 'onProgress', 'a function', o.onProgress);
   return o;
 }
 
@@ -84,12 +81,4 @@ export function checkVideoOptions(options: VideoOptions): Required<VideoOptions>
 export function videoFrameCount(seconds: number, fps: number): number {
   // A hair under a whole step counts as one (2 s at 10 fps is 20 frames, not 19 for a float's rounding).
   return Math.max(1, Math.ceil(seconds * fps - 1e-9));
-}
-
-function number(name: string, value: unknown, min: number, max: number, integer: boolean): void {
-  if (typeof value !== 'number' || !Number.isFinite(value) || value < min || value > max || (integer && !Number.isInteger(value))) {
-    throw new Error(
-      `recordVideo: ${name}: expected ${integer ? 'a whole number' : 'a number'} from ${min} to ${max}, got ${String(value)}`,
-    );
-  }
 }

@@ -1,3 +1,4 @@
+import { checkNumber } from '../core/check';
 import type { HairSnapshot } from '../render/hair-view';
 import type { RenderTiming } from '../render/render-timing';
 import type { MaterialDescription } from '../render/materials';
@@ -118,8 +119,7 @@ export class ViewController {
 
   /** Renders `frames` frames (default 100) back to back and reports their main-thread time (a benchmark: it blocks the page). */
   measureRender(frames = 100): RenderTiming {
-    if (!Number.isInteger(frames) || frames < 1 || frames > 10_000)
-      throw new Error(`measureRender: frames must be an integer within 1..10000, got ${String(frames)}`);
+    checkNumber('measureRender', 'frames', frames, [1, 10_000], true);
     return this.parts.shown().measureRender(frames);
   }
 

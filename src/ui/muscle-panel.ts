@@ -3,6 +3,7 @@ import type { Controller } from 'lil-gui';
 import { ACTION_UNITS } from '../core/expression/facs';
 import type { Muscle } from '../core/rig/rig-types';
 import { gizmoParts, type FaceChange, type FaceHandle } from '../face/face-handle';
+import { BRUSH_RULES } from '../face/editor-session';
 
 /** Number fields by muscle type: key, label, min, max, step. Vectors get one field per axis. */
 const SCALARS: Record<Muscle['type'], [string, string, number, number, number][]> = {
@@ -164,14 +165,14 @@ export class MusclePanel {
     s.clearBrush = () => this.apply(() => this.face.updateMuscle(this.shown!, { brush: undefined }));
     this.add(
       f
-        .add(s, 'brushMode', ['off', 'add', 'remove'])
+        .add(s, 'brushMode', BRUSH_RULES.choices.mode)
         .name('vertex brush')
         .onChange((v: 'off' | 'add' | 'remove') => this.face.setBrush({ mode: v })),
       'brush-mode',
     );
     this.add(
       f
-        .add(s, 'brushRadius', 1, 50, 0.5)
+        .add(s, 'brushRadius', BRUSH_RULES.ranges.radius[0] * 1000, BRUSH_RULES.ranges.radius[1] * 1000, 0.5)
         .name('brush radius mm')
         .onChange((v: number) => this.face.setBrush({ radius: v / 1000 })),
       'brush-radius',

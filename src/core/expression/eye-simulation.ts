@@ -3,6 +3,7 @@
  * still for a while and then moved quickly (a saccade) to a random target, and the lid Action Unit shares that
  * follow from both. No DOM, no three.js, no allocation once constructed: a driver calls `advance` every frame.
  */
+import { checkOptions, refusal } from '../check';
 import { mulberry32 } from '../random';
 
 /** Timing, range and lid options of the eye simulation; times in ms, angles in degrees. */
@@ -83,19 +84,8 @@ const OPTION_RANGES: Readonly<Record<keyof EyeSimulationOptions, readonly [numbe
  * the options; throws `<where>: <option>: expected …, got …` otherwise.
  */
 export function checkEyeSimulationOptions(value: unknown, where: string): Partial<EyeSimulationOptions> {
-  if (typeof value !== 'object' || value === null || Array.isArray(value))
-    throw new Error(`${where}: expected an object of eye simulation options, got ${Array.isArray(value) ? 'an array' : String(value)}`);
-  const names = Object.keys(OPTION_RANGES);
-  for (const [key, v] of Object.entries(value)) {
-    const range = OPTION_RANGES[key as keyof EyeSimulationOptions];
-    if (!range) throw new Error(`${where}: unknown option "${key}" (options: ${names.join(', ')})`);
-    const integer = key === 'seed';
-    if (typeof v !== 'number' || !Number.isFinite(v) || v < range[0] || v > range[1] || (integer && !Number.isInteger(v)))
-      throw new Error(
-        `${where}: ${key}: expected ${integer ? 'an integer' : 'a number'} from ${range[0]} to ${range[1]}, got ${String(v)}`,
-      );
-  }
-  const o = { ...EYE_SIMULATION_DEFAULTS, ...(value as Partial<EyeSimulationOptions>) };
+  const given = checkOptions<EyeSimulationOptions>(where, value, EYE_SIMULATION_DEFAULTS, { ranges: OPTION_RANGES, integers: ['seed'] });
+  const o = { ...EYE_SIMULATION_DEFAULTS, ...given };
   for (const [min, max] of [
     ['blinkIntervalMin', 'blinkIntervalMax'],
     ['holdMin', 'holdMax'],
@@ -103,11 +93,11 @@ export function checkEyeSimulationOptions(value: unknown, where: string): Partia
     ['yawMin', 'yawMax'],
     ['pitchMin', 'pitchMax'],
   ] as const)
-    if (o[min] > o[max]) throw new Error(`${where}: ${min}: expected at most ${max} (${o[max]}), got ${o[min]}`);
+    if (o[min] > o[max]) throw refusal(where, min, `at most ${max} (${o[max]})`, o[min]);
   const blink = o.blinkClose + o.blinkHold + o.blinkOpen + o.saccadeMax;
   if (!(o.blinkIntervalMin > blink))
-    throw new Error(`${where}: blinkIntervalMin: expected more than a blink and a saccade (${blink} ms), got ${o.blinkIntervalMin}`);
-  return value as Partial<EyeSimulationOptions>;
+    throw refusal(where, 'blinkIntervalMin', `more than a blink and a saccade (${blink} ms)`, o.blinkIntervalMin);
+  return given;
 }
 
 /** A small seeded generator (mulberry32): uniform numbers in [0, 1), the same sequence for the same seed. */

@@ -3,6 +3,7 @@
  * the expression state that turns Action Unit sliders and preset weights into muscle contractions. Pure: no DOM.
  */
 
+import { ACTION_UNIT_ID, checkNumber, refusal, show } from '../check';
 import type { PresetDefinition, Rig } from '../rig/rig-types';
 
 /** An Action Unit of the catalogue: id `AU12`, its FACS number and name, and whether each side is set on its own. */
@@ -127,10 +128,6 @@ interface ContractionPlan {
 /** Rigs are treated as immutable once parsed, so a plan is built once per rig object. */
 const plans = new WeakMap<Rig, ContractionPlan>();
 
-function show(x: unknown): string {
-  return typeof x === 'string' ? JSON.stringify(x) : String(x);
-}
-
 function clamp01(x: number): number {
   return x < 0 ? 0 : x > 1 ? 1 : x;
 }
@@ -168,9 +165,8 @@ export class ExpressionState {
   /** Sets a slider (clamped to 0..1): `AU12` sets both sides, `AU12L` / `AU12R` one, `AU17` a midline unit. */
   setActionUnit(id: string, value: number): void {
     const slots = SLOTS_OF.get(id);
-    if (!slots) throw new Error(`setActionUnit: unknown Action Unit id ${show(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`);
-    if (typeof value !== 'number' || !Number.isFinite(value))
-      throw new Error(`setActionUnit: ${id} needs a finite number, got ${show(value)}`);
+    if (!slots) throw refusal('setActionUnit', '', ACTION_UNIT_ID, id);
+    checkNumber('setActionUnit', id, value);
     for (const s of slots) this.sliders[s] = clamp01(value);
     this.dirty = true;
   }
@@ -181,9 +177,8 @@ export class ExpressionState {
    */
   setOverlay(id: string, value: number): boolean {
     const slots = SLOTS_OF.get(id);
-    if (!slots) throw new Error(`setOverlay: unknown Action Unit id ${show(id)} (expected e.g. "AU43", "AU43L" or "AU43R")`);
-    if (typeof value !== 'number' || !Number.isFinite(value))
-      throw new Error(`setOverlay: ${id} needs a finite number, got ${show(value)}`);
+    if (!slots) throw refusal('setOverlay', '', 'an Action Unit id like "AU43", "AU43L" or "AU43R"', id);
+    checkNumber('setOverlay', id, value);
     const v = clamp01(value);
     let changed = false;
     for (let i = 0; i < slots.length; i++) {
@@ -229,10 +224,8 @@ export class ExpressionState {
   /** Sets a preset's weight (clamped to 0..1; 0 turns it off). */
   applyPreset(name: string, weight: number): void {
     const index = this.presets.findIndex((p) => p.name === name);
-    if (index < 0)
-      throw new Error(`applyPreset: unknown preset ${show(name)} (presets: ${this.presets.map((p) => p.name).join(', ') || 'none'})`);
-    if (typeof weight !== 'number' || !Number.isFinite(weight))
-      throw new Error(`applyPreset: ${name} needs a finite weight, got ${show(weight)}`);
+    if (index < 0) throw refusal('applyPreset', '', `one of the presets ${this.presets.map((p) => p.name).join(', ') || '(none)'}`, name);
+    checkNumber('applyPreset', name, weight);
     this.presetWeights[index] = clamp01(weight);
     this.dirty = true;
   }

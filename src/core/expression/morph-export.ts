@@ -3,6 +3,7 @@
  * own at full strength) and a timeline turned into morph weights over time. Pure: no DOM, no three.
  */
 
+import { ACTION_UNIT_ID, refusal } from '../check';
 import { isActionUnitId } from './facs';
 import {
   createTimelineSample,
@@ -48,17 +49,14 @@ export function planTargets(
   const targets: MorphTarget[] = [];
   const names = new Set<string>();
   for (const id of actionUnits) {
-    if (typeof id !== 'string' || !isActionUnitId(id))
-      throw new Error(
-        `${what}: actionUnits: unknown Action Unit id ${JSON.stringify(id)} (expected e.g. "AU12", "AU12L", "AU12R" or "AU17")`,
-      );
+    if (typeof id !== 'string' || !isActionUnitId(id)) throw refusal(what, 'actionUnits', ACTION_UNIT_ID, id);
     if (names.has(id)) throw new Error(`${what}: actionUnits: ${id} is listed twice`);
     names.add(id);
     targets.push({ name: id, kind: 'actionUnit', id });
   }
   for (const name of presets) {
     if (typeof name !== 'string' || !known.includes(name))
-      throw new Error(`${what}: presets: unknown preset ${JSON.stringify(name)} (presets: ${known.join(', ') || 'none'})`);
+      throw refusal(what, 'presets', `one of the presets ${known.join(', ') || '(none)'}`, name);
     // A preset's target takes the preset's name: it must not be taken for an Action Unit's.
     if (isActionUnitId(name)) throw new Error(`${what}: presets: the preset ${JSON.stringify(name)} is named like an Action Unit`);
     if (names.has(name)) throw new Error(`${what}: presets: ${name} is listed twice`);
@@ -121,7 +119,7 @@ export function timelineTargets(timeline: Timeline): MorphTarget[] {
  */
 export function timelineWeights(timeline: Timeline, targets: readonly MorphTarget[], fps: number): MorphWeights {
   if (typeof fps !== 'number' || !Number.isFinite(fps) || fps <= 0 || fps > MAX_EXPORT_FPS)
-    throw new Error(`fps must be a number above 0 and at most ${MAX_EXPORT_FPS}, got ${String(fps)}`);
+    throw refusal('timelineWeights', 'fps', `a number above 0 and at most ${MAX_EXPORT_FPS}`, fps);
   const duration = timelineDuration(timeline);
   const sample = createTimelineSample(timeline);
   // Only the targets the timeline itself needs move: an `AU12` asked for beside a timeline of `AU12L` stays at 0,

@@ -3,6 +3,7 @@
  * state, the muscle view draws it.
  */
 
+import { checkBoolean, refusal } from '../check';
 import { ACTION_UNITS } from '../expression/facs';
 import type { Rig } from './rig-types';
 
@@ -23,26 +24,20 @@ const CATALOGUE_ORDER: ReadonlyMap<string, number> = new Map(ACTION_UNITS.map((a
 export function nextMuscleDisplay(current: MuscleDisplay, partial: unknown): MuscleDisplay {
   const where = 'setMuscleDisplay';
   if (typeof partial !== 'object' || partial === null || Array.isArray(partial))
-    throw new Error(`${where}: needs an object like { all: true } or { actionUnits: ["AU12"] }, got ${String(partial)}`);
+    throw refusal(where, '', 'an object like { all: true } or { actionUnits: ["AU12"] }', partial);
   const p = partial as Record<string, unknown>;
   for (const key of Object.keys(p))
-    if (key !== 'all' && key !== 'actionUnits')
-      throw new Error(`${where}: unknown option ${JSON.stringify(key)} (expected "all" or "actionUnits")`);
+    if (key !== 'all' && key !== 'actionUnits') throw refusal(where, '', 'one of the options all, actionUnits', key);
   let all = current.all;
   if (p.all !== undefined) {
-    if (typeof p.all !== 'boolean') throw new Error(`${where}: all needs a boolean, got ${String(p.all)}`);
-    all = p.all;
+    all = checkBoolean(where, 'all', p.all);
   }
   let actionUnits = current.actionUnits;
   if (p.actionUnits !== undefined) {
-    if (!Array.isArray(p.actionUnits))
-      throw new Error(`${where}: actionUnits needs an array of Action Unit ids, got ${String(p.actionUnits)}`);
+    if (!Array.isArray(p.actionUnits)) throw refusal(where, 'actionUnits', 'an array of Action Unit ids', p.actionUnits);
     for (const id of p.actionUnits as unknown[]) {
       if (typeof id !== 'string' || !CATALOGUE_ORDER.has(id)) {
-        throw new Error(
-          `${where}: unknown Action Unit id ${typeof id === 'string' ? JSON.stringify(id) : String(id)} ` +
-            `(expected one like "AU12", without a side)`,
-        );
+        throw refusal(where, 'actionUnits', 'Action Unit ids like "AU12", without a side', id);
       }
     }
     actionUnits = [...new Set(p.actionUnits as string[])].sort((a, b) => CATALOGUE_ORDER.get(a)! - CATALOGUE_ORDER.get(b)!);

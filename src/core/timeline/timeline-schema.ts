@@ -7,7 +7,8 @@
 import * as v from 'valibot';
 import { isActionUnitId } from '../expression/facs';
 import { jsonSyntaxMessage, utf8Length } from '../rig/json-text';
-import { pathStep, problemOf, show as showValue, type RigProblem } from '../rig/rig-problems';
+import { ACTION_UNIT_ID, show as showValue } from '../check';
+import { pathStep, problemOf, type RigProblem } from '../rig/rig-problems';
 import { EASINGS, PRESET_TARGET_PREFIX, TIMELINE_FORMAT, TIMELINE_VERSION, type Timeline } from './timeline';
 
 /** Largest timeline document `parseTimelineText` accepts, in bytes of UTF-8. */
@@ -266,10 +267,10 @@ function targetProblem(name: string, presets: readonly string[] | null): string 
   if (name.startsWith(PRESET_TARGET_PREFIX)) {
     const preset = name.slice(PRESET_TARGET_PREFIX.length);
     if (preset === '') return 'expected a preset name after "preset:"';
-    if (presets && !presets.includes(preset)) return `unknown preset ${JSON.stringify(preset)} (presets: ${presets.join(', ') || 'none'})`;
+    if (presets && !presets.includes(preset))
+      return `expected one of the presets ${presets.join(', ') || '(none)'}, got ${showValue(preset)}`;
     return undefined;
   }
-  if (!isActionUnitId(name))
-    return `unknown Action Unit id ${JSON.stringify(name)} (expected e.g. "AU12", "AU12L", "AU12R", "AU17" or "preset:<name>")`;
+  if (!isActionUnitId(name)) return `expected ${ACTION_UNIT_ID} or "preset:<name>", got ${showValue(name)}`;
   return undefined;
 }
