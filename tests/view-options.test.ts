@@ -1,14 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import {
-  LIGHT_DEFAULTS,
-  LIGHT_RANGES,
-  RENDER_DEFAULTS,
-  checkOptions,
-  type LightOptions,
-  type RenderOptions,
-} from '../src/render/view-options';
+import { checkOptions } from '../src/core/check';
+import { LIGHT_DEFAULTS, LIGHT_RANGES, RENDER_DEFAULTS, type LightOptions, type RenderOptions } from '../src/render/view-options';
 
-const light = (partial: unknown): Partial<LightOptions> => checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, LIGHT_RANGES);
+const light = (partial: unknown): Partial<LightOptions> =>
+  checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, { ranges: LIGHT_RANGES });
 const render = (partial: unknown): Partial<RenderOptions> => checkOptions<RenderOptions>('setRenderOptions', partial, RENDER_DEFAULTS);
 
 describe('light and render option checks', () => {
@@ -23,15 +18,19 @@ describe('light and render option checks', () => {
     expect(light({})).toEqual({});
   });
 
-  it('name the method and the bad key or value', () => {
-    expect(() => light({ keyAzimuth: -1 })).toThrow('setLight: keyAzimuth must be within 0..360, got -1');
-    expect(() => light({ keyIntensity: Number.POSITIVE_INFINITY })).toThrow('setLight: keyIntensity needs a finite number, got Infinity');
-    expect(() => light({ colour: '#ffffff' })).toThrow('setLight: unknown option "colour"');
-    expect(() => light({ keyColor: '#fff' })).toThrow('setLight: keyColor needs a colour "#rrggbb", got "#fff"');
-    expect(() => light({ keyColor: 0xffffff })).toThrow('setLight: keyColor needs a string, got 16777215');
-    expect(() => light([1])).toThrow('setLight: needs an object of options');
-    expect(() => render({ showEyes: 'yes' })).toThrow('setRenderOptions: showEyes needs a boolean, got "yes"');
-    expect(() => render(undefined)).toThrow('setRenderOptions: needs an object of options, got undefined');
+  it('name the method and the bad key or value as "<what>: <path>: expected ..., got ..."', () => {
+    expect(() => light({ keyAzimuth: -1 })).toThrow('setLight: keyAzimuth: expected a number from 0 to 360, got -1');
+    expect(() => light({ keyIntensity: Number.POSITIVE_INFINITY })).toThrow(
+      'setLight: keyIntensity: expected a number from 0 to 10, got Infinity',
+    );
+    expect(() => light({ colour: '#ffffff' })).toThrow(
+      'setLight: expected one of the options ambientIntensity, keyAzimuth, keyElevation, keyIntensity, keyColor, got "colour"',
+    );
+    expect(() => light({ keyColor: '#fff' })).toThrow('setLight: keyColor: expected a colour "#rrggbb", got "#fff"');
+    expect(() => light({ keyColor: 0xffffff })).toThrow('setLight: keyColor: expected a colour "#rrggbb", got 16777215');
+    expect(() => light([1])).toThrow('setLight: expected an object of options, got an array of 1 item');
+    expect(() => render({ showEyes: 'yes' })).toThrow('setRenderOptions: showEyes: expected true or false, got "yes"');
+    expect(() => render(undefined)).toThrow('setRenderOptions: expected an object of options, got nothing');
   });
 
   it('defaults sit inside their ranges', () => {

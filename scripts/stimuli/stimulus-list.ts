@@ -15,10 +15,10 @@ import {
   CAMERA_RANGES,
   LIGHT_DEFAULTS,
   LIGHT_RANGES,
-  checkOptions,
   type CameraOptions,
   type LightOptions,
 } from '../../src/render/view-options';
+import { checkOptions } from '../../src/core/check';
 
 export const STIMULI_FORMAT = 'softface-stimuli';
 export const STIMULI_VERSION = 1;
@@ -176,14 +176,14 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
     const cameras = list(merged.camera, [{}]);
     lights.forEach((l, k) => {
       try {
-        checkOptions<LightOptions>('light', l, LIGHT_DEFAULTS, LIGHT_RANGES);
+        checkOptions<LightOptions>('light', l, LIGHT_DEFAULTS, { ranges: LIGHT_RANGES });
       } catch (error) {
         problems.push({ path: at('light', k), message: (error as Error).message.replace(/^light: /, '') });
       }
     });
     cameras.forEach((c, k) => {
       try {
-        checkOptions<CameraOptions>('camera', c, CAMERA_DEFAULTS, CAMERA_RANGES);
+        checkOptions<CameraOptions>('camera', c, CAMERA_DEFAULTS, { ranges: CAMERA_RANGES });
       } catch (error) {
         problems.push({ path: at('camera', k), message: (error as Error).message.replace(/^camera: /, '') });
       }

@@ -1,12 +1,12 @@
 import type { Rig } from '../core/rig/rig-types';
 import type { ViewBackground } from '../render/view-options';
+import { checkOptions } from '../core/check';
 import type { SolverMode } from '../sim/shared/protocol';
 import {
   APPEARANCE_DEFAULTS,
   APPEARANCE_RANGES,
   LIGHT_DEFAULTS,
   LIGHT_RANGES,
-  checkOptions,
   type AppearanceOptions,
   type LightOptions,
 } from '../render/view-options';
@@ -155,10 +155,10 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
       if (!(typeof value === 'boolean' || (typeof value === 'string' && value.trim() !== ''))) throw bad('true, false or a key');
       break;
     case 'light':
-      checkOptions<LightOptions>(`${what}: light`, value, LIGHT_DEFAULTS, LIGHT_RANGES);
+      checkOptions<LightOptions>(`${what}: light`, value, LIGHT_DEFAULTS, { ranges: LIGHT_RANGES });
       break;
     case 'appearance':
-      checkOptions<AppearanceOptions>(`${what}: appearance`, value, APPEARANCE_DEFAULTS, APPEARANCE_RANGES);
+      checkOptions<AppearanceOptions>(`${what}: appearance`, value, APPEARANCE_DEFAULTS, { ranges: APPEARANCE_RANGES });
       break;
     case 'expression':
       // Whether its ids and presets exist is checked against the rig, once it is loaded.

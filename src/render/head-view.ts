@@ -24,7 +24,6 @@ import {
   APPEARANCE_DEFAULTS,
   APPEARANCE_RANGES,
   RENDER_DEFAULTS,
-  checkOptions,
   type AppearanceOptions,
   type CameraOptions,
   type LightOptions,
@@ -33,6 +32,7 @@ import {
   type HeadViewOptions,
   type ViewBackground,
 } from './view-options';
+import { checkOptions } from '../core/check';
 import { disposeTree } from './dispose-tree';
 
 /**
@@ -215,7 +215,10 @@ export class HeadView {
 
   /** Changes some appearance options (the hair's colours, density and switches); throws, changing nothing, on bad input. */
   setAppearance(partial: Partial<AppearanceOptions>): void {
-    Object.assign(this.appearance, checkOptions<AppearanceOptions>('setAppearance', partial, APPEARANCE_DEFAULTS, APPEARANCE_RANGES));
+    Object.assign(
+      this.appearance,
+      checkOptions<AppearanceOptions>('setAppearance', partial, APPEARANCE_DEFAULTS, { ranges: APPEARANCE_RANGES }),
+    );
     this.head?.hair?.setAppearance(this.appearance);
     this.invalidate();
   }

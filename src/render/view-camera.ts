@@ -1,7 +1,8 @@
 import { type Box3, type Matrix4, PerspectiveCamera, Vector3 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { boxCentre } from './head-model';
-import { CAMERA_DEFAULTS, CAMERA_RANGES, checkOptions, type CameraOptions } from './view-options';
+import { CAMERA_DEFAULTS, CAMERA_RANGES, type CameraOptions } from './view-options';
+import { checkOptions } from '../core/check';
 
 const DEGREES = Math.PI / 180;
 /** Camera updates allowed for the orbit controls' damping to come to rest (before a capture's first picture). */
@@ -54,7 +55,7 @@ export class ViewCamera {
 
   /** Places the camera by some CameraOptions; throws, changing nothing, on an unknown option or a bad value. */
   set(partial: Partial<CameraOptions>): void {
-    const checked = checkOptions<CameraOptions>('setCamera', partial, CAMERA_DEFAULTS, CAMERA_RANGES);
+    const checked = checkOptions<CameraOptions>('setCamera', partial, CAMERA_DEFAULTS, { ranges: CAMERA_RANGES });
     this.place({ ...this.options(), ...checked });
   }
 

@@ -1,5 +1,6 @@
 import { DirectionalLight, HemisphereLight, type Scene, Vector3 } from 'three';
-import { LIGHT_DEFAULTS, LIGHT_RANGES, checkOptions, type LightOptions } from './view-options';
+import { LIGHT_DEFAULTS, LIGHT_RANGES, type LightOptions } from './view-options';
+import { checkOptions } from '../core/check';
 
 const DEGREES = Math.PI / 180;
 /** How far the key light sits from the head's centre, in metres (a directional light: only its direction counts). */
@@ -22,7 +23,7 @@ export class ViewLights {
 
   /** Changes some light options; throws, changing nothing, on an unknown option or a value of the wrong type or range. */
   set(partial: Partial<LightOptions>): void {
-    Object.assign(this.light, checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, LIGHT_RANGES));
+    Object.assign(this.light, checkOptions<LightOptions>('setLight', partial, LIGHT_DEFAULTS, { ranges: LIGHT_RANGES }));
     this.apply();
   }
 

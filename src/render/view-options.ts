@@ -89,40 +89,6 @@ export const APPEARANCE_RANGES: Readonly<Partial<Record<keyof AppearanceOptions,
 
 export const RENDER_DEFAULTS: Readonly<Required<RenderOptions>> = Object.freeze({ wireframe: false, showEyes: true, showTeeth: true });
 
-const COLOUR = /^#[0-9a-f]{6}$/i;
-
-function show(x: unknown): string {
-  return typeof x === 'string' ? JSON.stringify(x) : String(x);
-}
-
-/**
- * Checks a partial set of options against their defaults (which give the keys and types) and numeric ranges, and
- * returns it typed; throws an error naming the method and the first bad key or value. String options are colours.
- */
-export function checkOptions<T extends object>(
-  method: string,
-  partial: unknown,
-  defaults: Readonly<Required<T>>,
-  ranges?: Readonly<Partial<Record<keyof T, readonly [number, number]>>>,
-): Partial<T> {
-  if (typeof partial !== 'object' || partial === null || Array.isArray(partial))
-    throw new Error(`${method}: needs an object of options, got ${show(partial)}`);
-  for (const [key, value] of Object.entries(partial)) {
-    if (!Object.hasOwn(defaults, key))
-      throw new Error(`${method}: unknown option ${show(key)} (options: ${Object.keys(defaults).join(', ')})`);
-    const expected = typeof defaults[key as keyof T];
-    if (typeof value !== expected) throw new Error(`${method}: ${key} needs a ${expected}, got ${show(value)}`);
-    if (typeof value === 'number') {
-      if (!Number.isFinite(value)) throw new Error(`${method}: ${key} needs a finite number, got ${show(value)}`);
-      const range = ranges?.[key as keyof T];
-      if (range && (value < range[0] || value > range[1]))
-        throw new Error(`${method}: ${key} must be within ${range[0]}..${range[1]}, got ${value}`);
-    }
-    if (typeof value === 'string' && !COLOUR.test(value)) throw new Error(`${method}: ${key} needs a colour "#rrggbb", got ${show(value)}`);
-  }
-  return partial as Partial<T>;
-}
-
 /** A background colour (sRGB hex), or `transparent` to show the page behind the canvas. */
 export type ViewBackground = number | 'transparent';
 

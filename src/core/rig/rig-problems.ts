@@ -3,6 +3,7 @@
  * gathered into a `RigError` whose message lists them (timelines report theirs the same way).
  */
 import type * as v from 'valibot';
+import { show } from '../check';
 
 /** At most this many problems are spelled out in an error's message; `RigError.problems` has them all. */
 const MAX_LISTED_PROBLEMS = 50;
@@ -52,13 +53,4 @@ export function pathStep(key: unknown, first: boolean): string {
   const k = String(key);
   if (/^[A-Za-z_$][\w$]*$/.test(k)) return first ? k : `.${k}`;
   return `[${JSON.stringify(k)}]`;
-}
-
-/** A short description of a found value for messages: `-0.01`, `"spring"`, `an array of 2 items`. */
-export function show(x: unknown): string {
-  if (x === undefined) return 'nothing';
-  if (x === null || typeof x === 'number' || typeof x === 'boolean') return String(x);
-  if (typeof x === 'string') return x.length > 40 ? `${JSON.stringify(x.slice(0, 40))}...` : JSON.stringify(x);
-  if (Array.isArray(x)) return `an array of ${x.length} item${x.length === 1 ? '' : 's'}`;
-  return typeof x === 'object' ? 'an object' : `a ${typeof x}`;
 }

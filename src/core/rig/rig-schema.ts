@@ -7,7 +7,8 @@
 import * as v from 'valibot';
 import { jsonSyntaxMessage, megabytes, utf8Length } from './json-text';
 import { crossChecks, isObj, type Obj } from './rig-cross-checks';
-import { problemOf, RigError, show } from './rig-problems';
+import { show } from '../check';
+import { problemOf, RigError } from './rig-problems';
 import type { Rig } from './rig-types';
 
 /** Largest rig document `parseRigText` accepts, in bytes of UTF-8 (the default rig is about 20 kB). */

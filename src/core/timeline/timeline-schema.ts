@@ -7,7 +7,8 @@
 import * as v from 'valibot';
 import { isActionUnitId } from '../expression/facs';
 import { jsonSyntaxMessage, utf8Length } from '../rig/json-text';
-import { pathStep, problemOf, show as showValue, type RigProblem } from '../rig/rig-problems';
+import { show as showValue } from '../check';
+import { pathStep, problemOf, type RigProblem } from '../rig/rig-problems';
 import { EASINGS, PRESET_TARGET_PREFIX, TIMELINE_FORMAT, TIMELINE_VERSION, type Timeline } from './timeline';
 
 /** Largest timeline document `parseTimelineText` accepts, in bytes of UTF-8. */
