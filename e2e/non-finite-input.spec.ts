@@ -28,8 +28,10 @@ test('a non-finite input throws a clear error and the skin keeps its last good s
   });
   expect(errors.nanTarget).toMatch(/target of vertex 1 \(entry 1\) has a non-finite x coordinate: NaN/);
   expect(errors.infiniteWeight).toMatch(/weight must be a finite number from 0 to 1, got Infinity/);
-  expect(errors.nanParameter).toMatch(/positionStiffness must be a finite number, got NaN/);
-  expect(errors.unknownParameter).toMatch(/unknown skin parameter "stiffness"/);
+  expect(errors.nanParameter).toBe('skin parameters: positionStiffness: expected a number from 0 to 1, got NaN');
+  expect(errors.unknownParameter).toMatch(
+    /^skin parameters: expected one of the options positionIterations, .*, foldMomentum, got "stiffness"$/,
+  );
 
   const after = await page.evaluate(async () => {
     await window.face.settle(20_000);

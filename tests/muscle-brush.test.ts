@@ -93,10 +93,10 @@ describe('a muscle brush (rest-space spheres)', () => {
     expect(added.weights[v]).toBe(1);
     expect(added.targets[3 * v]).toBeCloseTo(0.02 * (1 - 0.5 / 8) ** 8, 6);
     expect(() => validateMuscle({ ...ring, brush: { add: [[0, 0, 0]], remove: [] } } as never)).toThrow(
-      'muscle r: brush.add[0] must be [x, y, z, radius]',
+      'muscle r: brush.add[0]: expected a sphere [x, y, z, radius], got [0,0,0]',
     );
     expect(() => validateMuscle({ ...ring, brush: { add: [], remove: [[0, 0, 0, 0]] } })).toThrow(
-      'brush.remove[0] radius must be greater than 0',
+      'muscle r: brush.remove[0][3]: expected a positive radius of at most 0.1 m, got 0',
     );
   });
 });

@@ -515,7 +515,9 @@ describe('jaw muscle lip fade', () => {
   });
 
   it('rejects a lipFade that is not positive, naming it', () => {
-    expect(() => validateMuscle({ ...JAW, lipFade: 0 })).toThrow('muscle test-jaw: lipFade must be greater than 0, got 0');
+    expect(() => validateMuscle({ ...JAW, lipFade: 0 })).toThrow(
+      'muscle test-jaw: lipFade: expected a positive length of at most 10 m, got 0',
+    );
   });
 });
 
@@ -847,24 +849,30 @@ describe('runtime checks', () => {
 
   it('rejects muscles whose field would be undefined, naming them', () => {
     expect(() => validateMuscle({ ...SPHINCTER, innerRadii: [0.01, 0.031, 0.007] })).toThrow(
-      'muscle test-sphincter: innerRadii[1] must not exceed radii[1] (0.03), got 0.031',
+      'muscle test-sphincter: innerRadii[1]: expected at most radii[1] (0.03), got 0.031',
     );
     expect(() => validateMuscle({ ...SPHINCTER, innerRadii: [0.01, 0.01, 0.02] })).not.toThrow();
     expect(() => validateMuscle({ ...LINEAR, falloffStart: 1.2 })).toThrow(
-      'muscle test-linear: falloffs must satisfy 0 < falloffStart < falloffEnd, got 1.2 and 1.2',
+      'muscle test-linear: falloffEnd: expected more than falloffStart (1.2), got 1.2',
     );
-    expect(() => validateMuscle({ ...LINEAR, insertion: [0, 0, 0] })).toThrow('muscle test-linear: origin and insertion must differ');
+    expect(() => validateMuscle({ ...LINEAR, insertion: [0, 0, 0] })).toThrow(
+      'muscle test-linear: insertion: expected a point apart from the origin, got the same point',
+    );
     expect(() => validateMuscle({ ...LINEAR, origin: [0, NaN, 0] })).toThrow(
-      'muscle test-linear: origin[1] must be a finite number, got NaN',
+      'muscle test-linear: origin[1]: expected a coordinate within ±10 m, got NaN',
     );
-    expect(() => validateMuscle({ ...LID, innerFraction: 1 })).toThrow(/muscle test-lid: innerFraction/);
-    expect(() => validateMuscle({ ...JAW, fade: 0 })).toThrow('muscle test-jaw: fade must be greater than 0, got 0');
+    expect(() => validateMuscle({ ...LID, innerFraction: 1 })).toThrow(
+      'muscle test-lid: innerFraction: expected a number from 0 to below 1, got 1',
+    );
+    expect(() => validateMuscle({ ...JAW, fade: 0 })).toThrow('muscle test-jaw: fade: expected a positive length of at most 10 m, got 0');
     expect(() => new MuscleRig(rest, [LINEAR, { ...JAW, size: [0.1, -0.06, 0.1] }])).toThrow(
-      'muscle test-jaw: size[1] must be greater than 0, got -0.06',
+      'muscle test-jaw: size[1]: expected a positive length of at most 10 m, got -0.06',
     );
     expect(() => new MuscleRig(rest, [LINEAR], { substeps: 0 })).toThrow(/substeps/);
     const rig = new MuscleRig(rest, [LINEAR]);
-    expect(() => rig.setMuscle(0, { ...LINEAR, angle: 120 })).toThrow('muscle test-linear: angle must be from 0 to 90, got 120');
+    expect(() => rig.setMuscle(0, { ...LINEAR, angle: 120 })).toThrow(
+      'muscle test-linear: angle: expected an angle from 0 to 90 degrees, got 120',
+    );
     expect(rig.muscles[0]).toBe(LINEAR);
   });
 });

@@ -94,8 +94,8 @@ describe('parseRig', () => {
     const e = rejection((doc) => {
       (doc.muscles[i] as { radii: number[] }).radii[1] = -0.01;
     });
-    expect(e.message).toBe(`rig: muscles[${i}].radii[1]: expected a positive number, got -0.01`);
-    expect(e.problems).toEqual([{ path: `muscles[${i}].radii[1]`, message: 'expected a positive number, got -0.01' }]);
+    expect(e.message).toBe(`rig: muscles[${i}].radii[1]: expected a positive length of at most 10 m, got -0.01`);
+    expect(e.problems).toEqual([{ path: `muscles[${i}].radii[1]`, message: 'expected a positive length of at most 10 m, got -0.01' }]);
   });
 
   it('rejects a missing field', () => {

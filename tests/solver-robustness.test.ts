@@ -50,9 +50,13 @@ describe('solver robustness', () => {
 
   it('rejects a non-finite or out-of-range parameter by name and keeps the old one', () => {
     const s = new SkinSolver(topology);
-    expect(() => s.setParameters({ positionStiffness: NaN })).toThrow('skin parameter positionStiffness must be a finite number, got NaN');
-    expect(() => s.setParameters({ lengthIterations: 2.5 })).toThrow('skin parameter lengthIterations must be a whole number, got 2.5');
-    expect(() => s.setParameters({ muscleStiffness: 3 })).toThrow('skin parameter muscleStiffness must be between 0 and 1, got 3');
+    expect(() => s.setParameters({ positionStiffness: NaN })).toThrow(
+      'skin parameters: positionStiffness: expected a number from 0 to 1, got NaN',
+    );
+    expect(() => s.setParameters({ lengthIterations: 2.5 })).toThrow(
+      'skin parameters: lengthIterations: expected an integer from 0 to 64, got 2.5',
+    );
+    expect(() => s.setParameters({ muscleStiffness: 3 })).toThrow('skin parameters: muscleStiffness: expected a number from 0 to 1, got 3');
     expect(s.parameters().positionStiffness).toBeGreaterThan(0);
     expect(s.parameters().lengthIterations).toBe(3);
   });

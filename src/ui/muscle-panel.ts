@@ -1,57 +1,66 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import { ACTION_UNITS } from '../core/expression/facs';
+import { type FieldRange, MUSCLE_RANGES } from '../core/rig/muscle-ranges';
 import type { Muscle } from '../core/rig/rig-types';
 import { gizmoParts, type FaceChange, type FaceHandle } from '../face/face-handle';
 import { BRUSH_RULES } from '../face/editor-session';
 
-/** Number fields by muscle type: key, label, min, max, step. Vectors get one field per axis. */
-const SCALARS: Record<Muscle['type'], [string, string, number, number, number][]> = {
+/**
+ * Number fields by muscle type, in the panel's order, with their labels; their bounds and steps are the rig's
+ * (MUSCLE_RANGES). Vectors get one field per axis.
+ */
+const SCALARS: Record<Muscle['type'], [string, string][]> = {
   linear: [
-    ['strength', 'strength', 0, 1, 0.01],
-    ['normalWeight', 'normal weight', 0, 1, 0.01],
-    ['angle', 'cone angle °', 0, 90, 0.5],
-    ['falloffStart', 'falloff start', 0.01, 3, 0.01],
-    ['falloffEnd', 'falloff end', 0.01, 3, 0.01],
+    ['strength', 'strength'],
+    ['normalWeight', 'normal weight'],
+    ['angle', 'cone angle °'],
+    ['falloffStart', 'falloff start'],
+    ['falloffEnd', 'falloff end'],
   ],
   sphincter: [
-    ['strength', 'strength', 0, 1, 0.01],
-    ['normalWeight', 'normal weight', 0, 1, 0.01],
+    ['strength', 'strength'],
+    ['normalWeight', 'normal weight'],
   ],
   lid: [
-    ['maxAngle', 'max angle °', -90, 90, 0.5],
-    ['innerFraction', 'inner fraction', 0, 0.99, 0.01],
+    ['maxAngle', 'max angle °'],
+    ['innerFraction', 'inner fraction'],
   ],
   jaw: [
-    ['maxAngle', 'max angle °', -90, 90, 0.5],
-    ['curve', 'curve', 0, 1, 0.01],
-    ['fade', 'fade (m)', 0.001, 0.05, 0.0005],
+    ['maxAngle', 'max angle °'],
+    ['curve', 'curve'],
+    ['fade', 'fade (m)'],
   ],
 };
 
-const VECTORS: Record<Muscle['type'], [string, string, number][]> = {
+const VECTORS: Record<Muscle['type'], [string, string][]> = {
   linear: [
-    ['insertion', 'insertion', 0.0005],
-    ['origin', 'bone end', 0.0005],
+    ['insertion', 'insertion'],
+    ['origin', 'bone end'],
   ],
   sphincter: [
-    ['center', 'centre', 0.0005],
-    ['rotation', 'rotation °', 0.5],
-    ['radii', 'radii', 0.0005],
-    ['innerRadii', 'inner radii', 0.0005],
-    ['scale', 'scale', 0.01],
+    ['center', 'centre'],
+    ['rotation', 'rotation °'],
+    ['radii', 'radii'],
+    ['innerRadii', 'inner radii'],
+    ['scale', 'scale'],
   ],
   lid: [
-    ['center', 'centre', 0.0005],
-    ['rotation', 'rotation °', 0.5],
-    ['radii', 'radii', 0.0005],
+    ['center', 'centre'],
+    ['rotation', 'rotation °'],
+    ['radii', 'radii'],
   ],
   jaw: [
-    ['center', 'centre', 0.0005],
-    ['rotation', 'rotation °', 0.5],
-    ['size', 'size', 0.0005],
+    ['center', 'centre'],
+    ['rotation', 'rotation °'],
+    ['size', 'size'],
   ],
 };
+
+/** The table's entry for field `key` of muscle type `type`. */
+function rangeOf(type: Muscle['type'], key: string): FieldRange {
+  return (MUSCLE_RANGES[type] as Record<string, FieldRange>)[key];
+}
 
 const NO_UNIT = '(none)';
 
@@ -185,18 +194,20 @@ export class MusclePanel {
         .onChange((v: number) => this.face.setPreviewContraction(v)),
       'muscle-preview',
     );
-    for (const [key, label, min, max, step] of SCALARS[muscle.type]) {
+    for (const [key, label] of SCALARS[muscle.type]) {
       if (!(key in s)) continue;
+      const { range, slider = range, step } = rangeOf(muscle.type, key);
       this.add(
         f
-          .add(s, key, min, max, step)
+          .add(s, key, slider[0], slider[1], step)
           .name(label)
           .onChange(() => this.drag(key))
           .onFinishChange(() => this.finish()),
         `muscle-${key}`,
       );
     }
-    for (const [key, label, step] of VECTORS[muscle.type]) {
+    for (const [key, label] of VECTORS[muscle.type]) {
+      const { step } = rangeOf(muscle.type, key);
       ['x', 'y', 'z'].forEach((axis) => {
         const field = `${key}.${axis}`;
         this.add(

@@ -1,5 +1,6 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
+import { SKIN_RANGES } from '../core/solver/skin-parameters';
 import type { FaceChange, FaceHandle } from '../face/face-handle';
 import { RESOLUTIONS, type Resolution } from '../face/face-options';
 import { downloadBlob, fileTimestamp } from './download';
@@ -10,7 +11,7 @@ export interface RenderingPanelOptions {
   resolution: Resolution;
   /** Called when the user picks another resolution (the app reloads with it); without it none is offered. */
   onResolution?: ((resolution: Resolution) => void) | null;
-  /** Largest iteration count the sliders offer. */
+  /** Largest iteration count the sliders offer (the skin accepts up to SKIN_RANGES' greatest). */
   maxIterations?: number;
 }
 
@@ -126,16 +127,22 @@ export class RenderingPanel {
           .onChange((r: Resolution) => onResolution(r)),
         'resolution',
       );
+    // The skin's ranges, from at least one pass (no length pass leaves the skin without its edges, which no one wants
+    // from a slider) to maxIterations (a slider over all 64 passes could not be set finely).
+    const iterations = (key: 'lengthIterations' | 'positionIterations'): [number, number] => {
+      const [least, greatest] = SKIN_RANGES[key];
+      return [Math.max(1, least), Math.min(o.maxIterations, greatest)];
+    };
     this.add(
       this.folder
-        .add(s, 'lengthIterations', 1, o.maxIterations, 1)
+        .add(s, 'lengthIterations', ...iterations('lengthIterations'), 1)
         .name('length iterations')
         .onChange((n: number) => face.setSkinParameters({ lengthIterations: n })),
       'length-iterations',
     );
     this.add(
       this.folder
-        .add(s, 'positionIterations', 1, o.maxIterations, 1)
+        .add(s, 'positionIterations', ...iterations('positionIterations'), 1)
         .name('position iterations')
         .onChange((n: number) => face.setSkinParameters({ positionIterations: n })),
       'position-iterations',

@@ -39,27 +39,38 @@ function checkMuscles(muscles: unknown[], problems: RigProblem[]): Map<string, u
         sides.set(m.name, m.side);
       }
     }
-    checkGeometry(m, at, problems);
+    problems.push(...geometryProblems(m, at));
   });
   return sides;
 }
 
-function checkGeometry(m: Obj, at: string, problems: RigProblem[]): void {
+/**
+ * What is wrong across the fields of one muscle's geometry, with paths under `at` ('' for the muscle itself);
+ * `validateMuscle` reports the same for muscles handed to the solver.
+ */
+export function geometryProblems(m: Obj, at = ''): RigProblem[] {
+  const problems: RigProblem[] = [];
+  const path = (key: string): string => at + pathStep(key, at === '');
   if (m.type === 'linear') {
     if (isPositive(m.falloffStart) && isPositive(m.falloffEnd) && !(m.falloffStart < m.falloffEnd)) {
-      problems.push({ path: `${at}.falloffEnd`, message: `expected more than falloffStart (${m.falloffStart}), got ${m.falloffEnd}` });
+      problems.push({ path: path('falloffEnd'), message: `expected more than falloffStart (${m.falloffStart}), got ${m.falloffEnd}` });
     }
     // The pull runs along origin -> insertion, which needs a length.
     if (isVec3(m.origin) && isVec3(m.insertion) && m.origin.every((x, k) => x === (m.insertion as number[])[k])) {
-      problems.push({ path: `${at}.insertion`, message: 'expected a point apart from the origin, got the same point' });
+      problems.push({ path: path('insertion'), message: 'expected a point apart from the origin, got the same point' });
     }
   }
   if (m.type === 'sphincter' && isVec3(m.radii) && m.radii.every(isPositive) && isVec3(m.innerRadii) && m.innerRadii.every(isPositive)) {
+    // An inner ellipsoid poking out of the outer one would make the pull stop in a step over a patch of skin. Equal
+    // radii on an axis are allowed (a rig may want no fade along the depth): the step is then only at that axis's
+    // two poles, the outer ellipsoid's tips, and the fade is steep only near them.
     const radii = m.radii;
     m.innerRadii.forEach((r, k) => {
-      if (r > radii[k]) problems.push({ path: `${at}.innerRadii[${k}]`, message: `expected at most radii[${k}] (${radii[k]}), got ${r}` });
+      if (r > radii[k])
+        problems.push({ path: `${path('innerRadii')}[${k}]`, message: `expected at most radii[${k}] (${radii[k]}), got ${r}` });
     });
   }
+  return problems;
 }
 
 /** Unique ids, muscles that exist, and sides that fit the unit; returns whether each Action Unit id is bilateral. */

@@ -6,10 +6,11 @@
 
 import * as v from 'valibot';
 import { jsonSyntaxMessage, megabytes, utf8Length } from './json-text';
+import { accepts, BRUSH_RANGES, type FieldRange, MUSCLE_RANGES } from './muscle-ranges';
 import { crossChecks, isObj, type Obj } from './rig-cross-checks';
 import { show } from '../check';
 import { problemOf, RigError } from './rig-problems';
-import type { Rig } from './rig-types';
+import type { Muscle, Rig } from './rig-types';
 
 /** Largest rig document `parseRigText` accepts, in bytes of UTF-8 (the default rig is about 20 kB). */
 export const MAX_RIG_BYTES = 5 * 1024 * 1024;
@@ -20,18 +21,11 @@ const MAX_RIG_ACTION_UNITS = 64;
 const MAX_RIG_PRESETS = 256;
 /** Longest name or note, in characters. */
 const MAX_TEXT = 200;
-/**
- * Farthest a muscle point may lie from the model's origin, and largest radius or box edge, in metres. The head is
- * about 0.25 m across; a point kilometres away would make the solver's targets (and the skin) run off to infinity.
- */
-const MAX_RIG_DISTANCE = 10;
 
 /** The rig document version this code writes; older documents are migrated when read (`migrateRig`). */
 const RIG_VERSION = 2;
 /** Most brush spheres a muscle may have, of each kind. */
 const MAX_BRUSH_SPHERES = 4096;
-/** Largest brush sphere radius, in metres. */
-const MAX_BRUSH_RADIUS = 0.1;
 
 // ---------------------------------------------------------------------------------------------------------------
 // The schema. Every message starts with "expected ..."; the formatter adds what was found.
@@ -56,116 +50,46 @@ function plainObject<const E extends v.ObjectEntries>(entries: E, message: strin
   return v.pipe(v.custom<Obj>(isObj, message), v.strictObject(entries, message));
 }
 
-const coordinate = v.pipe(
-  number,
-  v.minValue(-MAX_RIG_DISTANCE, `expected a coordinate within ±${MAX_RIG_DISTANCE} m`),
-  v.maxValue(MAX_RIG_DISTANCE, `expected a coordinate within ±${MAX_RIG_DISTANCE} m`),
-);
-/** A radius, box edge or fade: positive and at most MAX_RIG_DISTANCE. */
-const extent = v.pipe(positive, v.maxValue(MAX_RIG_DISTANCE, `expected a length of at most ${MAX_RIG_DISTANCE} m`));
-/** A falloff as a fraction of a linear muscle's length. */
-const falloff = v.pipe(positive, v.maxValue(100, 'expected a positive number of at most 100'));
-const degrees = v.pipe(
-  number,
-  v.minValue(-360, 'expected an angle from -360 to 360 degrees'),
-  v.maxValue(360, 'expected an angle from -360 to 360 degrees'),
-);
-const position = vec3(coordinate);
-const euler = vec3(degrees);
-const brushRadius = v.pipe(positive, v.maxValue(MAX_BRUSH_RADIUS, `expected a radius of at most ${MAX_BRUSH_RADIUS} m`));
+/** A number that `field` (muscle-ranges.ts) accepts. */
+function ranged(field: FieldRange) {
+  return v.pipe(
+    number,
+    v.check((x) => accepts(field, x), `expected ${field.expected}`),
+  );
+}
+
+/**
+ * The number fields of muscle type `type`, from MUSCLE_RANGES in its order: each a number, or an [x, y, z] of them,
+ * optional where the table says so. The cast gives them the types rig-types.ts declares, which the table's type ties
+ * to the same fields.
+ */
+function rangedEntries<T extends Muscle['type']>(type: T) {
+  const entries: v.ObjectEntries = {};
+  for (const [key, field] of Object.entries(MUSCLE_RANGES[type]) as [string, FieldRange][]) {
+    const one = field.vector ? vec3(ranged(field)) : ranged(field);
+    entries[key] = field.optional ? v.optional(one) : one;
+  }
+  type M = Extract<Muscle, { type: T }>;
+  return entries as { [K in keyof (typeof MUSCLE_RANGES)[T]]: v.GenericSchema<M[K & keyof M]> };
+}
+
 const spheres = v.pipe(
   v.array(
-    v.strictTuple([coordinate, coordinate, coordinate, brushRadius], 'expected a sphere [x, y, z, radius]'),
+    v.strictTuple(
+      [ranged(BRUSH_RANGES.coordinate), ranged(BRUSH_RANGES.coordinate), ranged(BRUSH_RANGES.coordinate), ranged(BRUSH_RANGES.radius)],
+      'expected a sphere [x, y, z, radius]',
+    ),
     'expected an array of spheres',
   ),
   v.maxLength(MAX_BRUSH_SPHERES, `expected at most ${MAX_BRUSH_SPHERES} spheres`),
 );
 const brush = v.optional(plainObject({ add: spheres, remove: spheres }, 'expected a brush { add: [...], remove: [...] }'));
-const angle = v.pipe(
-  number,
-  v.minValue(-90, 'expected an angle from -90 to 90 degrees'),
-  v.maxValue(90, 'expected an angle from -90 to 90 degrees'),
-);
 const object = 'expected an object';
 
-const LinearMuscleSchema = v.strictObject(
-  {
-    name,
-    side,
-    brush,
-    type: v.literal('linear'),
-    origin: position,
-    insertion: position,
-    angle: v.pipe(
-      number,
-      v.minValue(0, 'expected an angle from 0 to 90 degrees'),
-      v.maxValue(90, 'expected an angle from 0 to 90 degrees'),
-    ),
-    falloffStart: falloff,
-    falloffEnd: falloff,
-    strength: fraction,
-    normalWeight: fraction,
-  },
-  object,
-);
-
-const SphincterMuscleSchema = v.strictObject(
-  {
-    name,
-    side,
-    brush,
-    type: v.literal('sphincter'),
-    center: position,
-    rotation: euler,
-    radii: vec3(extent),
-    // Positive: the pull inside the inner ellipsoid is scaled by the distance over these radii.
-    innerRadii: vec3(extent),
-    // Negative pushes away from the center along that axis (a pucker thrusts the lips forward).
-    scale: vec3(v.pipe(number, v.minValue(-10, 'expected a number from -10 to 10'), v.maxValue(10, 'expected a number from -10 to 10'))),
-    strength: fraction,
-    normalWeight: fraction,
-  },
-  object,
-);
-
-const LidMuscleSchema = v.strictObject(
-  {
-    name,
-    side,
-    brush,
-    type: v.literal('lid'),
-    center: position,
-    rotation: euler,
-    radii: vec3(extent),
-    maxAngle: angle,
-    // Below 1: the fade runs from innerFraction to the surface, and must have a width.
-    innerFraction: v.pipe(
-      number,
-      v.minValue(0, 'expected a number from 0 to below 1'),
-      v.ltValue(1, 'expected a number from 0 to below 1'),
-    ),
-  },
-  object,
-);
-
-const JawMuscleSchema = v.strictObject(
-  {
-    name,
-    side,
-    brush,
-    type: v.literal('jaw'),
-    center: position,
-    rotation: euler,
-    size: vec3(extent),
-    joint: v.optional(position),
-    maxAngle: angle,
-    curve: fraction,
-    // Positive: without a fade the turn would stop in a step at the box's faces.
-    fade: extent,
-    lipFade: v.optional(extent),
-  },
-  object,
-);
+const LinearMuscleSchema = v.strictObject({ name, side, brush, type: v.literal('linear'), ...rangedEntries('linear') }, object);
+const SphincterMuscleSchema = v.strictObject({ name, side, brush, type: v.literal('sphincter'), ...rangedEntries('sphincter') }, object);
+const LidMuscleSchema = v.strictObject({ name, side, brush, type: v.literal('lid'), ...rangedEntries('lid') }, object);
+const JawMuscleSchema = v.strictObject({ name, side, brush, type: v.literal('jaw'), ...rangedEntries('jaw') }, object);
 
 const MuscleSchema = v.variant('type', [LinearMuscleSchema, SphincterMuscleSchema, LidMuscleSchema, JawMuscleSchema], (issue) =>
   issue.expected === 'Object'

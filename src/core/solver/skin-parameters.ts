@@ -1,4 +1,5 @@
 /** The skin's parameters (SkinParameters), their defaults and their ranges. */
+import { checkNumber, type Range } from '../check';
 
 /** The skin's parameters; every one can change while the solver runs. */
 export interface SkinParameters {
@@ -66,27 +67,33 @@ export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
   foldMomentum: 0.85,
 };
 
-const RANGES: Record<keyof SkinParameters, [number, number, boolean]> = {
-  positionIterations: [1, 64, true],
-  lengthIterations: [0, 64, true],
-  positionStiffness: [0, 1, false],
-  lengthStiffness: [0, 1, false],
-  muscleStiffness: [0, 1, false],
-  wrinkleSpacing: [0, 1, false],
-  inwardResistance: [1, 100, false],
-  bulge: [0, 10, false],
-  sleepTolerance: [0, 1, false],
-  momentum: [0, 0.9, false],
-  startMomentum: [0, 0.9, false],
-  foldMomentum: [0, 0.9, false],
-};
+/**
+ * The accepted values of each parameter, ends included: validateParameters, the staging of a change on the main
+ * thread (input-staging.ts) and the Rendering panel's sliders read this one table.
+ */
+export const SKIN_RANGES: Readonly<Record<keyof SkinParameters, Range>> = Object.freeze({
+  positionIterations: [1, 64],
+  lengthIterations: [0, 64],
+  positionStiffness: [0, 1],
+  lengthStiffness: [0, 1],
+  muscleStiffness: [0, 1],
+  wrinkleSpacing: [0, 1],
+  inwardResistance: [1, 100],
+  bulge: [0, 10],
+  sleepTolerance: [0, 1],
+  momentum: [0, 0.9],
+  startMomentum: [0, 0.9],
+  foldMomentum: [0, 0.9],
+});
 
-/** Throws an error naming the first parameter that is not a finite number within its range. */
+/** The parameters that count passes, and so must be whole. */
+export const SKIN_INTEGERS: readonly (keyof SkinParameters)[] = Object.freeze(['positionIterations', 'lengthIterations']);
+
+/** What messages about skin parameters start with: `skin parameters: lengthIterations: expected ...`. */
+export const SKIN_PARAMETERS = 'skin parameters';
+
+/** Throws the refusal of the first parameter that is not a finite number in its range (and whole, if it counts). */
 export function validateParameters(p: SkinParameters): void {
-  for (const [name, [lo, hi, integer]] of Object.entries(RANGES) as [keyof SkinParameters, [number, number, boolean]][]) {
-    const v = p[name];
-    if (typeof v !== 'number' || !Number.isFinite(v)) throw new Error(`skin parameter ${name} must be a finite number, got ${v}`);
-    if (v < lo || v > hi) throw new Error(`skin parameter ${name} must be between ${lo} and ${hi}, got ${v}`);
-    if (integer && !Number.isInteger(v)) throw new Error(`skin parameter ${name} must be a whole number, got ${v}`);
-  }
+  for (const key of Object.keys(SKIN_RANGES) as (keyof SkinParameters)[])
+    checkNumber(SKIN_PARAMETERS, key, p[key], SKIN_RANGES[key], SKIN_INTEGERS.includes(key));
 }

@@ -1,12 +1,12 @@
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from '../../core/solver/muscle-inputs';
-import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from '../../core/solver/skin-parameters';
+import { checkOptions } from '../../core/check';
+import { SKIN_DEFAULTS, SKIN_INTEGERS, SKIN_PARAMETERS, SKIN_RANGES, type SkinParameters } from '../../core/solver/skin-parameters';
 import {
   CONTROL_CONTRACTION_REVISION,
   CONTROL_INPUT_SEQ,
   CONTROL_MUSCLE_REVISION,
   CONTROL_PARAMETER_REVISION,
   CONTROL_RIG_REVISION,
-  PARAMETER_INDEX,
   readParameters,
   writeParameters,
   type ControlViews,
@@ -100,13 +100,9 @@ export class InputStaging {
 
   /** Changes some skin parameters; throws, changing nothing, if one is unknown or not a finite number in range. */
   setParameters(partial: Partial<SkinParameters>): void {
-    if (typeof partial !== 'object' || partial === null) throw new Error(`skin parameters must be an object, got ${partial}`);
-    for (const name of Object.keys(partial)) {
-      if (!(name in PARAMETER_INDEX))
-        throw new Error(`unknown skin parameter "${name}" (known: ${Object.keys(PARAMETER_INDEX).join(', ')})`);
-    }
-    const next = { ...this.current, ...partial };
-    validateParameters(next);
+    // The current parameters passed these checks already: only the given ones need them.
+    const given = checkOptions<SkinParameters>(SKIN_PARAMETERS, partial, SKIN_DEFAULTS, { ranges: SKIN_RANGES, integers: SKIN_INTEGERS });
+    const next = { ...this.current, ...given };
     this.begin();
     Object.assign(this.current, next);
     writeParameters(this.current, this.control.parameters);

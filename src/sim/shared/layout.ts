@@ -32,7 +32,7 @@ export const CONTROL_RIG_REVISION = 4;
 const CONTROL_HEADER_BYTES = 64;
 
 /** Where each skin parameter sits in the control block's Float64 parameter array. Exhaustive by type. */
-export const PARAMETER_INDEX: Readonly<Record<keyof SkinParameters, number>> = {
+const PARAMETER_INDEX: Readonly<Record<keyof SkinParameters, number>> = {
   positionIterations: 0,
   lengthIterations: 1,
   positionStiffness: 2,
