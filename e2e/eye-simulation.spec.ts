@@ -34,7 +34,7 @@ test('the eye simulation blinks through the lids and moves the gaze within 10 s,
     // Blinks every 1.5 to 2 s, each held closed for 600 ms: long enough for the skin to close the lid on a machine
     // that solves few frames a second (the default hold of 50 ms reached 1 to 8 mm of the lid's travel, depending on
     // the machine's load).
-    face.setEyeSimulation(true, { blinkIntervalMin: 1500, blinkIntervalMax: 2000, blinkHold: 600, holdMin: 300, holdMax: 800 });
+    face.setEyeSimulation(true, { seed: 7, blinkIntervalMin: 1500, blinkIntervalMax: 2000, blinkHold: 600, holdMin: 300, holdMax: 800 });
     const { rest } = face.getSkin();
     // Skin vertices of the left upper lid: on the eyeball (within 4 mm of its surface), in front of it, above its centre.
     const lidVertices: number[] = [];

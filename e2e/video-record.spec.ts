@@ -134,7 +134,7 @@ test('record video: 2 s at 10 fps decode to 20 frames from the neutral face, the
     // The page goes on between the recordings: the timeline plays on its own clock, as a user might let it, and the
     // eyes blink and look around (random, and kept out of the video).
     face.play();
-    face.setEyeSimulation(true);
+    face.setEyeSimulation(true, { seed: 7 });
     await new Promise((resolve) => setTimeout(resolve, 700));
     const second = await face.recordVideo({ fps: 10, width: 320, height: 240, seconds: 2 });
     return {

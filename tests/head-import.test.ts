@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { eulerMatrix } from '../src/core/math3';
-import { applyHeadFrame, checkHeadMesh, findHeadFrame, mergeVertices, weldSeams, type Axis } from '../src/core/head/head-mesh';
+import { applyHeadTransform, checkHeadMesh, findHeadTransform, mergeVertices, weldSeams, type Axis } from '../src/core/head/head-mesh';
 import { DEFAULT_LANDMARKS, findLandmarks, LANDMARK_NAMES } from '../src/core/head/landmarks';
 import { mulberry32 } from '../src/core/random';
 import { eulerDegrees, warpRig } from '../src/core/rig/rig-warp';
@@ -199,15 +199,15 @@ describe('head mesh checks and frame', () => {
     for (let i = 0; i < positions.length; i += 3) {
       for (let k = 0; k < 3; k++) file[i + k] = scale * (l[k] * positions[i] + u[k] * positions[i + 1] + f[k] * positions[i + 2]);
     }
-    const frame = findHeadFrame(file, indices);
+    const frame = findHeadTransform(file, indices);
     expect(frame).toMatchObject({ units, up, forward });
-    applyHeadFrame(file, frame);
+    applyHeadTransform(file, frame);
     for (let i = 0; i < file.length; i++) expect(Math.abs(file[i] - positions[i])).toBeLessThan(1e-5);
   });
 
   it('refuses a mesh no unit makes head-sized', () => {
     const { positions, indices } = sphere(40, 8);
-    expect(() => findHeadFrame(positions, indices, {}, 'moon.obj')).toThrow(
+    expect(() => findHeadTransform(positions, indices, {}, 'moon.obj')).toThrow(
       'moon.obj: the mesh is 80.0 units across, not the size of a head in m, dm, cm or mm; give its units',
     );
   });

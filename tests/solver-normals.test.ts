@@ -13,7 +13,7 @@ async function solve(threads: 1 | 2) {
     sim.apply();
     for (let f = 0; f < 40; f++) sim.host.step();
     const s = sim.host.solver;
-    return { topology: s.topology, threads: s.threads, positions: s.buffers.positions.slice(), normals: s.buffers.normals.slice() };
+    return { topology: s.topology, workers: s.workers, positions: s.buffers.positions.slice(), normals: s.buffers.normals.slice() };
   } finally {
     await partner?.stop();
   }
@@ -44,7 +44,7 @@ describe('the normals of a solved frame', () => {
   it('are the same to the bit on two threads as on one', async () => {
     const one = await solve(1);
     const two = await solve(2);
-    expect(two.threads).toBe(2);
+    expect(two.workers).toBe(2);
     expect(two.positions).toEqual(one.positions);
     expect(two.normals).toEqual(one.normals);
   });

@@ -15,7 +15,7 @@ describe('a partner thread that stops answering', () => {
 
     // Detached, the same solver finishes the expression on its own thread: it sleeps, with a finite, moved skin.
     solver.attachPartner(null);
-    expect(solver.threads).toBe(1);
+    expect(solver.workers).toBe(1);
     let frames = 0;
     while (frames < 1500 && sim.host.step()) frames++;
     expect(solver.sleeping).toBe(true);

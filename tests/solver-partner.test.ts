@@ -20,7 +20,7 @@ async function solve(threads: 1 | 2): Promise<{ shapes: Float32Array[]; threadsU
       for (const [unit, value] of Object.entries(units)) sim.expression.setActionUnit(unit, value);
       sim.apply();
       for (let f = 0; f < FRAMES; f++) sim.host.step();
-      threadsUsed.push(sim.host.solver.threads);
+      threadsUsed.push(sim.host.solver.workers);
       shapes.push(sim.host.solver.buffers.positions.slice());
     }
   } finally {

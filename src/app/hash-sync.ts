@@ -1,13 +1,15 @@
-import type { FaceChange, FaceHandle } from '../face/face-handle';
 import {
+  APPEARANCE_DEFAULTS,
   appearanceChanges,
   decodeAppearance,
   decodeExpression,
   decodeTimeline,
   encodeExpression,
   MAX_HASH_TIMELINE_CHARS,
-} from '../face/expression-hash';
-import { APPEARANCE_DEFAULTS, type AppearanceOptions } from '../render/view-options';
+  type AppearanceOptions,
+  type Face,
+  type FaceChange,
+} from '../embed/index';
 
 /** Options of the URL hash sync. */
 export interface HashSyncOptions {
@@ -35,7 +37,7 @@ export class HashSync {
   private applying = false;
 
   constructor(
-    private readonly face: FaceHandle,
+    private readonly face: Face,
     options: HashSyncOptions = {},
   ) {
     this.o = { ...HASH_SYNC_DEFAULTS, ...options };

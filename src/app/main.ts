@@ -1,8 +1,6 @@
-import { createFace } from '../embed/create-face';
-import { encodeExpression } from '../face/expression-hash';
-import { RESOLUTIONS, type Resolution } from '../face/face-options';
-import { chooseSolverMode, chooseWorkers } from '../sim/main/solver-mode';
+import { createFace, encodeExpression, RESOLUTIONS, type Resolution } from '../embed/index';
 import { HashSync } from './hash-sync';
+import { requestedSolver, requestedWorkers } from './solver-choice';
 
 /** How often the status bar's solver line is refreshed, in ms (text changes allocate, so not every frame). */
 const SOLVER_STATUS_MS = 500;
@@ -32,16 +30,15 @@ isolationStatus.textContent = crossOriginIsolated ? 'cross-origin isolated' : 'n
 isolationStatus.dataset.isolated = String(crossOriginIsolated);
 
 const resolution = requestedResolution();
-const { mode, warning } = chooseSolverMode(location.search, crossOriginIsolated);
-if (warning) console.warn(warning);
-solverStatus.textContent = `solver: ${mode}, starting…`;
+const solver = requestedSolver(location.search);
+solverStatus.textContent = `solver: ${solver}, starting…`;
 try {
   // The page is one user of the embedding API: one face filling the window, with panels, fetching its models and
   // rig from beside the page as the app has always been served.
   const face = await createFace(document.getElementById('viewport')!, {
     resolution,
-    solver: mode,
-    workers: chooseWorkers(location.search),
+    solver,
+    workers: requestedWorkers(location.search),
     panels: true,
     assetBase: import.meta.env.BASE_URL,
     onResolution: switchResolution,

@@ -2,6 +2,17 @@
 export { createFace, type Face } from './create-face';
 export { FACE_DEFAULTS, RESOLUTIONS, SOLVER_CHOICES, type FaceOptions, type Resolution, type SolverChoice } from '../face/face-options';
 export type { ExpressionEntries } from '../face/expression-hash';
+/** The URL-hash text form of a face's state (expression, a short timeline, appearance), as the app keeps it in its links. */
+export {
+  appearanceChanges,
+  decodeAppearance,
+  decodeExpression,
+  decodeTimeline,
+  encodeExpression,
+  MAX_HASH_TIMELINE_CHARS,
+  type HashAppearance,
+  type HashExpression,
+} from '../face/expression-hash';
 export type { GLTFExportOptions, GLTFExportProgress } from '../face/gltf-export-options';
 export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay, SkinSnapshot, TimelineState } from '../face/face-handle';
 export type { Easing, Timeline, TimelineAction, TimelineKey, TimelineTrack } from '../core/timeline/timeline';
@@ -12,7 +23,13 @@ export type { SkinParameters } from '../core/solver/skin-parameters';
 export type { Rig } from '../core/rig/rig-types';
 export type { RenderTiming } from '../render/render-timing';
 export type { HairPartSnapshot, HairSnapshot } from '../render/hair-view';
-export type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
+export {
+  APPEARANCE_DEFAULTS,
+  type AppearanceOptions,
+  type CameraOptions,
+  type LightOptions,
+  type RenderOptions,
+} from '../render/view-options';
 export { VIDEO_DEFAULTS, type VideoFormat, type VideoOptions } from '../face/video-options';
 export type { HeadDescription, HeadFile, HeadSource, LoadHeadOptions } from '../face/head-loader';
 export { LANDMARK_NAMES, type LandmarkName, type Landmarks } from '../core/head/landmarks';

@@ -2,14 +2,14 @@ import { checkObject, refusal } from '../core/check';
 import {
   AXES,
   UNITS,
-  applyHeadFrame,
+  applyHeadTransform,
   checkHeadMesh,
-  findHeadFrame,
+  findHeadTransform,
   mergeVertices,
   positionBounds,
   weldSeams,
   type Axis,
-  type HeadFrame,
+  type HeadTransform,
   type TriangleMesh,
   type Unit,
 } from '../core/head/head-mesh';
@@ -94,7 +94,7 @@ export interface PreparedHead {
   level: HeadLevel | 'file';
   rig: Rig;
   landmarks: Landmarks;
-  frame: HeadFrame;
+  transform: HeadTransform;
   files: HeadFile[];
   options: Required<LoadHeadOptions>;
 }
@@ -214,8 +214,8 @@ export async function prepareHead(
   const { min, max } = positionBounds(read.positions);
   weldSeams(read.positions, 1e-6 * Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]));
   const mesh = mergeVertices(read);
-  const frame = findHeadFrame(mesh.positions, mesh.indices, options, source);
-  applyHeadFrame(mesh.positions, frame);
+  const transform = findHeadTransform(mesh.positions, mesh.indices, options, source);
+  applyHeadTransform(mesh.positions, transform);
   const search = findLandmarks(mesh.positions, mesh.indices);
   const found = { ...search.found, ...(options.landmarks ?? {}) } as Partial<Landmarks>;
   const missing = search.missing.filter((m) => !found[m.name]);
@@ -244,13 +244,13 @@ export async function prepareHead(
   const defaults = await loadHeadModel(defaultModelUrl);
   let built: ReturnType<typeof buildLoadedHead>;
   try {
-    built = buildLoadedHead(shown, landmarks, { scene, frame, defaults, warp });
+    built = buildLoadedHead(shown, landmarks, { scene, transform, defaults, warp });
   } catch (error) {
     disposeHead(defaults);
     throw error;
   }
   const { head, sources } = built;
-  return { head, level, sources, rig, landmarks, frame, files, options };
+  return { head, level, sources, rig, landmarks, transform, files, options };
 }
 
 /**
@@ -261,16 +261,16 @@ export function describeShownHead(
   prepared: PreparedHead | undefined,
   shown: { level: HeadLevel; file: string; vertices: number; triangles: number; loadMs: number },
 ): HeadDescription {
-  const frame = prepared?.frame;
+  const transform = prepared?.transform;
   return {
     source: prepared ? 'loaded' : 'default',
     level: prepared ? prepared.level : shown.level,
     name: prepared ? prepared.files[0].name : shown.file,
     vertices: shown.vertices,
     triangles: shown.triangles,
-    units: frame?.units ?? 'm',
-    up: frame?.up ?? '+y',
-    forward: frame?.forward ?? '+z',
+    units: transform?.units ?? 'm',
+    up: transform?.up ?? '+y',
+    forward: transform?.forward ?? '+z',
     landmarks: structuredClone(prepared ? prepared.landmarks : (DEFAULT_LANDMARKS as Landmarks)),
     parts: prepared ? { ...prepared.sources } : { eyes: 'file', teeth: 'file', jaw: 'file' },
     loadMs: shown.loadMs,

@@ -2,7 +2,7 @@ import type { Object3D } from 'three';
 import { LANDMARK_LABELS, type LandmarkName, type Landmarks } from '../core/head/landmarks';
 import type { Vec3 } from '../core/rig/rig-types';
 import type { HeadView } from '../render/head-view';
-import { LandmarkGuideView } from '../render/landmark-guide';
+import { LandmarkGuideView } from '../render/landmark-guide-view';
 import type { MissingLandmarksError } from './head-loader';
 
 /** Where a landmark guide stands: what to click next ("the left mouth corner"), and what is placed so far. */

@@ -2,7 +2,7 @@ import { Box3, BufferAttribute, BufferGeometry, Group, LoadingManager, Matrix4, 
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 import { HEAD_NODES } from '../core/head/head-nodes';
-import type { HeadFrame, TriangleMesh } from '../core/head/head-mesh';
+import type { HeadTransform, TriangleMesh } from '../core/head/head-mesh';
 import type { Landmarks } from '../core/head/landmarks';
 import { warpPoint, type ThinPlateWarp } from '../core/head/thin-plate';
 import { whiteVertexColors, type HeadModel } from './head-model';
@@ -115,7 +115,7 @@ function isPart(o: Object3D): boolean {
 export interface HeadParts {
   /** The file's scene (its named nodes are looked for) and the frame that takes it into the app's. */
   scene: Object3D;
-  frame: HeadFrame;
+  transform: HeadTransform;
   /** The default head, whose eyes, teeth, tongue and jaw are carried over by the warp where the file has none. */
   defaults: HeadModel;
   warp: ThinPlateWarp;
@@ -136,7 +136,7 @@ export interface PartSources {
 }
 
 export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts: HeadParts): { head: HeadModel; sources: PartSources } {
-  const { defaults, warp, frame } = parts;
+  const { defaults, warp, transform } = parts;
   const root = new Group();
   root.name = 'head';
   const geometry = new BufferGeometry();
@@ -162,18 +162,18 @@ export function buildLoadedHead(skin: TriangleMesh, landmarks: Landmarks, parts:
   defaults.skin.geometry.dispose();
 
   const fileMatrix = new Matrix4().set(
-    frame.scale * frame.rotation[0],
-    frame.scale * frame.rotation[1],
-    frame.scale * frame.rotation[2],
-    frame.offset[0],
-    frame.scale * frame.rotation[3],
-    frame.scale * frame.rotation[4],
-    frame.scale * frame.rotation[5],
-    frame.offset[1],
-    frame.scale * frame.rotation[6],
-    frame.scale * frame.rotation[7],
-    frame.scale * frame.rotation[8],
-    frame.offset[2],
+    transform.scale * transform.rotation[0],
+    transform.scale * transform.rotation[1],
+    transform.scale * transform.rotation[2],
+    transform.offset[0],
+    transform.scale * transform.rotation[3],
+    transform.scale * transform.rotation[4],
+    transform.scale * transform.rotation[5],
+    transform.offset[1],
+    transform.scale * transform.rotation[6],
+    transform.scale * transform.rotation[7],
+    transform.scale * transform.rotation[8],
+    transform.offset[2],
     0,
     0,
     0,

@@ -73,7 +73,8 @@ export class HeadView {
   private head: HeadModel | undefined;
   private readonly render: Required<RenderOptions> = { ...RENDER_DEFAULTS };
   private readonly appearance: Required<AppearanceOptions> = { ...APPEARANCE_DEFAULTS };
-  private frame = 0;
+  /** The pending animation frame's request id (0 when the loop is stopped). */
+  private animationFrame = 0;
   private readonly frameHooks: FrameHook[] = [];
   private readonly renderHooks: (() => void)[] = [];
   /**
@@ -168,7 +169,7 @@ export class HeadView {
     if (this.head) this.scene.remove(this.head.root);
     this.head = head;
     this.scene.add(head.root);
-    this.frame_(head);
+    this.frameBounds(head.bounds);
     this.applyRender();
     this.invalidate();
   }
@@ -297,7 +298,7 @@ export class HeadView {
   /** Starts the render loop. */
   start(): void {
     const loop = (now: number): void => {
-      this.frame = requestAnimationFrame(loop);
+      this.animationFrame = requestAnimationFrame(loop);
       if (this.drawnAt >= 0) {
         if (!this.reduced) this.fullDrawMs = now - this.drawnAt;
         this.drawnAt = -1;
@@ -333,7 +334,7 @@ export class HeadView {
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
     };
     this.invalidate();
-    if (!this.frame) loop(performance.now());
+    if (!this.animationFrame) loop(performance.now());
   }
 
   /** The shown head's materials as plain data, each once (read-only: for tests and debugging). */
@@ -358,8 +359,8 @@ export class HeadView {
    * warns (then drops the oldest) past 16 live ones.
    */
   dispose(): void {
-    cancelAnimationFrame(this.frame);
-    this.frame = 0;
+    cancelAnimationFrame(this.animationFrame);
+    this.animationFrame = 0;
     this.frameHooks.length = 0;
     this.renderHooks.length = 0;
     for (const type of INPUT_EVENTS) this.renderer.domElement.removeEventListener(type, this.invalidate);
@@ -406,13 +407,9 @@ export class HeadView {
     this.renderer.render(this.scene, this.camera);
   }
 
-  private frame_(head: HeadModel): void {
-    this.frameBounds(head.bounds);
-  }
-
   /** Points the camera at the middle of `bounds` from the front (+z), far enough to see it whole; the key light follows. */
   frameBounds(bounds: Box3): void {
-    this.lights.aimAt(this.view.frame(bounds));
+    this.lights.aimAt(this.view.fit(bounds));
   }
 
   /**

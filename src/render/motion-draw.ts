@@ -5,9 +5,8 @@
 
 /**
  * How long nothing new must come before a picture drawn at the motion's lower resolution is drawn again at full: the
- * motion has ended. An animation frame can come a few milliseconds after a slow one, before the solver's next frame
- * (one every 10 to 20 ms while the skin moves); going to full resolution there cost software WebGL a full draw and a
- * new canvas in the middle of the motion, 300 to 560 ms in which the page read nothing new.
+ * motion has ended. Longer than the gap between two solver frames, so that a full draw does not land in the middle of
+ * the motion (docs/page-notes.md).
  */
 export const MOTION_END_MS = 100;
 
@@ -28,10 +27,10 @@ export interface MotionDrawState {
 }
 
 /**
- * While the picture changes, slow draws go at the lower resolution: in software WebGL a full one costs two threads
- * about 180 ms, in which the solver shares the cores with it, and the answer to an input reaches the screen later.
- * The motion's first draw decides by the last full one, so a GPU that keeps up never draws lower. Nothing new: a
- * picture drawn lower is drawn again at full once the motion has ended (MOTION_END_MS); otherwise nothing is drawn.
+ * While the picture changes, slow draws go at the lower resolution: a slow full draw shares the cores with the solver,
+ * and the answer to an input reaches the screen later (docs/page-notes.md). The motion's first draw decides by the
+ * last full one, so a GPU that keeps up never draws lower. Nothing new: a picture drawn lower is drawn again at full
+ * once the motion has ended (MOTION_END_MS); otherwise nothing is drawn.
  */
 export function motionDraw(s: MotionDrawState): 'skip' | 'reduced' | 'full' {
   if (s.changed) return s.motionResolution < 1 && s.fullDrawMs > s.slowDrawMs ? 'reduced' : 'full';

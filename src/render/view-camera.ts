@@ -42,7 +42,7 @@ export class ViewCamera {
   }
 
   /** Points the camera at the middle of `bounds` from the front (+z), far enough to see it whole; returns the middle. */
-  frame(bounds: Box3): Vector3 {
+  fit(bounds: Box3): Vector3 {
     const centre = boxCentre(bounds);
     const size = bounds.getSize(new Vector3());
     const fit = (0.5 * Math.max(size.y, size.x / this.camera.aspect)) / Math.tan((this.camera.fov * Math.PI) / 360);

@@ -131,7 +131,7 @@ export class EditorPanel {
 
   dispose(): void {
     window.removeEventListener('keydown', this.onKey);
-    this.files.destroy();
+    this.files.dispose();
     this.unsubscribe();
     this.muscle.dispose();
     this.folder.destroy();

@@ -100,7 +100,7 @@ export class FileImport {
   }
 
   /** Removes the picker, the message line and every listener added. */
-  destroy(): void {
+  dispose(): void {
     this.removeDrop();
     this.input.removeEventListener('change', this.onChange);
     this.input.remove();

@@ -66,7 +66,7 @@ export class HeadPanel {
   }
 
   dispose(): void {
-    this.files.destroy();
+    this.files.dispose();
     this.unsubscribe();
     this.folder.destroy();
   }

@@ -83,7 +83,7 @@ export class OutputsPanel {
     show('bending', 'bending constraints', 0);
     show('collision', 'collision constraints', 0);
     show('mode', 'worker mode');
-    show('workers', 'solver threads', 0);
+    show('workers', 'solver workers', 0);
     this.stopFrames = frames.onRender(this.countFrame);
     this.timer = setInterval(() => this.refresh(), o.refreshMs);
     this.refresh();

@@ -98,7 +98,7 @@ export class TimelinePanel {
 
   /** Removes the folder and stops following the face. */
   dispose(): void {
-    this.files.destroy();
+    this.files.dispose();
     this.unsubscribe();
     this.folder.destroy();
   }

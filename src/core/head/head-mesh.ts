@@ -129,8 +129,11 @@ export interface HeadFrameOptions {
   forward?: Axis | 'auto';
 }
 
-/** The frame found: file point p goes to `scale * rotation * p + offset` (rotation row-major). */
-export interface HeadFrame {
+/**
+ * The transform found, from the file's coordinate frame into the app's: file point p goes to
+ * `scale * rotation * p + offset` (rotation row-major).
+ */
+export interface HeadTransform {
   units: Unit;
   up: Axis;
   forward: Axis;
@@ -151,12 +154,12 @@ const HEAD_SIZE = 0.25;
  *   the surface comes to a point (the nose) rather than a broad cap (the back of the head).
  * Throws, naming the size, if no unit makes the mesh head-sized.
  */
-export function findHeadFrame(
+export function findHeadTransform(
   positions: Float32Array,
   indices: Uint32Array,
   options: HeadFrameOptions = {},
   source = 'the head',
-): HeadFrame {
+): HeadTransform {
   const { min, max } = positionBounds(positions);
   const extent = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
   let units: Unit;
@@ -195,17 +198,17 @@ export function findHeadFrame(
   return { units, up, forward, scale, rotation, offset: [-(lo + hi) / 2, 0, 0] };
 }
 
-/** Moves positions (xyz, in place) into the frame. */
-export function applyHeadFrame(positions: Float32Array, frame: HeadFrame): void {
-  const R = frame.rotation;
-  const s = frame.scale;
+/** Moves positions (xyz, in place) by the transform, into the app's frame. */
+export function applyHeadTransform(positions: Float32Array, transform: HeadTransform): void {
+  const R = transform.rotation;
+  const s = transform.scale;
   for (let i = 0; i < positions.length; i += 3) {
     const x = positions[i];
     const y = positions[i + 1];
     const z = positions[i + 2];
-    positions[i] = s * (R[0] * x + R[1] * y + R[2] * z) + frame.offset[0];
-    positions[i + 1] = s * (R[3] * x + R[4] * y + R[5] * z) + frame.offset[1];
-    positions[i + 2] = s * (R[6] * x + R[7] * y + R[8] * z) + frame.offset[2];
+    positions[i] = s * (R[0] * x + R[1] * y + R[2] * z) + transform.offset[0];
+    positions[i + 1] = s * (R[3] * x + R[4] * y + R[5] * z) + transform.offset[1];
+    positions[i + 2] = s * (R[6] * x + R[7] * y + R[8] * z) + transform.offset[2];
   }
 }
 

@@ -42,10 +42,8 @@ export function projectLengths(a: PartArrays, stiffness: number, bulge: number, 
  * times `stiffness` along the edge. The share of the edge to remove, 1 - r / |d|, is taken without a square root:
  * with u = |d|² / r² it is 4 (u² - 1) / (5u² + 10u + 1), the [2/2] Padé approximant of 1 - 1 / sqrt(u) at rest
  * (within 0.5 % of it from 0.6 to 1.5 times the rest length, zero at the same length, no pole: rest lengths are
- * positive, as zero-area triangles are dropped). The loop is bound by the divider, which roots and divisions share:
- * 11.5 ns an edge instead of 12.1 in a loop test. Cruder forms cost less but changed the physics: Jakobsen's
- * (u - 1) / (u + 1) (10.5 ns) pushes compressed edges apart too little and left the low head's lips creeping for
- * 600 frames after AU26.
+ * positive, as zero-area triangles are dropped). The loop is bound by the divider, which roots and divisions share;
+ * cruder forms cost less but push compressed edges apart too little (docs/solver-notes.md, "Length projection").
  */
 function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
   const s2 = 2 * stiffness; // half of it, times the approximant's 4

@@ -283,8 +283,8 @@ export class SkinSolver {
     return this.edgeLists.runs[this.edgeLists.runs.length - 1];
   }
 
-  /** Threads that solve: 2 with a partner attached, else 1. */
-  get threads(): number {
+  /** Workers (threads) that solve: 2 with a partner attached, else 1; the same count as the `workers` option. */
+  get workers(): number {
     return this.passes.partner ? 2 : 1;
   }
 

@@ -67,9 +67,8 @@ const PARTNER_MIN_CORES = 4;
 /** Solve time the render loop gives the `main` mode solver per frame, in ms. */
 const MAIN_THREAD_BUDGET_MS = 8;
 /**
- * How long after an input `awaitsAnswer` may say the skin has not answered it: a solver's first frame of a new input
- * comes 20 to 60 ms after it on the medium head in the page (2 cores, software WebGL); a view waits no longer than this
- * for it.
+ * How long after an input `awaitsAnswer` may say the skin has not answered it, a few times a first frame's usual delay
+ * (docs/page-notes.md); a view waits no longer than this for it.
  */
 const ANSWER_WAIT_MS = 150;
 const SETTLE_POLL_MS = 8;

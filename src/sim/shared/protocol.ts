@@ -5,12 +5,12 @@ import type { SkinParameters } from '../../core/solver/skin-parameters';
 
 /** How the solver runs: in a worker on shared memory, in a worker with transferred buffers, or on the main thread. */
 export type SolverMode = 'shared' | 'transfer' | 'main';
-export type WorkerMode = Exclude<SolverMode, 'main'>;
 
 /** Main to worker, first: the skin's render mesh, its colliders and the starting parameters. */
 export interface InitMessage {
   type: 'init';
-  mode: WorkerMode;
+  /** The modes a worker runs in. */
+  mode: Exclude<SolverMode, 'main'>;
   renderPositions: Float32Array;
   indices: Uint16Array | Uint32Array;
   colliders: Collider[];

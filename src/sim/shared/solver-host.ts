@@ -43,9 +43,8 @@ const WARM_UP_CONTRACTION = 0.6;
 const WARM_UP_FRAMES = 4;
 /**
  * Seeded random contraction sets (each muscle off or at a random contraction) the warm-up then runs the rig for, so
- * that its compiled code has seen every branch (muscles off, fading in, skin slid out of its zones): in the page the
- * rig took thesis-laughing's input in 23 ms at the median of 12 inputs after a quiet spell (12 to 39) with one warm
- * run, 16 ms (12 to 24) after 30, and the first frame came 59 against 43 ms after the input.
+ * that its compiled code has seen every branch (muscles off, fading in, skin slid out of its zones); the timings that
+ * chose 30 are in docs/page-notes.md.
  */
 const WARM_UP_RIG_SETS = 30;
 
@@ -147,9 +146,8 @@ export class SolverHost {
 
   /**
    * Runs the rig and a solver on a throwaway copy of the skin, a piece per `next()`, so that the first expression a
-   * user asks for meets compiled code. Cold, the medium head's first AU12 frame came 87 ms after its input (38 ms to
-   * apply it, 49 to solve it) and its next four frames cost twice their warm 11 ms. This host's solver, rig and
-   * colliders are not touched.
+   * user asks for meets compiled code (cold, the first frames cost about twice their warm time: docs/page-notes.md).
+   * This host's solver, rig and colliders are not touched.
    */
   *warmUp(): Generator<void, void, void> {
     const rig = this.rig;
@@ -214,7 +212,7 @@ export class SolverHost {
     writeSlotBounds(slot, positions);
     this.header.frames = this.solver.frames;
     this.header.sleeping = this.solver.sleeping;
-    this.header.workers = this.solver.threads;
+    this.header.workers = this.solver.workers;
     writeFrameHeader(slot, this.header, this.constraints);
   }
 
