@@ -3,6 +3,7 @@ import type { Controller } from 'lil-gui';
 import { SKIN_RANGES } from '../core/solver/skin-parameters';
 import type { FaceChange, FaceHandle } from '../face/face-handle';
 import { RESOLUTIONS, type Resolution } from '../face/face-options';
+import { APPEARANCE_RANGES } from '../render/view-options';
 import { downloadBlob, fileTimestamp } from './download';
 
 /** What the Rendering folder needs from the page. */
@@ -99,7 +100,7 @@ export class RenderingPanel {
     );
     this.add(
       this.folder
-        .add(s, 'browDensity', 0, 1, 0.05)
+        .add(s, 'browDensity', ...APPEARANCE_RANGES.browDensity!, 0.05)
         .name('brow density')
         .onChange((v: number) => face.setAppearance({ browDensity: v })),
       'brow-density',
