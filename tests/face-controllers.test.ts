@@ -5,10 +5,13 @@ import { parseRigText } from '../src/core/rig/rig-schema';
 import { EditorController } from '../src/face/editor-controller';
 import { ExpressionController } from '../src/face/expression-controller';
 import { EyesController } from '../src/face/eyes-controller';
+import { ExportController } from '../src/face/export-controller';
 import { FaceExpression } from '../src/face/face-expression';
 import { FaceParts } from '../src/face/face-parts';
 import type { FaceChange, FaceEyes, FaceMuscles, FaceTimeline, FaceView, TimelineState } from '../src/face/face-ports';
 import { HeadController } from '../src/face/head-controller';
+import { RigController } from '../src/face/rig-controller';
+import { SkinController } from '../src/face/skin-controller';
 import { TimelineController } from '../src/face/timeline-controller';
 import { ViewController } from '../src/face/view-controller';
 import type { SkinSimulation } from '../src/sim/main/skin-simulation';
@@ -175,5 +178,85 @@ describe('EditorController', () => {
     editor.setEditor(false);
     expect(seen.visible).toBeInstanceOf(Set);
     expect(changes).toEqual(['muscles', 'editor', 'editor']);
+  });
+});
+
+describe('SkinController', () => {
+  it('hands out copies of the skin, and tells listeners of new parameters only once the simulation took them', async () => {
+    const parts = new FaceParts();
+    const rest = new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    let parameters = { stiffness: 1 } as unknown as SkinParameters;
+    parts.simulation = {
+      rest,
+      triangles: new Uint32Array([0, 1, 2]),
+      readSimulation: (p: Float32Array, n: Float32Array) => {
+        p.set(rest);
+        n.fill(0.5);
+      },
+      setParameters: (p: Partial<SkinParameters>) => {
+        if ('bad' in p) throw new Error('skin parameters: expected one of the options ..., got "bad"');
+        parameters = { ...parameters, ...p };
+      },
+      parameters: () => parameters,
+      settle: async () => {},
+    } as unknown as SkinSimulation;
+    const changes: FaceChange[] = [];
+    parts.listen((c) => changes.push(c));
+    const skin = new SkinController(parts, Promise.resolve());
+    const a = skin.getSkin();
+    a.rest[0] = 9;
+    a.positions[0] = 9;
+    expect(skin.getSkin().rest[0]).toBe(0);
+    expect(skin.getSkin().normals[2]).toBe(0.5);
+    expect(() => skin.setSkinParameters({ bad: 1 } as never)).toThrow('skin parameters');
+    expect(changes).toEqual([]);
+    skin.setSkinParameters({ lengthIterations: 4 });
+    expect(changes).toEqual(['skin']);
+    await expect(skin.settle()).resolves.toBeUndefined();
+  });
+});
+
+describe('RigController', () => {
+  it('checks its source name, edits through the document, and tells listeners when an undo step closes', () => {
+    const { parts, changes } = readyParts();
+    const editor = new EditorController(parts);
+    editor.attachRig(new RigDocument(RIG), RIG, 'default');
+    const rig = new RigController(parts, editor.session);
+    expect(() => rig.setRig(RIG, 3 as unknown as string)).toThrow('setRig: source: expected a string, got 3');
+    const name = RIG.muscles[0].name;
+    rig.beginEdit();
+    rig.updateMuscle(name, { strength: 0.25 } as never);
+    rig.endEdit();
+    expect((rig.getRig().muscles[0] as { strength: number }).strength).toBe(0.25);
+    expect(changes.filter((c) => c === 'editor')).toEqual(['editor']);
+    expect(rig.undo()).toBe(true);
+    expect((rig.getRig().muscles[0] as { strength: number }).strength).toBe((RIG.muscles[0] as { strength: number }).strength);
+    expect(rig.getRig()).not.toBe(rig.getRig());
+  });
+});
+
+describe('ExportController', () => {
+  it('refuses a recording with nothing to record, or while one runs, before the recorder is asked', async () => {
+    const { parts } = readyParts();
+    parts.player = fakePlayer();
+    let recordings = 0;
+    let busy = false;
+    parts.recorder = {
+      record: async () => {
+        recordings++;
+        return new Blob();
+      },
+      recording: () => busy,
+    };
+    const timeline = new TimelineController(parts);
+    const exporter = new ExportController(parts, Promise.resolve(), timeline, () => {});
+    await expect(exporter.recordVideo({})).rejects.toThrow(/^recordVideo: seconds: give a length in seconds, or a timeline/);
+    await expect(exporter.recordVideo({ fps: 0 })).rejects.toThrow('recordVideo: fps: expected a number from 1 to 120, got 0');
+    busy = true;
+    await expect(exporter.recordVideo({ seconds: 1 })).rejects.toThrow('recordVideo: a recording is already running');
+    busy = false;
+    await exporter.recordVideo({ seconds: 1 });
+    expect(recordings).toBe(1);
+    expect(exporter.isRecording()).toBe(false);
   });
 });
