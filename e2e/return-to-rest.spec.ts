@@ -3,7 +3,7 @@ import { expect, test } from './fixtures';
 
 /**
  * The medium head as a user tries it: open the jaw (AU26, the lips slide over the lower teeth) and smile (the
- * happiness preset), let each settle, press reset: every vertex is back exactly at rest, as the README promises. AU26
+ * happiness preset), let each settle, press reset: every vertex is back exactly at rest, as docs/skin-simulation.md promises. AU26
  * once left the inner lower lip 12.8 mm off for good, caught on the teeth's wrong side.
  */
 test('after AU26 and the happiness preset, reset brings every vertex of the medium head back exactly to rest', async ({ page }) => {

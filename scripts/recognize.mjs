@@ -5,7 +5,7 @@
  * default light, the panels hidden), and asks an automatic recogniser (scripts/recognition.mjs: face-api's SSD
  * MobileNet face detector and FaceExpressionNet) which of its 7 classes the face shows. Prints a row per render (the
  * top class and its probability, the meant class and its probability) and a summary, writes them to
- * bench-results/recognition.json, and the same as a Markdown table for the README to bench-results/recognition.md.
+ * bench-results/recognition.json, and the same as a Markdown table for docs/recognition.md to bench-results/recognition.md.
  *
  * The meant class: happiness happy, sadness sad, anger angry, fear fearful, disgust disgusted, surprise surprised,
  * neutral neutral, each thesis-X as X and thesis-laughing as happy. Contempt has no class: its rows say `—`.
@@ -215,7 +215,7 @@ const summaryLines = [
 ];
 console.log(`\n${summaryLines.join('\n')}`);
 
-/** The README's table: a row per preset, a cell per view; the top class in bold where it is the meant one. */
+/** docs/recognition.md's table: a row per preset, a cell per view; the top class in bold where it is the meant one. */
 const cell = (r) => {
   if (!r.detected) return 'no face found';
   if (r.meant === null) return `${r.top} ${p(r.probability)}`;

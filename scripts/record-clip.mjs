@@ -1,5 +1,5 @@
 /**
- * Records a short clip of a softface page with `face.recordVideo` (frame by frame, see the README's "Video"):
+ * Records a short clip of a softface page with `face.recordVideo` (frame by frame, see docs/video.md):
  *   node scripts/record-clip.mjs <url> <out.webm> [width] [height] [fps] [--timeline <file.json>]
  * Start the app first (`npm start`, or `npm run build && npm run preview`). Without `--timeline` it records a smile
  * that turns into raised brows. The page's canvas is the clip's size, so the clip frames the head as the page does.

@@ -21,7 +21,7 @@ describe('every Action Unit at full intensity on the medium head', () => {
       expect(r).toMatchObject({ sleeping: true, nonFinite: 0, inverted: 0 });
       // Converged, not stopped by the safety net.
       expect(r.frames).toBeLessThan(LATE_MOTION);
-      // Its FACS amount (README, "How far each Action Unit moves the face"); a unit may have more than one measure
+      // Its FACS amount (docs/features.md, "How far each Action Unit moves the face"); a unit may have more than one measure
       // (AU4: down, and toward the midline).
       const rest = sim.host.topology.rest;
       const x = sim.host.solver.buffers.positions;

@@ -22,7 +22,7 @@ import { foldDepth, foldMap, type FoldMap } from './fixtures/fold-regions';
 import { loadHeadSimulation, MAX_SETTLE_FRAMES, resetToRest } from './fixtures/head-simulation';
 
 // The FACS appearance changes of the Action Units (FACS manual, Ekman, Friesen & Hager 2002) beyond each unit's main
-// move, on the medium head at full intensity, settled as the worker settles it (README, "How far each Action Unit
+// move, on the medium head at full intensity, settled as the worker settles it (docs/features.md, "How far each Action Unit
 // moves the face": the cue table).
 describe('Action Units show their FACS appearance changes, medium head', () => {
   let sim: Awaited<ReturnType<typeof loadHeadSimulation>>;
@@ -100,7 +100,7 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     expect(displacement(rest, x, lm.innerBrow).up).toBeGreaterThanOrEqual(2);
     expect(innerBrowGap(lm, rest) - innerBrowGap(lm, x)).toBeGreaterThanOrEqual(3);
     // Horizontal lines in the forehead's middle (0.55 mm deep). FACS confines them to the middle; here the sides fold
-    // as deep (0.63; README: not held yet).
+    // as deep (0.63; docs/features.md: not held yet).
     expect(foreheadMiddleAndSides(map, rest, normals, sim.triangles, x).middle).toBeGreaterThan(0.12);
   });
 
@@ -156,7 +156,7 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     const x = settle('AU17');
     expect(displacement(rest, x, lm.chin).up).toBeGreaterThanOrEqual(4);
     // No fold along the red shorter than about 5 mm: 0.00 mm (held before the cue was measured). AU15 (0.07) and AU16
-    // (0.16) fold the red near the corners: README, not held yet.
+    // (0.16) fold the red near the corners: docs/features.md, not held yet.
     expect(redRoughness(map, rest, normals, sim.triangles, x).rms).toBeLessThan(0.06);
   });
 

@@ -119,11 +119,11 @@ describe('stimulus lists', () => {
     ]);
   });
 
-  it("the README's example list is a valid list: 4 smiles, 2 fears and a clip", () => {
-    const readme = readFileSync(new URL('../README.md', import.meta.url), 'utf8');
-    const section = readme.slice(readme.indexOf('## Stimulus batches'));
+  it("docs/stimuli.md's example list is a valid list: 4 smiles, 2 fears and a clip", () => {
+    const doc = readFileSync(new URL('../docs/stimuli.md', import.meta.url), 'utf8');
+    const section = doc.slice(doc.indexOf('# Stimulus batches'));
     const json = section.slice(section.indexOf('```json') + 7, section.indexOf('```', section.indexOf('```json') + 7));
-    const stimuli = expandStimulusList(JSON.parse(json), 'README');
+    const stimuli = expandStimulusList(JSON.parse(json), 'docs/stimuli.md');
     expect(stimuli.map((s) => s.file)).toEqual([
       'smile_i0.5_l0_c0_medium.png',
       'smile_i0.5_l0_c1_medium.png',

@@ -21,7 +21,7 @@ export class ExportController {
   ) {}
 
   /**
-   * Records the timeline frame by frame (see the README's "Video"): a WebM video (VP9, else VP8) or a zip of PNG
+   * Records the timeline frame by frame (see docs/video.md): a WebM video (VP9, else VP8) or a zip of PNG
    * frames of `width` x `height`, `fps` frames a second, for `seconds` or the timeline's duration. `timeline` loads
    * one first, as `setTimeline` does. The solver runs a fixed number of frames per video frame, so a slow machine
    * records the same video as a fast one; the eye simulation is off meanwhile. Bad options reject naming the option
@@ -49,7 +49,7 @@ export class ExportController {
   }
 
   /**
-   * Exports the head (skin, eyes, teeth) as glTF (see the README's "Export to glTF"): each Action Unit and preset
+   * Exports the head (skin, eyes, teeth) as glTF (see docs/gltf-export.md): each Action Unit and preset
    * asked for becomes a morph target named after it, holding the skin it gives on its own at 1 once settled, and the
    * timeline (the loaded one, unless `timeline` is false) becomes an animation of the morph weights. Every target is
    * solved from the neutral face in turn, so this takes a while (`onProgress`, `signal`); the face shows it, and gets

@@ -10,7 +10,7 @@ export class EyesController {
   /**
    * Starts or stops the eye simulation (thesis 5.3.3): random blinks through the lids and gaze saccades, added on top
    * of the sliders. Off by default, so that pictures of the face are repeatable. `options` (seed, blink intervals and
-   * phases, fixation and saccade times, gaze range, how far the lids follow the gaze; README, "Eye simulation") replace
+   * phases, fixation and saccade times, gaze range, how far the lids follow the gaze; docs/features.md, "Eye simulation") replace
    * the simulation's over its defaults, and it starts afresh; bad ones throw, naming the option, and change nothing.
    */
   setEyeSimulation(on: boolean, options?: Partial<EyeSimulationOptions>): void {

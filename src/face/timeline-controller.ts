@@ -9,7 +9,7 @@ export class TimelineController {
   constructor(private readonly parts: FaceParts) {}
 
   /**
-   * Loads a timeline (a timeline document as JSON text or an object; see the README's "Timeline"), paused at 0 with
+   * Loads a timeline (a timeline document as JSON text or an object; see docs/timeline.md), paused at 0 with
    * the face set to its start. It is checked whole first: a problem throws a `TimelineError` naming its path
    * (`setTimeline: tracks.AU12L.keys[2].time: ...`; `source`, such as a file's name, replaces `setTimeline` there)
    * and changes nothing. While it plays or is sought it sets the sliders and presets it names; the rest stay.

@@ -18,7 +18,7 @@ export interface VideoOptions {
   format?: VideoFormat;
   /**
    * Solver frames between two video frames, 1 to 100: the skin reaches 2 % of a step's final shape in 44 to 63
-   * frames (see the README's benchmark), so 6 lets it follow a 10 fps video about as it follows the live page, and a
+   * frames (see docs/benchmark.md), so 6 lets it follow a 10 fps video about as it follows the live page, and a
    * 30 fps video more closely.
    */
   solverFramesPerVideoFrame?: number;
