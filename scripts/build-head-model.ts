@@ -1,18 +1,28 @@
 /**
  * Builds the default head models from the MakeHuman hm08 base mesh (CC0):
  *   npm run build:models -- [path/to/makehuman-hm08] [--out public/models]
- * Writes head-low.glb, head-medium.glb, head-high.glb and CREDITS.md. Running it twice gives identical files.
+ *     [--identity <stock name or identity JSON> --targets path/to/makehuman-targets/macrodetails]
+ * Writes head-low.glb, head-medium.glb, head-high.glb and CREDITS.md. Running it twice gives identical files. With
+ * `--identity`, the base mesh is first moved by MakeHuman's macro targets for that person (sex, age, ancestry), and
+ * the head is cut where the base mesh's is, so that it has the default head's vertices and faces.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
+import { gunzipSync } from 'node:zlib';
+import { applyMacroTargets, checkIdentity, macroTargetWeights, parseMacroTarget, STOCK_IDENTITIES } from '../src/core/head/identity';
 import { writeGlb } from './model/glb';
-import { buildHeadLevels, type LevelStats } from './model/head';
+import { buildHeadLevels, neckCutStart, sourceMesh, type LevelStats } from './model/head';
 import { parseObj } from './model/obj';
 
 const args = process.argv.slice(2);
-const outIndex = args.indexOf('--out');
-const outDir = resolve(outIndex >= 0 ? args[outIndex + 1] : 'public/models');
-const sourceDir = resolve(args.find((a, i) => !a.startsWith('--') && args[i - 1] !== '--out') ?? '../shared/assets/makehuman-hm08');
+const option = (name: string): string | undefined => {
+  const i = args.indexOf(name);
+  return i >= 0 ? args[i + 1] : undefined;
+};
+const outDir = resolve(option('--out') ?? 'public/models');
+const sourceDir = resolve(args.find((a, i) => !a.startsWith('--') && !args[i - 1]?.startsWith('--')) ?? '../shared/assets/makehuman-hm08');
+const identityArg = option('--identity');
+const targetsDir = resolve(option('--targets') ?? '../shared/assets/makehuman-targets/macrodetails');
 
 const objPath = join(sourceDir, 'base.obj');
 let text: string;
@@ -22,7 +32,24 @@ try {
   console.error(`Cannot read ${objPath}: pass the folder that holds the MakeHuman hm08 base.obj as the first argument.`);
   process.exit(1);
 }
-const levels = buildHeadLevels(parseObj(text, 'base.obj'));
+const obj = parseObj(text, 'base.obj');
+let cutStart: number | undefined;
+if (identityArg !== undefined) {
+  const identity = STOCK_IDENTITIES[identityArg] ?? checkIdentity(JSON.parse(identityArg), '--identity');
+  cutStart = neckCutStart(sourceMesh(obj));
+  const vertices = obj.positions.length / 3;
+  const targets = macroTargetWeights(identity).map(({ target, weight }) => {
+    const file = join(targetsDir, `${target}.target.gz`);
+    return { target: parseMacroTarget(gunzipSync(readFileSync(file)).toString('utf8'), vertices, file), weight };
+  });
+  applyMacroTargets(obj.positions, targets);
+  console.log(
+    `identity ${JSON.stringify(identity)} from ${macroTargetWeights(identity)
+      .map((t) => t.target)
+      .join(', ')}`,
+  );
+}
+const levels = buildHeadLevels(obj, cutStart);
 mkdirSync(outDir, { recursive: true });
 for (const level of levels) {
   const bytes = await writeGlb(level.root, level.sceneExtras);

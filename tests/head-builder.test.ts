@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { boundaryLoops } from '../scripts/model/cut';
 import { writeGlb } from '../scripts/model/glb';
-import { buildHeadLevels, cutHead, sourceMesh } from '../scripts/model/head';
+import { buildHeadLevels, cutHead, neckCutStart, sourceMesh } from '../scripts/model/head';
 import { parseObj } from '../scripts/model/obj';
 import { vertexCount } from '../src/core/head/polymesh';
 import { syntheticHm08Obj } from './fixtures/synthetic-hm08';
@@ -17,6 +17,24 @@ describe('head model builder (on a synthetic hm08-like mesh)', () => {
     for (const v of cut.neckLoop) expect(cut.mesh.positions[3 * v + 1]).toBeCloseTo(ringY, 5);
     for (let v = 0; v < vertexCount(cut.mesh); v++) expect(cut.mesh.positions[3 * v + 1]).toBeGreaterThan(ringY - 1e-6);
     expect(boundaryLoops(cut.mesh)).toHaveLength(1);
+  });
+
+  it('cuts a mesh moved as identity targets move it where the base mesh is cut, so the head keeps its vertices', () => {
+    const start = neckCutStart(sourceMesh(obj));
+    // A person a ring shorter in the neck: every vertex 3/13 dm lower, and the head a little wider.
+    const moved = parseObj(syntheticHm08Obj(16, 14));
+    for (let i = 0; i < moved.positions.length; i += 3) {
+      moved.positions[i] *= 1.1;
+      moved.positions[i + 1] -= 3 / 13;
+    }
+    const base = cutHead(sourceMesh(obj));
+    const cut = cutHead(sourceMesh(moved), start);
+    expect(vertexCount(cut.mesh)).toBe(vertexCount(base.mesh));
+    expect(cut.neckLoop).toEqual(base.neckLoop);
+    for (let v = 0; v < vertexCount(cut.mesh); v++)
+      expect(cut.mesh.positions[3 * v + 1]).toBeCloseTo(base.mesh.positions[3 * v + 1] - 3 / 13, 9);
+    // Without the base's start the cut would run through the ring nearest the cut point in the moved mesh: another ring.
+    expect(vertexCount(cutHead(sourceMesh(moved)).mesh)).not.toBe(vertexCount(base.mesh));
   });
 
   it('writes three resolutions whose counts follow Catmull-Clark: V + E + F, then 4 quads per quad', () => {

@@ -89,14 +89,13 @@ export interface HeadCut {
   neckLoop: number[];
 }
 
-/** Cuts the head off the closed body surface along the quad edge loop that passes NECK_CUT_FRONT. */
-export function cutHead(source: SourceMesh, front = NECK_CUT_FRONT): HeadCut {
+/** The body's front-midline vertex nearest `front` (an index into the body group's mesh), where the neck cut starts. */
+export function neckCutStart(source: SourceMesh, front = NECK_CUT_FRONT): number {
   const body = groupMesh(source, 'body');
   const P = body.mesh.positions;
-  const V = vertexCount(body.mesh);
   let start = -1;
   let best = Infinity;
-  for (let v = 0; v < V; v++) {
+  for (let v = 0; v < vertexCount(body.mesh); v++) {
     if (Math.abs(P[3 * v]) > 1e-6) continue;
     const d = Math.hypot(P[3 * v + 1] - front[1], P[3 * v + 2] - front[2]);
     if (d < best) {
@@ -105,6 +104,17 @@ export function cutHead(source: SourceMesh, front = NECK_CUT_FRONT): HeadCut {
     }
   }
   if (start < 0) throw new Error('the body has no vertex on the midline x = 0');
+  return start;
+}
+
+/**
+ * Cuts the head off the closed body surface along the quad edge loop that starts at the body vertex `start` (by
+ * default the one nearest NECK_CUT_FRONT; a head made with identity targets starts where the base mesh's does).
+ */
+export function cutHead(source: SourceMesh, start = neckCutStart(source)): HeadCut {
+  const body = groupMesh(source, 'body');
+  const P = body.mesh.positions;
+  const V = vertexCount(body.mesh);
   // Leave the midline along the edge that points most sideways toward the subject's left (+x).
   let next = -1;
   let bestSideways = 0;
@@ -167,10 +177,14 @@ export interface HeadLevel {
   sceneExtras: Record<string, unknown>;
 }
 
-/** Builds the parts shared by every resolution (eyes, teeth, tongue, pivots) and the skin of each resolution. */
-export function buildHeadLevels(obj: ObjMesh): HeadLevel[] {
+/**
+ * Builds the parts shared by every resolution (eyes, teeth, tongue, pivots) and the skin of each resolution. `cutStart`
+ * is the body vertex the neck cut starts at (see neckCutStart): a mesh moved by identity targets passes the base
+ * mesh's, so that every identity's head has the same vertices and faces.
+ */
+export function buildHeadLevels(obj: ObjMesh, cutStart?: number): HeadLevel[] {
   const source = sourceMesh(obj);
-  const cut = cutHead(source);
+  const cut = cutHead(source, cutStart);
 
   const pivots: Record<string, [number, number, number]> = {};
   for (const [name, joint] of Object.entries(PIVOT_JOINTS)) pivots[name] = scaled(groupCentre(source, joint));

@@ -139,7 +139,10 @@ export function parseMacroTarget(text: string, vertexCount: number, source: stri
 }
 
 /** Adds the weighted targets' offsets to `positions` (xyz per base vertex, in place). */
-export function applyMacroTargets(positions: Float32Array, targets: readonly { target: MacroTarget; weight: number }[]): void {
+export function applyMacroTargets(
+  positions: Float32Array | Float64Array,
+  targets: readonly { target: MacroTarget; weight: number }[],
+): void {
   for (const { target, weight } of targets) {
     const { indices, offsets } = target;
     for (let i = 0; i < indices.length; i++) {
