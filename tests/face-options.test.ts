@@ -53,7 +53,7 @@ describe('createFace options', () => {
       [{ appearance: { browColor: 'brown' } }, 'createFace: appearance: browColor: expected a colour "#rrggbb", got "brown"'],
       [
         { appearance: { beard: true } },
-        'createFace: appearance: expected one of the options brows, browColor, browDensity, lashes, lashColor, got "beard"',
+        'createFace: appearance: expected one of the options skinColor, brows, browColor, browDensity, lashes, lashColor, got "beard"',
       ],
       [{ motionResolution: 0.1 }, 'createFace: motionResolution: expected a number from 0.25 to 1, got 0.1'],
       [{ motionResolution: Number.NaN }, 'createFace: motionResolution: expected a number from 0.25 to 1, got NaN'],

@@ -3,6 +3,7 @@ import {
   type Box3,
   Color,
   Mesh,
+  MeshPhysicalMaterial,
   PMREMGenerator,
   type PerspectiveCamera,
   Scene,
@@ -220,7 +221,7 @@ export class HeadView {
       this.appearance,
       checkOptions<AppearanceOptions>('setAppearance', partial, APPEARANCE_DEFAULTS, { ranges: APPEARANCE_RANGES }),
     );
-    this.head?.hair?.setAppearance(this.appearance);
+    if (this.head) applyAppearance(this.head, this.appearance);
     this.invalidate();
   }
 
@@ -448,7 +449,7 @@ export class HeadView {
           m.needsUpdate = true;
         }
     });
-    head.hair?.setAppearance(this.appearance);
+    applyAppearance(head, this.appearance);
     for (const eye of head.eyes) eye.visible = this.render.showEyes;
     for (const t of head.teeth) t.visible = this.render.showTeeth;
     if (head.tongue) head.tongue.visible = this.render.showTeeth;
@@ -463,6 +464,20 @@ export class HeadView {
     this.view.setAspect(w / h);
     this.invalidate();
   }
+}
+
+/**
+ * Gives a head the appearance asked for: the hair's, and the skin's colour. The default colour keeps the skin
+ * material's own (its linear value, which the sRGB hex only rounds), so that a face never asked for another is drawn
+ * exactly as before.
+ */
+function applyAppearance(head: HeadModel, appearance: Required<AppearanceOptions>): void {
+  head.hair?.setAppearance(appearance);
+  const skin = head.skin.material;
+  if (!(skin instanceof MeshPhysicalMaterial)) return;
+  skin.userData.ownColor ??= skin.color.clone();
+  if (appearance.skinColor === APPEARANCE_DEFAULTS.skinColor) skin.color.copy(skin.userData.ownColor);
+  else skin.color.set(appearance.skinColor);
 }
 
 /** Events on the canvas after which the view draws for a while (see HeadView.invalidate). */

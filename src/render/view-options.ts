@@ -60,8 +60,13 @@ export const CAMERA_RANGES: Readonly<Record<keyof CameraOptions, readonly [numbe
   distance: [0.2, 5],
 });
 
-/** How the face's hair looks: eyebrows and eyelashes, each with an off switch for studies that want a bare face. */
+/**
+ * How the face looks beyond its shape: the skin's colour, and eyebrows and eyelashes, each with an off switch for
+ * studies that want a bare face.
+ */
 export interface AppearanceOptions {
+  /** The skin's base colour, sRGB `#rrggbb`; the lips' tint and the mouth's shading keep their share of it. */
+  skinColor: string;
   /** Draw the eyebrows. */
   brows: boolean;
   /** Eyebrow colour, sRGB `#rrggbb`. */
@@ -74,8 +79,9 @@ export interface AppearanceOptions {
   lashColor: string;
 }
 
-/** Dark brown brows and near-black lashes, as on most faces. */
+/** The default head's light skin, dark brown brows and near-black lashes. */
 export const APPEARANCE_DEFAULTS: Readonly<Required<AppearanceOptions>> = Object.freeze({
+  skinColor: '#cba08b',
   brows: true,
   browColor: '#4a3427',
   browDensity: 1,

@@ -32,6 +32,7 @@ export class RenderingPanel {
     wireframe: boolean;
     showEyes: boolean;
     showTeeth: boolean;
+    skinColor: string;
     brows: boolean;
     browColor: string;
     browDensity: number;
@@ -83,6 +84,13 @@ export class RenderingPanel {
         .name('show teeth')
         .onChange((v: boolean) => face.setRenderOptions({ showTeeth: v })),
       'show-teeth',
+    );
+    this.add(
+      this.folder
+        .addColor(s, 'skinColor')
+        .name('skin colour')
+        .onChange((v: string) => face.setAppearance({ skinColor: v })),
+      'skin-color',
     );
     this.add(
       this.folder
