@@ -107,3 +107,8 @@ export function rotateAboutAxis(
   out[offset + 1] += y;
   out[offset + 2] += z;
 }
+
+/** `x` clamped to 0..1. */
+export function clamp01(x: number): number {
+  return x < 0 ? 0 : x > 1 ? 1 : x;
+}

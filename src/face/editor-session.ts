@@ -1,3 +1,4 @@
+import { clamp01 } from '../core/math3';
 import { checkBoolean, checkChoice, checkNumber, checkOptions, type OptionRules } from '../core/check';
 import { newMuscle, type RigDocument } from '../core/rig/rig-document';
 import type { Muscle, Rig } from '../core/rig/rig-types';
@@ -179,7 +180,7 @@ export class EditorSession {
   setPreviewContraction(value: number): void {
     checkNumber('setPreviewContraction', '', value);
     this.document();
-    this.preview = Math.min(1, Math.max(0, value));
+    this.preview = clamp01(value);
     this.applyPreview();
   }
 

@@ -1,3 +1,4 @@
+import { clamp01 } from '../core/math3';
 import { ACTION_UNIT_ID, checkNumber, refusal } from '../core/check';
 import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
 import type { Rig } from '../core/rig/rig-types';
@@ -51,7 +52,7 @@ export class FaceExpression {
 
   /** Contracts muscle `index` by at least `value` (0..1) while it is edited; null ends the preview. */
   setPreview(index: number | null, value = 0): void {
-    this.preview = index === null ? null : { index, value: Math.min(1, Math.max(0, value)) };
+    this.preview = index === null ? null : { index, value: clamp01(value) };
     this.send();
   }
 

@@ -3,6 +3,7 @@
  * v runs outward on the iris (0 at the centre, 1 at the limbus) and backward on the sclera (0 at the limbus, 1 at the
  * back pole). Seeded, so every load looks the same. Pure data (RGBA8, sRGB-encoded colour), no DOM.
  */
+import { clamp01 } from '../core/math3';
 import { mulberry32 } from '../core/random';
 
 /** An RGBA8 image, rows from v = 0 upward, colour sRGB-encoded. */
@@ -126,13 +127,13 @@ export function generateScleraImage(seed = 5): EyeImage {
 }
 
 function smoothstep(a: number, b: number, x: number): number {
-  const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
+  const t = clamp01((x - a) / (b - a));
   return t * t * (3 - 2 * t);
 }
 
 /** Linear 0..1 to an sRGB-encoded byte. */
 function toSrgbByte(linear: number): number {
-  const c = Math.min(1, Math.max(0, linear));
+  const c = clamp01(linear);
   const s = c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055;
   return Math.round(255 * s);
 }

@@ -1,3 +1,4 @@
+import { clamp01 } from '../core/math3';
 import {
   BoxGeometry,
   BufferGeometry,
@@ -177,7 +178,7 @@ export class MuscleView {
   setContractions(contractions: ArrayLike<number>): void {
     for (let i = 0; i < this.glyphs.length; i++) {
       const g = this.glyphs[i];
-      const c = Math.min(1, Math.max(0, contractions[i] ?? 0));
+      const c = clamp01(contractions[i] ?? 0);
       // Colour changes are cheap but not free; the eye simulation reports contractions every frame.
       if (Math.abs(c - g.level) < 0.01) continue;
       g.level = c;

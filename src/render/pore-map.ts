@@ -3,6 +3,7 @@
  * skin's surface and a faint grain, from a seeded generator, so every load (and every test) gives the same bytes.
  * Pure data (no DOM), so it runs in tests; materials.ts turns it into a texture.
  */
+import { clamp01 } from '../core/math3';
 import { mulberry32 } from '../core/random';
 
 /** Options of the pore map. Sizes are in texels; the map tiles, so all patterns wrap around its edges. */
@@ -117,7 +118,7 @@ export function generatePoreMap(options: Partial<PoreMapOptions> = {}): PoreMap 
       data[4 * i] = encode(nx / len);
       data[4 * i + 1] = encode(ny / len);
       data[4 * i + 2] = encode(1 / len);
-      data[4 * i + 3] = Math.round(255 * Math.min(1, Math.max(0, 1 + (0.35 * (height[i] - mean)) / spread)));
+      data[4 * i + 3] = Math.round(255 * clamp01(1 + (0.35 * (height[i] - mean)) / spread));
     }
   }
   return { width: n, height: n, data };

@@ -3,6 +3,7 @@
  * per-vertex multiplier of the albedo. Worked out once from the head at rest (metres, +y up, face toward +z); the
  * colours then ride on their vertices through every expression.
  */
+import { clamp01 } from '../core/math3';
 
 /** Where the tinted regions are, on the MakeHuman hm08 head (scripts/build-head-model.ts). */
 export interface SkinTintOptions {
@@ -88,6 +89,6 @@ export function mouthLight(z: number, front: number): number {
 }
 
 function smoothstep(a: number, b: number, x: number): number {
-  const t = Math.min(1, Math.max(0, (x - a) / (b - a)));
+  const t = clamp01((x - a) / (b - a));
   return t * t * (3 - 2 * t);
 }

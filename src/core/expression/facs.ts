@@ -3,6 +3,7 @@
  * the expression state that turns Action Unit sliders and preset weights into muscle contractions. Pure: no DOM.
  */
 
+import { clamp01 } from '../math3';
 import { ACTION_UNIT_ID, checkNumber, refusal, show } from '../check';
 import type { PresetDefinition, Rig } from '../rig/rig-types';
 
@@ -127,10 +128,6 @@ interface ContractionPlan {
 
 /** Rigs are treated as immutable once parsed, so a plan is built once per rig object. */
 const plans = new WeakMap<Rig, ContractionPlan>();
-
-function clamp01(x: number): number {
-  return x < 0 ? 0 : x > 1 ? 1 : x;
-}
 
 /**
  * Action Unit sliders and preset weights, and the intensities and muscle contractions they add up to. Inputs are

@@ -5,6 +5,7 @@
  * into the eye's opening. Each hair is then anchored to the skin triangle under its root (see hair.ts). Seeded: the
  * same head gets the same hairs. Pure: no three.js, no DOM.
  */
+import { clamp01 } from '../math3';
 import { FrontCaster, type FrontHit } from './front-caster';
 import { ribbonTriangles, strandsAtRest, type HairStrands } from './hair';
 import { mulberry32 } from '../random';
@@ -128,7 +129,7 @@ function at(e: EyeFrame, a: number, b: number): [number, number] {
 }
 
 function smooth(t: number): number {
-  const c = Math.min(1, Math.max(0, t));
+  const c = clamp01(t);
   return c * c * (3 - 2 * c);
 }
 

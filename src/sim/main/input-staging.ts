@@ -1,3 +1,4 @@
+import { clamp01 } from '../../core/math3';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from '../../core/solver/muscle-inputs';
 import { checkOptions } from '../../core/check';
 import { SKIN_DEFAULTS, SKIN_INTEGERS, SKIN_PARAMETERS, SKIN_RANGES, type SkinParameters } from '../../core/solver/skin-parameters';
@@ -92,7 +93,7 @@ export class InputStaging {
         throw new Error(`setContractions: contraction ${i} is not a finite number: ${values[i]}`);
     }
     this.begin();
-    for (let i = 0; i < values.length; i++) C[i] = Math.min(1, Math.max(0, values[i]));
+    for (let i = 0; i < values.length; i++) C[i] = clamp01(values[i]);
     C.fill(0, count);
     Atomics.add(this.control.words, CONTROL_CONTRACTION_REVISION, 1);
     this.contractionsChanged = true;
