@@ -11,8 +11,8 @@ import { join, resolve } from 'node:path';
 import { gunzipSync } from 'node:zlib';
 import { applyMacroTargets, checkIdentity, macroTargetWeights, parseMacroTarget, STOCK_IDENTITIES } from '../src/core/head/identity';
 import { writeGlb } from './model/glb';
-import { buildHeadLevels, neckCutStart, sourceMesh, type LevelStats } from './model/head';
-import { parseObj } from './model/obj';
+import { buildHeadLevels, neckCutStart, sourceMesh, type LevelStats } from '../src/core/head/build/head-build';
+import { parseObj } from '../src/core/head/build/obj';
 
 const args = process.argv.slice(2);
 const option = (name: string): string | undefined => {
@@ -85,7 +85,7 @@ we credit MakeHuman because their work made this head possible. The files here a
    vertex nearest (0, 5.78, 0.69) dm: every kept face is a whole quad, the cut is one clean loop.
 3. Subdivides the skin with Catmull-Clark (crease rules on the neck boundary, UVs interpolated per face) 0, 1 and 2 times.
 4. Builds an eyeball (sclera, iris with pupil, clear cornea) of the base mesh's eye radius at each eye joint.
-5. Builds the teeth procedurally (\`scripts/model/teeth.ts\`, no outside model): per arch sixteen crowns of typical
+5. Builds the teeth procedurally (\`src/core/head/build/teeth.ts\`, no outside model): per arch sixteen crowns of typical
    adult sizes along an arch fitted to the base mesh's low-poly teeth, and a pink gum band round their necks, with
    occlusion baked into their vertex colours (darker toward the back of the mouth). The
    tongue is the base mesh's, subdivided once, lowered and narrowed a little. Lower teeth and tongue hang under a

@@ -13,8 +13,8 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { MeshoptSimplifier } from 'meshoptimizer';
 import { writeGlb } from './model/glb';
-import { cutHead, DECIMETRE, MATERIALS, sourceMesh } from './model/head';
-import { parseObj } from './model/obj';
+import { cutHead, DECIMETRE, MATERIALS, sourceMesh } from '../src/core/head/build/head-build';
+import { parseObj } from '../src/core/head/build/obj';
 import { faceCount, toRenderMesh, vertexCount, type PolyMesh } from '../src/core/head/polymesh';
 
 const args = process.argv.slice(2);

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { boundaryLoops, cutAlongLoop, findEdgeLoop } from '../scripts/model/cut';
+import { boundaryLoops, cutAlongLoop, findEdgeLoop } from '../src/core/head/build/cut';
 import { faceCount, vertexCount } from '../src/core/head/polymesh';
 import { cappedTube, grid } from './fixtures/meshes';
 

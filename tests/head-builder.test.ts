@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { boundaryLoops } from '../scripts/model/cut';
+import { boundaryLoops } from '../src/core/head/build/cut';
 import { writeGlb } from '../scripts/model/glb';
-import { buildHeadLevels, cutHead, neckCutStart, sourceMesh } from '../scripts/model/head';
-import { parseObj } from '../scripts/model/obj';
+import { buildHeadLevels, cutHead, neckCutStart, sourceMesh } from '../src/core/head/build/head-build';
+import { parseObj } from '../src/core/head/build/obj';
 import { vertexCount } from '../src/core/head/polymesh';
 import { syntheticHm08Obj } from './fixtures/synthetic-hm08';
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { parseObj } from '../scripts/model/obj';
+import { parseObj } from '../src/core/head/build/obj';
 
 describe('OBJ parser', () => {
   it('reads positions, uvs, faces and groups, with 1-based and negative indices', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { boundaryLoops } from '../scripts/model/cut';
+import { boundaryLoops } from '../src/core/head/build/cut';
 import { buildEdges, faceCount, vertexCount } from '../src/core/head/polymesh';
 import { catmullClark } from '../src/core/head/subdivide';
 import { cube, grid } from './fixtures/meshes';

@@ -1,32 +1,5 @@
 import { Document, NodeIO, type Node } from '@gltf-transform/core';
-import type { TriGeometry } from './eye';
-
-/** A physically based material as glTF describes it. */
-export interface MaterialSpec {
-  name: string;
-  baseColor: [number, number, number, number];
-  roughness: number;
-  metallic?: number;
-  blend?: boolean;
-  doubleSided?: boolean;
-}
-
-/** One primitive: geometry plus its material. */
-export interface PartSpec {
-  geometry: TriGeometry;
-  material: MaterialSpec;
-}
-
-/** A node of the model; `translation` places its origin (its pivot) in the parent's frame. */
-export interface NodeSpec {
-  name: string;
-  translation?: [number, number, number];
-  parts?: PartSpec[];
-  /** Names this node's mesh when several nodes share one (both eyes). */
-  meshName?: string;
-  children?: NodeSpec[];
-  extras?: Record<string, unknown>;
-}
+import type { MaterialSpec, NodeSpec } from '../../src/core/head/build/head-spec';
 
 /** Writes a scene of nodes to GLB bytes; the same input always gives the same bytes. */
 export async function writeGlb(root: NodeSpec, sceneExtras: Record<string, unknown>): Promise<Uint8Array> {

@@ -1,4 +1,4 @@
-import { buildEdges, edgeKey, faceCount, polyMeshFromFaces, vertexCount, type PolyMesh } from '../../src/core/head/polymesh';
+import { buildEdges, edgeKey, faceCount, polyMeshFromFaces, vertexCount, type PolyMesh } from '../polymesh';
 
 /** Per-vertex neighbours and incident faces of a polygon mesh. */
 interface Adjacency {

@@ -3,7 +3,7 @@
  * typical adult sizes set along an arch curve, and a gum band with papillae between them. The arch curve and the
  * occlusal plane are fitted to where the base mesh's low-poly teeth sit, so that the crowns fit inside its lips.
  */
-import type { TriGeometry } from './eye';
+import type { TriGeometry } from './head-spec';
 
 const MM = 0.001;
 
@@ -54,7 +54,7 @@ export interface ArchOptions {
 }
 
 /** The arches of the default head. */
-export const ARCH_DEFAULTS: ArchOptions = { inset: 1.8, incisorOverlap: 1.4, segments: 20, gumSamples: 6 };
+const ARCH_DEFAULTS: ArchOptions = { inset: 1.8, incisorOverlap: 1.4, segments: 20, gumSamples: 6 };
 
 /** A built arch: the crowns as one geometry, the gum as another (metres, head space). */
 export interface DentalArch {
@@ -198,7 +198,7 @@ export function fitOcclusalPlane(upper: ArrayLike<number>, lower: ArrayLike<numb
  * from the midline (metres), `inner` 0 on the lip side to 1 on the tongue side, `neck` 0 at the gum line to 1 away
  * from it.
  */
-export function occlusion(s: number, inner: number, neck: number): number {
+function occlusion(s: number, inner: number, neck: number): number {
   const t = Math.min(1, Math.max(0, (s - 0.012) / 0.04));
   const back = 1 - 0.5 * t * t * (3 - 2 * t);
   return back * (1 - 0.2 * inner) * (0.8 + 0.2 * Math.min(1, Math.max(0, neck)));

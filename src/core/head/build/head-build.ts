@@ -1,27 +1,32 @@
-import { HEAD_NODES } from '../../src/core/head/head-nodes';
+/**
+ * Builds the head model's resolutions from the MakeHuman hm08 base mesh: the skin cut off at the neck and subdivided,
+ * eyeballs, teeth and tongue, and the pivots. Pure (no DOM, no three.js, no Node): the build script writes the result
+ * as GLB (scripts/model/glb.ts).
+ */
+import { HEAD_NODES } from '../head-nodes';
 import { boundaryLoops, cutAlongLoop, findEdgeLoop, subsetFaces } from './cut';
-import { buildEyeball, type TriGeometry } from './eye';
+import { buildEyeball } from './eye';
 import { buildArch, fitArchOutline, fitOcclusalPlane } from './teeth';
-import type { MaterialSpec, NodeSpec } from './glb';
+import type { MaterialSpec, NodeSpec, TriGeometry } from './head-spec';
 import type { ObjMesh } from './obj';
-import { catmullClark } from '../../src/core/head/subdivide';
-import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from '../../src/core/head/polymesh';
+import { catmullClark } from '../subdivide';
+import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from '../polymesh';
 
 /** MakeHuman works in decimetres; glTF and the app work in metres. */
 export const DECIMETRE = 0.1;
 
 /** The resolutions written: name, Catmull-Clark levels. */
-export const LEVELS = [
+const LEVELS = [
   { name: 'low', subdivisions: 0 },
   { name: 'medium', subdivisions: 1 },
   { name: 'high', subdivisions: 2 },
 ] as const;
 
 /** Where the neck cut runs: the edge loop through the front-midline vertex nearest this point (hm08, decimetres). */
-export const NECK_CUT_FRONT: [number, number, number] = [0, 5.78, 0.69];
+const NECK_CUT_FRONT: [number, number, number] = [0, 5.78, 0.69];
 
 /** Joint cubes of hm08 whose centres become the model's pivots, by the pivot name used in the model. */
-export const PIVOT_JOINTS: Record<string, string> = {
+const PIVOT_JOINTS: Record<string, string> = {
   'eye-l': 'joint-l-eye',
   'eye-r': 'joint-r-eye',
   'upperlid-l': 'joint-l-upperlid',
@@ -67,14 +72,14 @@ export function sourceMesh(obj: ObjMesh): SourceMesh {
 }
 
 /** The faces of one OBJ group as their own mesh; throws naming the group if the OBJ lacks it. */
-export function groupMesh(source: SourceMesh, group: string): ReturnType<typeof subsetFaces> {
+function groupMesh(source: SourceMesh, group: string): ReturnType<typeof subsetFaces> {
   const faces = source.groupFaces.get(group);
   if (!faces || faces.length === 0) throw new Error(`the base mesh has no group "${group}"`);
   return subsetFaces(source.mesh, faces);
 }
 
 /** Centre of a group's vertices (the joint cubes mark pivots this way). */
-export function groupCentre(source: SourceMesh, group: string): [number, number, number] {
+function groupCentre(source: SourceMesh, group: string): [number, number, number] {
   const { mesh } = groupMesh(source, group);
   const c: [number, number, number] = [0, 0, 0];
   const n = vertexCount(mesh);
@@ -152,7 +157,7 @@ export function cutHead(source: SourceMesh, start = neckCutStart(source)): HeadC
 }
 
 /** Applies `levels` rounds of Catmull-Clark. */
-export function subdivide(mesh: PolyMesh, levels: number): PolyMesh {
+function subdivide(mesh: PolyMesh, levels: number): PolyMesh {
   let m = mesh;
   for (let i = 0; i < levels; i++) m = catmullClark(m);
   return m;
@@ -171,7 +176,7 @@ export interface LevelStats {
 }
 
 /** One head resolution ready to write. */
-export interface HeadLevel {
+export interface BuiltHead {
   stats: LevelStats;
   root: NodeSpec;
   sceneExtras: Record<string, unknown>;
@@ -182,7 +187,7 @@ export interface HeadLevel {
  * is the body vertex the neck cut starts at (see neckCutStart): a mesh moved by identity targets passes the base
  * mesh's, so that every identity's head has the same vertices and faces.
  */
-export function buildHeadLevels(obj: ObjMesh, cutStart?: number): HeadLevel[] {
+export function buildHeadLevels(obj: ObjMesh, cutStart?: number): BuiltHead[] {
   const source = sourceMesh(obj);
   const cut = cutHead(source, cutStart);
 

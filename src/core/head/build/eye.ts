@@ -1,13 +1,5 @@
-import { mulberry32 } from '../../src/core/random';
-
-/** An indexed triangle geometry with optional vertex colours. */
-export interface TriGeometry {
-  positions: Float32Array;
-  normals: Float32Array;
-  uvs: Float32Array;
-  colors?: Float32Array;
-  indices: Uint32Array;
-}
+import { mulberry32 } from '../../random';
+import type { TriGeometry } from './head-spec';
 
 /** Options of the procedural eyeball. */
 export interface EyeballOptions {
@@ -28,7 +20,7 @@ export interface EyeballOptions {
   seed: number;
 }
 
-export const EYEBALL_DEFAULTS: Required<Omit<EyeballOptions, 'radius'>> = {
+const EYEBALL_DEFAULTS: Required<Omit<EyeballOptions, 'radius'>> = {
   irisRatio: 0.45,
   pupilRatio: 0.34,
   corneaBulge: 0.025,
