@@ -6,8 +6,8 @@
 import { HEAD_NODES } from '../head-nodes';
 import { boundaryLoops, cutAlongLoop, findEdgeLoop, subsetFaces } from './cut';
 import { buildEyeball } from './eye';
-import { buildArch, fitArchOutline, fitOcclusalPlane } from './teeth';
-import type { MaterialSpec, NodeSpec, TriGeometry } from './head-spec';
+import { buildArch, fitArchOutline, fitOcclusalPlane, type DentalArch } from './teeth';
+import type { MaterialSpec, NodeSpec, PartSpec, TriGeometry } from './head-spec';
 import type { ObjMesh } from './obj';
 import { catmullClark } from '../subdivide';
 import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh } from '../polymesh';
@@ -16,7 +16,7 @@ import { faceCount, polyMeshFromFaces, toRenderMesh, vertexCount, type PolyMesh 
 export const DECIMETRE = 0.1;
 
 /** The resolutions written: name, Catmull-Clark levels. */
-const LEVELS = [
+export const LEVELS = [
   { name: 'low', subdivisions: 0 },
   { name: 'medium', subdivisions: 1 },
   { name: 'high', subdivisions: 2 },
@@ -72,18 +72,17 @@ export function sourceMesh(obj: ObjMesh): SourceMesh {
 }
 
 /** The faces of one OBJ group as their own mesh; throws naming the group if the OBJ lacks it. */
-function groupMesh(source: SourceMesh, group: string): ReturnType<typeof subsetFaces> {
+export function groupMesh(source: SourceMesh, group: string): ReturnType<typeof subsetFaces> {
   const faces = source.groupFaces.get(group);
   if (!faces || faces.length === 0) throw new Error(`the base mesh has no group "${group}"`);
   return subsetFaces(source.mesh, faces);
 }
 
-/** Centre of a group's vertices (the joint cubes mark pivots this way). */
-function groupCentre(source: SourceMesh, group: string): [number, number, number] {
-  const { mesh } = groupMesh(source, group);
+/** Centre of a group's vertices (the joint cubes mark pivots this way), from their positions (xyz per vertex). */
+function centre(positions: Float64Array): [number, number, number] {
   const c: [number, number, number] = [0, 0, 0];
-  const n = vertexCount(mesh);
-  for (let v = 0; v < n; v++) for (let k = 0; k < 3; k++) c[k] += mesh.positions[3 * v + k] / n;
+  const n = positions.length / 3;
+  for (let v = 0; v < n; v++) for (let k = 0; k < 3; k++) c[k] += positions[3 * v + k] / n;
   return c;
 }
 
@@ -92,6 +91,8 @@ export interface HeadCut {
   mesh: PolyMesh;
   /** The neck loop, as indices into `mesh`. */
   neckLoop: number[];
+  /** The base mesh's vertex (its OBJ `v` line, 0-based) of each vertex of `mesh`, ascending. */
+  sourceVertex: Uint32Array;
 }
 
 /** The body's front-midline vertex nearest `front` (an index into the body group's mesh), where the neck cut starts. */
@@ -153,7 +154,7 @@ export function cutHead(source: SourceMesh, start = neckCutStart(source)): HeadC
       `the neck cut should leave one boundary loop of ${loop.length} vertices, found ${boundary.map((b) => b.length).join(', ')}`,
     );
   }
-  return { mesh: head.mesh, neckLoop: boundary[0] };
+  return { mesh: head.mesh, neckLoop: boundary[0], sourceVertex: head.sourceVertex.map((v) => body.sourceVertex[v]) };
 }
 
 /** Applies `levels` rounds of Catmull-Clark. */
@@ -182,26 +183,63 @@ export interface BuiltHead {
   sceneExtras: Record<string, unknown>;
 }
 
-/**
- * Builds the parts shared by every resolution (eyes, teeth, tongue, pivots) and the skin of each resolution. `cutStart`
- * is the body vertex the neck cut starts at (see neckCutStart): a mesh moved by identity targets passes the base
- * mesh's, so that every identity's head has the same vertices and faces.
- */
-export function buildHeadLevels(obj: ObjMesh, cutStart?: number): BuiltHead[] {
-  const source = sourceMesh(obj);
-  const cut = cutHead(source, cutStart);
+/** The OBJ groups whose vertex positions a head is built from, besides the body and the tongue (see HeadSource). */
+export const POSITION_GROUPS: readonly string[] = [
+  ...new Set([...Object.values(PIVOT_JOINTS), 'helper-l-eye', 'helper-upper-teeth', 'helper-lower-teeth']),
+];
 
+/** The OBJ group whose faces become the tongue. */
+export const TONGUE_GROUP = 'helper-tongue';
+
+/**
+ * Everything a head is built from, in the base mesh's decimetres: all that buildHeadLevels reads of base.obj, so that
+ * a head can be built from a compact asset as well (see identity-source.ts).
+ */
+export interface HeadSource {
+  /** The head cut off the body at the neck. */
+  cut: HeadCut;
+  /** Positions (xyz per vertex, in the base mesh's vertex order) of each group of POSITION_GROUPS. */
+  groups: ReadonlyMap<string, Float64Array>;
+  /** The base mesh's tongue (TONGUE_GROUP). */
+  tongue: PolyMesh;
+}
+
+/** What a head is built from in a parsed base mesh; `cutStart` as in cutHead. */
+function headSource(obj: ObjMesh, cutStart?: number): HeadSource {
+  const source = sourceMesh(obj);
+  const groups = new Map(POSITION_GROUPS.map((g) => [g, groupMesh(source, g).mesh.positions]));
+  return { cut: cutHead(source, cutStart), groups, tongue: groupMesh(source, TONGUE_GROUP).mesh };
+}
+
+/** The parts every resolution of a head shares: eyeballs, teeth, tongue and pivots (metres). */
+export interface HeadParts {
+  pivots: Record<string, [number, number, number]>;
+  /** The eyeball's radius (metres), the helper eye's mean distance from the eye joint. */
+  eyeRadius: number;
+  eyeParts: PartSpec[];
+  upperArch: PartSpec[];
+  lowerArch: PartSpec[];
+  tongue: TriGeometry;
+  neckLoopVertices: number;
+}
+
+/** Builds the parts shared by every resolution (eyes, teeth, tongue, pivots) from a head's source. */
+export function buildHeadParts(source: HeadSource): HeadParts {
+  const group = (name: string): Float64Array => {
+    const positions = source.groups.get(name);
+    if (!positions) throw new Error(`the head's source has no group "${name}"`);
+    return positions;
+  };
   const pivots: Record<string, [number, number, number]> = {};
-  for (const [name, joint] of Object.entries(PIVOT_JOINTS)) pivots[name] = scaled(groupCentre(source, joint));
+  for (const [name, joint] of Object.entries(PIVOT_JOINTS)) pivots[name] = scaled(centre(group(joint)));
 
   // The helper eye is a sphere around the eye joint: measure its radius, then build a better eyeball of that size.
-  const helperEye = groupMesh(source, 'helper-l-eye').mesh;
-  const eyeCentre = groupCentre(source, 'joint-l-eye');
+  const helperEye = group('helper-l-eye');
+  const eyeCentre = centre(group('joint-l-eye'));
+  const eyeVertices = helperEye.length / 3;
   let radius = 0;
-  for (let v = 0; v < vertexCount(helperEye); v++) {
-    radius +=
-      Math.hypot(...([0, 1, 2].map((k) => helperEye.positions[3 * v + k] - eyeCentre[k]) as [number, number, number])) /
-      vertexCount(helperEye);
+  for (let v = 0; v < eyeVertices; v++) {
+    radius += Math.hypot(...([0, 1, 2].map((k) => helperEye[3 * v + k] - eyeCentre[k]) as [number, number, number])) / eyeVertices;
   }
   const eyeball = buildEyeball({ radius: radius * DECIMETRE });
   const eyeParts = [
@@ -210,10 +248,9 @@ export function buildHeadLevels(obj: ObjMesh, cutStart?: number): BuiltHead[] {
     { geometry: eyeball.cornea, material: MATERIALS.cornea },
   ];
 
-  const hinge = pivots['jaw-hinge'];
   // Vertices stay in head space; the nodes under the jaw undo the jaw's translation, so turning the jaw node turns
   // them about the hinge.
-  const tongue: TriGeometry = toRenderMesh(catmullClark(groupMesh(source, 'helper-tongue').mesh), DECIMETRE);
+  const tongue: TriGeometry = toRenderMesh(catmullClark(source.tongue), DECIMETRE);
   // The base mesh's tongue stands above the lower teeth's edges and as wide as the molars: lowered and narrowed a
   // little, it lies in the floor of the mouth inside the lower arch, so that an open mouth shows the lower teeth.
   for (let i = 0; i < tongue.positions.length; i += 3) {
@@ -225,77 +262,97 @@ export function buildHeadLevels(obj: ObjMesh, cutStart?: number): BuiltHead[] {
     for (let k = 0; k < 3; k++) tongue.normals[i + k] = n[k] / length;
   }
   // The base mesh's low-poly teeth say where the rows sit: the arches are fitted to them.
-  const band = (group: string): Float64Array => groupMesh(source, group).mesh.positions.map((p) => p * DECIMETRE);
-  const upperBand = band('helper-upper-teeth');
-  const lowerBand = band('helper-lower-teeth');
+  const upperBand = group('helper-upper-teeth').map((p) => p * DECIMETRE);
+  const lowerBand = group('helper-lower-teeth').map((p) => p * DECIMETRE);
   const occlusal = fitOcclusalPlane(upperBand, lowerBand);
-  const upperArch = buildArch(fitArchOutline(upperBand), occlusal, 1);
-  const lowerArch = buildArch(fitArchOutline(lowerBand), occlusal, -1);
-  const archParts = (arch: typeof upperArch) => [
+  const archParts = (arch: DentalArch): PartSpec[] => [
     { geometry: arch.teeth, material: MATERIALS.teeth },
     { geometry: arch.gums, material: MATERIALS.gums },
   ];
+  return {
+    pivots,
+    eyeRadius: radius * DECIMETRE,
+    eyeParts,
+    upperArch: archParts(buildArch(fitArchOutline(upperBand), occlusal, 1)),
+    lowerArch: archParts(buildArch(fitArchOutline(lowerBand), occlusal, -1)),
+    tongue,
+    neckLoopVertices: source.cut.neckLoop.length,
+  };
+}
 
-  return LEVELS.map(({ name, subdivisions }) => {
-    const mesh = subdivide(cut.mesh, subdivisions);
-    const skin = toRenderMesh(mesh, DECIMETRE);
-    const stats: LevelStats = {
-      name,
-      subdivisions,
-      skinVertices: vertexCount(mesh),
-      renderVertices: skin.positions.length / 3,
-      quads: faceCount(mesh),
-      triangles: skin.indices.length / 3,
-    };
-    const negHinge: [number, number, number] = [-hinge[0], -hinge[1], -hinge[2]];
-    const root: NodeSpec = {
-      name: 'head',
-      children: [
-        { name: HEAD_NODES.skin, parts: [{ geometry: skin, material: MATERIALS.skin }] },
-        ...HEAD_NODES.eyes.map((eye) => ({
-          name: eye,
-          translation: pivots[eye],
-          meshName: 'eyeball',
-          parts: eyeParts,
-          extras: { softface: { pivot: eye } },
-        })),
-        { name: HEAD_NODES.upperTeeth, parts: archParts(upperArch) },
-        {
-          name: HEAD_NODES.jaw,
-          translation: hinge,
-          extras: { softface: { pivot: 'jaw-hinge' } },
-          children: [
-            { name: HEAD_NODES.lowerTeeth, translation: negHinge, parts: archParts(lowerArch) },
-            { name: HEAD_NODES.tongue, translation: negHinge, parts: [{ geometry: tongue, material: MATERIALS.tongue }] },
-          ],
-        },
-        {
-          name: 'pivots',
-          children: Object.entries(pivots).map(([pivot, at]) => ({
-            name: `pivot-${pivot}`,
-            translation: at,
-            extras: { softface: { pivot } },
-          })),
-        },
-      ],
-    };
-    const sceneExtras = {
-      softface: {
-        format: 'softface-head',
-        version: 1,
-        units: 'metres',
-        up: '+y',
-        forward: '+z',
-        left: "+x (the subject's left)",
-        source: 'MakeHuman hm08 base mesh (CC0 1.0)',
-        level: stats,
-        eyeRadius: radius * DECIMETRE,
-        neckLoopVertices: cut.neckLoop.length,
-        pivots,
+/** One resolution of a head: its skin (the cut head subdivided `subdivisions` times) with the shared parts. */
+export function buildHeadLevel(cut: HeadCut, parts: HeadParts, { name, subdivisions }: (typeof LEVELS)[number]): BuiltHead {
+  const mesh = subdivide(cut.mesh, subdivisions);
+  const skin = toRenderMesh(mesh, DECIMETRE);
+  const stats: LevelStats = {
+    name,
+    subdivisions,
+    skinVertices: vertexCount(mesh),
+    renderVertices: skin.positions.length / 3,
+    quads: faceCount(mesh),
+    triangles: skin.indices.length / 3,
+  };
+  const { pivots } = parts;
+  const hinge = pivots['jaw-hinge'];
+  const negHinge: [number, number, number] = [-hinge[0], -hinge[1], -hinge[2]];
+  const root: NodeSpec = {
+    name: 'head',
+    children: [
+      { name: HEAD_NODES.skin, parts: [{ geometry: skin, material: MATERIALS.skin }] },
+      ...HEAD_NODES.eyes.map((eye) => ({
+        name: eye,
+        translation: pivots[eye],
+        meshName: 'eyeball',
+        parts: parts.eyeParts,
+        extras: { softface: { pivot: eye } },
+      })),
+      { name: HEAD_NODES.upperTeeth, parts: parts.upperArch },
+      {
+        name: HEAD_NODES.jaw,
+        translation: hinge,
+        extras: { softface: { pivot: 'jaw-hinge' } },
+        children: [
+          { name: HEAD_NODES.lowerTeeth, translation: negHinge, parts: parts.lowerArch },
+          { name: HEAD_NODES.tongue, translation: negHinge, parts: [{ geometry: parts.tongue, material: MATERIALS.tongue }] },
+        ],
       },
-    };
-    return { stats, root, sceneExtras };
-  });
+      {
+        name: 'pivots',
+        children: Object.entries(pivots).map(([pivot, at]) => ({
+          name: `pivot-${pivot}`,
+          translation: at,
+          extras: { softface: { pivot } },
+        })),
+      },
+    ],
+  };
+  const sceneExtras = {
+    softface: {
+      format: 'softface-head',
+      version: 1,
+      units: 'metres',
+      up: '+y',
+      forward: '+z',
+      left: "+x (the subject's left)",
+      source: 'MakeHuman hm08 base mesh (CC0 1.0)',
+      level: stats,
+      eyeRadius: parts.eyeRadius,
+      neckLoopVertices: parts.neckLoopVertices,
+      pivots,
+    },
+  };
+  return { stats, root, sceneExtras };
+}
+
+/**
+ * Builds every resolution of the head from a parsed base mesh. `cutStart` is the body vertex the neck cut starts at
+ * (see neckCutStart): a mesh moved by identity targets passes the base mesh's, so that every identity's head has the
+ * same vertices and faces.
+ */
+export function buildHeadLevels(obj: ObjMesh, cutStart?: number): BuiltHead[] {
+  const source = headSource(obj, cutStart);
+  const parts = buildHeadParts(source);
+  return LEVELS.map((level) => buildHeadLevel(source.cut, parts, level));
 }
 
 const scaled = (p: [number, number, number]): [number, number, number] => [p[0] * DECIMETRE, p[1] * DECIMETRE, p[2] * DECIMETRE];
