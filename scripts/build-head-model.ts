@@ -1,18 +1,30 @@
 /**
  * Builds the default head models from the MakeHuman hm08 base mesh (CC0):
  *   npm run build:models -- [path/to/makehuman-hm08] [--out public/models]
- *     [--identity <stock name or identity JSON> --targets path/to/makehuman-targets/macrodetails]
- * Writes head-low.glb, head-medium.glb, head-high.glb and CREDITS.md. Running it twice gives identical files. With
- * `--identity`, the base mesh is first moved by MakeHuman's macro targets for that person (sex, age, ancestry), and
- * the head is cut where the base mesh's is, so that it has the default head's vertices and faces.
+ *     [--targets path/to/makehuman-targets/macrodetails] [--identity <stock name or identity JSON>]
+ * Writes head-low.glb, head-medium.glb, head-high.glb, identity-source.bin (what a head for any identity is built
+ * from at run time: src/core/head/build/identity-source.ts) and CREDITS.md. Running it twice gives identical files.
+ * With `--identity`, the base mesh is first moved by MakeHuman's macro targets for that person (sex, age, ancestry),
+ * and the head is cut where the base mesh's is, so that it has the default head's vertices and faces.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { gunzipSync } from 'node:zlib';
-import { applyMacroTargets, checkIdentity, macroTargetWeights, parseMacroTarget, STOCK_IDENTITIES } from '../src/core/head/identity';
+import {
+  applyMacroTargets,
+  checkIdentity,
+  type MacroTarget,
+  macroTargetWeights,
+  parseMacroTarget,
+  STOCK_IDENTITIES,
+} from '../src/core/head/identity';
+import { ETHNIC_TARGETS, writeIdentitySource } from '../src/core/head/build/identity-source';
 import { writeGlb } from './model/glb';
 import { buildHeadLevels, neckCutStart, sourceMesh, type LevelStats } from '../src/core/head/build/head-build';
 import { parseObj } from '../src/core/head/build/obj';
+
+/** The identity source's file name in the output folder. */
+const IDENTITY_SOURCE_FILE = 'identity-source.bin';
 
 const args = process.argv.slice(2);
 const option = (name: string): string | undefined => {
@@ -33,21 +45,32 @@ try {
   process.exit(1);
 }
 const obj = parseObj(text, 'base.obj');
+const vertices = obj.positions.length / 3;
+const targets = new Map(
+  ETHNIC_TARGETS.map((target) => {
+    const file = join(targetsDir, `${target}.target.gz`);
+    let gz: Uint8Array;
+    try {
+      gz = readFileSync(file);
+    } catch {
+      console.error(`Cannot read ${file}: pass the folder of MakeHuman's macro targets with --targets.`);
+      process.exit(1);
+    }
+    return [target, parseMacroTarget(gunzipSync(gz).toString('utf8'), vertices, file)];
+  }),
+);
+// Written before the identity's targets move the base mesh: the source holds the base mesh and the targets.
+const identitySource = writeIdentitySource(obj, targets);
 let cutStart: number | undefined;
 if (identityArg !== undefined) {
   const identity = STOCK_IDENTITIES[identityArg] ?? checkIdentity(JSON.parse(identityArg), '--identity');
   cutStart = neckCutStart(sourceMesh(obj));
-  const vertices = obj.positions.length / 3;
-  const targets = macroTargetWeights(identity).map(({ target, weight }) => {
-    const file = join(targetsDir, `${target}.target.gz`);
-    return { target: parseMacroTarget(gunzipSync(readFileSync(file)).toString('utf8'), vertices, file), weight };
-  });
-  applyMacroTargets(obj.positions, targets);
-  console.log(
-    `identity ${JSON.stringify(identity)} from ${macroTargetWeights(identity)
-      .map((t) => t.target)
-      .join(', ')}`,
+  const weights = macroTargetWeights(identity);
+  applyMacroTargets(
+    obj.positions,
+    weights.map(({ target, weight }) => ({ target: targets.get(target) as MacroTarget, weight })),
   );
+  console.log(`identity ${JSON.stringify(identity)} from ${weights.map((t) => t.target).join(', ')}`);
 }
 const levels = buildHeadLevels(obj, cutStart);
 mkdirSync(outDir, { recursive: true });
@@ -61,9 +84,18 @@ for (const level of levels) {
       `vertices, ${s.triangles} triangles, ${(bytes.length / 1e6).toFixed(2)} MB`,
   );
 }
-writeFileSync(join(outDir, 'CREDITS.md'), credits(levels.map((l) => l.stats)));
+const identityFile = join(outDir, IDENTITY_SOURCE_FILE);
+writeFileSync(identityFile, identitySource);
+console.log(`${identityFile}: ${ETHNIC_TARGETS.length} targets, ${(identitySource.length / 1e6).toFixed(2)} MB`);
+writeFileSync(
+  join(outDir, 'CREDITS.md'),
+  credits(
+    levels.map((l) => l.stats),
+    identitySource.length,
+  ),
+);
 
-function credits(stats: LevelStats[]): string {
+function credits(stats: LevelStats[], identitySourceBytes: number): string {
   const rows = stats.map(
     (s) =>
       `| \`head-${s.name}.glb\` | ${s.subdivisions} | ${s.skinVertices.toLocaleString('en-US')} | ` +
@@ -102,5 +134,15 @@ along UV seams.
 | file | subdivisions | skin vertices | render vertices | quads | triangles |
 | --- | --- | --- | --- | --- | --- |
 ${rows.join('\n')}
+
+## Identity source
+
+\`${IDENTITY_SOURCE_FILE}\` (${identitySourceBytes.toLocaleString('en-US')} bytes, CC0 as well) is what a head for any
+identity (sex, age, ancestry) is built from at run time (\`src/core/head/build/identity-head.ts\`), the same way
+\`--identity\` builds one here: of the base mesh \`base.obj\`, the faces, uvs and vertices of the cut head, and the
+vertices of the joint cubes, the helper eye, teeth and tongue (with the tongue's faces); and their offsets in
+MakeHuman's 24 macro targets \`{african,asian,caucasian}-{female,male}-{baby,child,young,old}.target.gz\` (CC0 1.0,
+from MPFB2's \`src/mpfb/data/targets/macrodetails/\`). Its layout is documented in
+\`src/core/head/build/identity-source.ts\`; its numbers read back exactly as the source files give them.
 `;
 }
