@@ -22,6 +22,7 @@ export default defineConfig(({ mode }) => {
       alias: [
         { find: /^\.\/spawn-skin-worker$/, replacement: path('src/sim/main/spawn-skin-worker-inline.ts') },
         { find: /^\.\/spawn-partner-worker$/, replacement: path('src/sim/thread/spawn-partner-worker-inline.ts') },
+        { find: /^\.\/spawn-identity-worker$/, replacement: path('src/sim/main/spawn-identity-worker-inline.ts') },
       ],
     },
     worker: { format: 'es' },

@@ -19,6 +19,9 @@
  *   --sheet FILE          also write a sheet (JPEG, or PNG if FILE ends in .png) of neutral and the seven prototypes from the front, each
  * labelled
  *                         with what it is meant to show and what the recogniser read
+ *   --light JSON          light options for every render (face.setLight), e.g. '{"keyAzimuth":0}'; default the app's
+ *   --presets a,b,...     only these presets (and neutral)
+ *   --out PATH            where the results go: PATH.json and PATH.md (default bench-results/recognition)
  *   --no-build            serve the last build (dist/) as it is
  */
 import { spawn, execSync } from 'node:child_process';
@@ -51,6 +54,9 @@ const backend = option('backend', DEFAULTS.backend);
 const crop = option('crop', DEFAULTS.crop);
 const imagesDir = option('images', null);
 const sheetFile = option('sheet', null);
+const light = option('light', null);
+const only = option('presets', null)?.split(',');
+const out = option('out', 'bench-results/recognition');
 /** The sheet's tiles: neutral and the seven prototypes, front view. */
 const SHEET_PRESETS = ['neutral', 'happiness', 'sadness', 'surprise', 'fear', 'anger', 'disgust', 'contempt'];
 /** The part of the 900 px picture the face fills, for the sheet's tiles. */
@@ -86,7 +92,10 @@ try {
   // Tried again while the server starts.
   await openApp(page, `http://127.0.0.1:${port}/?resolution=${resolution}`, { timeout: 120_000, retries: 51, retryMs: 200 });
   await page.addStyleTag({ content: HIDE_PANELS_CSS });
-  const presets = ['neutral', ...(await page.evaluate(() => window.face.listPresets().map((p) => p.name)))];
+  if (light) await page.evaluate((l) => window.face.setLight(l), JSON.parse(light));
+  const all = await page.evaluate(() => window.face.listPresets().map((p) => p.name));
+  for (const name of only ?? []) if (!all.includes(name)) throw new Error(`--presets: no preset ${name}`);
+  const presets = ['neutral', ...all.filter((name) => !only || only.includes(name))];
   if (imagesDir) mkdirSync(imagesDir, { recursive: true });
   for (const preset of presets) {
     const settled = await showExpression(page, preset, SETTLE_MS);
@@ -239,12 +248,17 @@ if (args.includes('--markdown')) console.log(`\n${markdown}`);
 
 const seconds = (performance.now() - started) / 1000;
 console.log(`\n${rows.length} renders in ${Math.round(seconds)} s`);
-mkdirSync('bench-results', { recursive: true });
+mkdirSync(dirname(out), { recursive: true });
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length };
 const recogniser = { faceApi: FACE_API_VERSION, detector, crop, backend, expression: 'FaceExpressionNet', minScore: DEFAULTS.minScore };
+const lightUsed = light ? JSON.parse(light) : 'default';
 writeFileSync(
-  'bench-results/recognition.json',
-  `${JSON.stringify({ machine, date: new Date().toISOString(), resolution, size: SIZE, recogniser, seconds, summary, rows }, null, 2)}\n`,
+  `${out}.json`,
+  `${JSON.stringify(
+    { machine, date: new Date().toISOString(), resolution, size: SIZE, light: lightUsed, recogniser, seconds, summary, rows },
+    null,
+    2,
+  )}\n`,
 );
-writeFileSync('bench-results/recognition.md', `${markdown}\n`);
-console.log('wrote bench-results/recognition.json and bench-results/recognition.md');
+writeFileSync(`${out}.md`, `${markdown}\n`);
+console.log(`wrote ${out}.json and ${out}.md`);

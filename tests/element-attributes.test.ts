@@ -20,6 +20,7 @@ describe('<soft-face> attributes', () => {
         background: 'transparent',
         expression: '#AU12=0.8&preset:happiness=0.3',
         preset: 'surprise:0.5, fear',
+        identity: ' old-african-woman ',
       }),
     ).toEqual({
       resolution: 'low',
@@ -29,7 +30,9 @@ describe('<soft-face> attributes', () => {
       background: 'transparent',
       expression: { actionUnits: { AU12: 0.8 }, presets: { happiness: 0.3 } },
       preset: { actionUnits: {}, presets: { surprise: 0.5, fear: 1 } },
+      identity: 'old-african-woman',
     });
+    expect(read({ identity: 'sex:1,age:30,asian:1' }).identity).toBe('sex:1,age:30,asian:1');
     expect(read({ panels: 'false', 'eye-simulation': 'TRUE' })).toMatchObject({ panels: false, eyeSimulation: true });
   });
 
@@ -41,6 +44,7 @@ describe('<soft-face> attributes', () => {
   it('reject a bad value, naming the attribute', () => {
     expect(() => read({ resolution: 'ultra' })).toThrow('<soft-face>: resolution: expected one of low, medium, high, got "ultra"');
     expect(() => read({ panels: 'yes' })).toThrow('<soft-face>: panels: expected present (on), "true" or "false", got "yes"');
+    expect(() => read({ identity: 'sex:1,age:-1' })).toThrow('<soft-face> identity: age: expected a number from 1 to 90, got -1');
     expect(() => read({ expression: 'AU12=' })).toThrow('<soft-face> expression: AU12: expected a finite number, got ""');
     expect(() => readPresets('happiness:lots')).toThrow(
       '<soft-face>: preset: expected a preset name and a weight, like "happiness:0.5", got "happiness:lots"',

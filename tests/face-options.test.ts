@@ -45,7 +45,7 @@ describe('createFace options', () => {
       [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12: expected a finite number, got "0.5"'],
       [
         { resolutoin: 'low' },
-        'createFace: expected one of the options resolution, rig, model, solver, workers, panels, expression, eyeSimulation, ' +
+        'createFace: expected one of the options resolution, rig, model, identity, solver, workers, panels, expression, eyeSimulation, ' +
           'light, appearance, background, motionResolution, slowDrawMs, assetBase, onResolution, autosave, got "resolutoin"',
       ],
       [{ autosave: 1 }, 'createFace: autosave: expected true, false or a key, got 1'],

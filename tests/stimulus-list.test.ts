@@ -106,15 +106,39 @@ describe('stimulus lists', () => {
     );
   });
 
+  it('crosses each entry with a list of people, by stock name, text or object, named by their place in the list', () => {
+    const stimuli = expandStimulusList({
+      ...base,
+      defaults: { identity: ['old-african-woman', { sex: 1, age: 30, ancestry: { asian: 1 } }, null] },
+      stimuli: [
+        { name: 'smile', expression: { AU12: 1 } },
+        { name: 'frown', expression: { AU4: 1 }, identity: 'sex:0,age:40,european:1' },
+      ],
+    });
+    expect(stimuli.map((s) => [s.file, s.identity])).toEqual([
+      ['smile_i1_l0_c0_medium_p0.png', 'old-african-woman'],
+      ['smile_i1_l0_c0_medium_p1.png', 'sex:1,age:30,asian:1'],
+      ['smile_i1_l0_c0_medium_p2.png', null],
+      ['frown_i1_l0_c0_medium_p0.png', 'sex:0,age:40,european:1'],
+    ]);
+    expect(stimulusManifest(stimuli).split('\n')[1]).toContain(',medium,old-african-woman,512,');
+    expect(() =>
+      expandStimulusList(
+        { ...base, stimuli: [{ name: 'x', expression: { AU1: 1 }, identity: ['old-african-woman', 'sex:2'] }] },
+        'list.json',
+      ),
+    ).toThrow('list.json: stimuli[0].identity[1]: sex: expected a number from 0 to 1, got 2');
+  });
+
   it('the manifest has a row per stimulus with what it was made from', () => {
     const stimuli = expandStimulusList({
       ...base,
       stimuli: [{ name: 'smile', expression: { AU12: 1 }, light: [{}, { keyColor: '#ff0000', keyIntensity: 2 }] }],
     });
     expect(stimulusManifest(stimuli).split('\n')).toEqual([
-      'file,name,format,expression,timeline,intensity,light,camera,resolution,width,height,fps',
-      'smile_i1_l0_c0_medium.png,smile,png,"{""AU12"":1}",no,1,{},{},medium,512,512,25',
-      'smile_i1_l1_c0_medium.png,smile,png,"{""AU12"":1}",no,1,"{""keyColor"":""#ff0000"",""keyIntensity"":2}",{},medium,512,512,25',
+      'file,name,format,expression,timeline,intensity,light,camera,resolution,identity,width,height,fps',
+      'smile_i1_l0_c0_medium.png,smile,png,"{""AU12"":1}",no,1,{},{},medium,,512,512,25',
+      'smile_i1_l1_c0_medium.png,smile,png,"{""AU12"":1}",no,1,"{""keyColor"":""#ff0000"",""keyIntensity"":2}",{},medium,,512,512,25',
       '',
     ]);
   });

@@ -13,7 +13,8 @@ for (const [index, s] of stimuli.entries()) {
     // Resumable: what a earlier run finished is there, whole (files are written under another name, then renamed).
     test.skip(existsSync(path), 'already rendered');
     await page.setViewportSize({ width: s.width, height: s.height });
-    await page.goto(`/?resolution=${s.resolution}`);
+    // The app builds the person a link's hash names as its first head.
+    await page.goto(`/?resolution=${s.resolution}${s.identity ? `#identity=${encodeURIComponent(s.identity)}` : ''}`);
     await expect(page.locator('html')).toHaveAttribute('data-state', /ready|error/, { timeout: 120_000 });
     await expect(page.locator('html')).toHaveAttribute('data-state', 'ready');
     const base64 = await page.evaluate(async (s) => {

@@ -19,6 +19,7 @@ import {
   type LightOptions,
 } from '../../src/render/view-options';
 import { checkOptions } from '../../src/core/check';
+import { identityText, readIdentity } from '../../src/core/head/identity';
 
 export const STIMULI_FORMAT = 'softface-stimuli';
 export const STIMULI_VERSION = 1;
@@ -41,6 +42,8 @@ export interface Stimulus {
   light: Partial<LightOptions>;
   camera: Partial<CameraOptions>;
   resolution: Resolution;
+  /** The person shown, as text (a stock name or `sex:1,age:30,african:1`; see `setIdentity`), or null for the default head. */
+  identity: string | null;
   width: number;
   height: number;
   fps: number;
@@ -88,6 +91,9 @@ const Settings = {
   light: v.optional(oneOrMore(options)),
   camera: v.optional(oneOrMore(options)),
   resolution: v.optional(oneOrMore(v.picklist(RESOLUTIONS, `expected one of ${RESOLUTIONS.join(', ')}`))),
+  identity: v.optional(
+    oneOrMore(v.union([v.string(), options, v.null()], 'expected a stock identity, identity text or { sex, age, ancestry }')),
+  ),
   width: v.optional(size),
   height: v.optional(size),
   fps: v.optional(
@@ -133,6 +139,7 @@ type Settings = {
   light?: object[];
   camera?: object[];
   resolution?: Resolution[];
+  identity?: unknown[];
   width?: number;
   height?: number;
   fps?: number;
@@ -188,6 +195,16 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
         problems.push({ path: at('camera', k), message: (error as Error).message.replace(/^camera: /, '') });
       }
     });
+    // The people: each read as `setIdentity` reads it, and written as the text the app's URL hash takes.
+    const people = list<unknown>(merged.identity, [null]).map((given, k) => {
+      try {
+        const named = readIdentity(given, 'identity');
+        return named && identityText(named.identity);
+      } catch (error) {
+        problems.push({ path: at('identity', k), message: (error as Error).message.replace(/^identity: /, '') });
+        return null;
+      }
+    });
     if (seen.has(entry.name)) problems.push({ path: at('name'), message: `a second stimulus named ${JSON.stringify(entry.name)}` });
     seen.add(entry.name);
     const format = timeline ? 'webm' : 'png';
@@ -200,21 +217,26 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
       for (let l = 0; l < lights.length; l++) {
         for (let c = 0; c < cameras.length; c++) {
           for (const resolution of list<Resolution>(merged.resolution, ['medium'])) {
-            if (out.length >= MAX_STIMULI) continue;
-            out.push({
-              file: `${entry.name}_i${i}_l${l}_c${c}_${resolution}.${format}`,
-              name: entry.name,
-              format,
-              expression: entry.expression ? Object.fromEntries(Object.entries(entry.expression).map(([id, x]) => [id, x * i])) : null,
-              timeline: timeline ? scaleTimeline(timeline, i) : null,
-              intensity: i,
-              light: lights[l] as Partial<LightOptions>,
-              camera: cameras[c] as Partial<CameraOptions>,
-              resolution,
-              width: merged.width ?? 512,
-              height: merged.height ?? 512,
-              fps: merged.fps ?? 25,
-            });
+            for (let p = 0; p < people.length; p++) {
+              if (out.length >= MAX_STIMULI) continue;
+              // Named by the person's place in the list only where a list of people was given.
+              const person = merged.identity === undefined ? '' : `_p${p}`;
+              out.push({
+                file: `${entry.name}_i${i}_l${l}_c${c}_${resolution}${person}.${format}`,
+                name: entry.name,
+                format,
+                expression: entry.expression ? Object.fromEntries(Object.entries(entry.expression).map(([id, x]) => [id, x * i])) : null,
+                timeline: timeline ? scaleTimeline(timeline, i) : null,
+                intensity: i,
+                light: lights[l] as Partial<LightOptions>,
+                camera: cameras[c] as Partial<CameraOptions>,
+                resolution,
+                identity: people[p],
+                width: merged.width ?? 512,
+                height: merged.height ?? 512,
+                fps: merged.fps ?? 25,
+              });
+            }
           }
         }
       }
@@ -242,6 +264,7 @@ const CSV_COLUMNS = [
   'light',
   'camera',
   'resolution',
+  'identity',
   'width',
   'height',
   'fps',

@@ -3,8 +3,10 @@ import {
   appearanceChanges,
   decodeAppearance,
   decodeExpression,
+  decodeIdentity,
   decodeTimeline,
   encodeExpression,
+  identityText,
   MAX_HASH_TIMELINE_CHARS,
   type AppearanceOptions,
   type Face,
@@ -54,11 +56,13 @@ export class HashSync {
   applyHash(hash: string, replace: boolean): void {
     if (!hash || hash === '#') {
       if (replace) {
+        this.applyIdentity(null, true);
         this.face.reset();
         if (this.face.getTimeline()) this.face.clearTimeline();
       }
       return;
     }
+    this.applyIdentity(decodeIdentity(hash), replace);
     const { actionUnits, presets } = decodeExpression(hash);
     const timeline = decodeTimeline(hash);
     const appearance = decodeAppearance(hash, APPEARANCE_DEFAULTS);
@@ -86,6 +90,23 @@ export class HashSync {
     this.flush();
   }
 
+  /**
+   * Shows the person a hash names, unless shown already; a hash without one, where it replaces the state, brings the
+   * default head back from a person's (a loaded head stays). The head is built in the background: a refused identity
+   * is a warning, and the hash is then rewritten with the face's own.
+   */
+  private applyIdentity(text: string | null, replace: boolean): void {
+    const current = this.face.getIdentity();
+    if (text === null ? !replace || current === null : current !== null && identityText(current) === text) return;
+    this.face.setIdentity(text).then(
+      () => this.flush(),
+      (error: Error) => {
+        console.warn(`URL hash: ${error.message}`);
+        this.flush();
+      },
+    );
+  }
+
   /** The hash (with its `#`, or empty for the neutral face) of the current expression and short timeline. */
   currentHash(): string {
     const presets: Record<string, number> = {};
@@ -93,10 +114,12 @@ export class HashSync {
     const timeline = this.face.getTimeline();
     const text = timeline ? JSON.stringify(timeline) : undefined;
     const look = appearanceChanges({ ...this.face.getAppearance() }, APPEARANCE_DEFAULTS);
+    const identity = this.face.getIdentity();
     return encodeExpression(
       { actionUnits: this.face.getActionUnits(), presets },
       text !== undefined && text.length <= MAX_HASH_TIMELINE_CHARS ? text : undefined,
       look,
+      identity ? identityText(identity) : undefined,
     );
   }
 
@@ -117,7 +140,7 @@ export class HashSync {
   }
 
   private changed(change: FaceChange): void {
-    if ((change !== 'expression' && change !== 'timeline' && change !== 'appearance') || this.applying || this.timer !== undefined) return;
+    if (!['expression', 'timeline', 'appearance', 'head'].includes(change) || this.applying || this.timer !== undefined) return;
     const wait = this.lastWrite + this.o.intervalMs - performance.now();
     if (wait <= 0) this.flush();
     else this.timer = setTimeout(() => this.flush(), wait);

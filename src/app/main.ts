@@ -1,4 +1,4 @@
-import { createFace, encodeExpression, RESOLUTIONS, type Resolution } from '../embed/index';
+import { createFace, decodeIdentity, encodeExpression, RESOLUTIONS, type FaceOptions, type Resolution } from '../embed/index';
 import { HashSync } from './hash-sync';
 import { requestedSolver, requestedWorkers } from './solver-choice';
 
@@ -35,7 +35,7 @@ solverStatus.textContent = `solver: ${solver}, starting…`;
 try {
   // The page is one user of the embedding API: one face filling the window, with panels, fetching its models and
   // rig from beside the page as the app has always been served.
-  const face = await createFace(document.getElementById('viewport')!, {
+  const options: FaceOptions = {
     resolution,
     solver,
     workers: requestedWorkers(location.search),
@@ -44,6 +44,14 @@ try {
     onResolution: switchResolution,
     // The app keeps an edited rig across visits; embedding pages opt in.
     autosave: true,
+  };
+  // The person a link names is the first head built; a name the face refuses leaves the default head.
+  const identity = decodeIdentity(location.hash);
+  const viewport = document.getElementById('viewport')!;
+  const face = await createFace(viewport, { ...options, identity }).catch((error: Error) => {
+    if (identity === null || !error.message.startsWith('createFace: identity')) throw error;
+    console.warn(`URL hash: ${error.message}`);
+    return createFace(viewport, options);
   });
   window.face = face;
   const showModel = (): void => {

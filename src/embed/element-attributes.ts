@@ -1,9 +1,19 @@
 import { refusal } from '../core/check';
+import { readIdentity } from '../core/head/identity';
 import { readExpression, type HashExpression } from '../face/expression-hash';
 import { checkFaceOption, type Resolution, type SolverChoice } from '../face/face-options';
 
 /** The attributes `<soft-face>` reads. */
-export const FACE_ATTRIBUTES = ['resolution', 'expression', 'preset', 'solver', 'panels', 'eye-simulation', 'background'] as const;
+export const FACE_ATTRIBUTES = [
+  'resolution',
+  'expression',
+  'preset',
+  'solver',
+  'panels',
+  'eye-simulation',
+  'background',
+  'identity',
+] as const;
 export type FaceAttribute = (typeof FACE_ATTRIBUTES)[number];
 
 /** What the attributes ask for, read and checked. */
@@ -16,6 +26,8 @@ export interface FaceAttributeValues {
   /** The expression and preset attributes together (presets named in both take the preset attribute's weight). */
   expression: HashExpression;
   preset: HashExpression;
+  /** The person shown (a stock name or `sex:1,age:30,african:1`), null for the default head. */
+  identity: string | null;
 }
 
 /** Each attribute as it reads when absent. */
@@ -27,6 +39,7 @@ const ABSENT: Readonly<Record<FaceAttribute, string>> = Object.freeze({
   panels: 'false',
   'eye-simulation': 'false',
   background: '#1d2024',
+  identity: '',
 });
 
 /** How messages about attributes start: `<soft-face>: resolution: expected ...`. */
@@ -77,6 +90,11 @@ export function readAttributes(
   if (wanted('eye-simulation')) out.eyeSimulation = readBoolean('eye-simulation', read('eye-simulation'));
   if (wanted('expression')) out.expression = readExpression(read('expression'), `${WHAT} expression`);
   if (wanted('preset')) out.preset = readPresets(read('preset'));
+  if (wanted('identity')) {
+    const text = read('identity').trim();
+    out.identity = text === '' ? null : text;
+    readIdentity(out.identity, `${WHAT} identity`);
+  }
   return out;
 }
 

@@ -7,6 +7,7 @@ export {
   appearanceChanges,
   decodeAppearance,
   decodeExpression,
+  decodeIdentity,
   decodeTimeline,
   encodeExpression,
   MAX_HASH_TIMELINE_CHARS,
@@ -21,6 +22,7 @@ export type { ActionUnitListing, PresetListing } from '../core/expression/facs';
 export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 export type { SkinParameters } from '../core/solver/skin-parameters';
 export type { Rig } from '../core/rig/rig-types';
+export { identityText, STOCK_IDENTITIES, type Ancestry, type Identity, type NamedIdentity } from '../core/head/identity';
 export type { RenderTiming } from '../render/render-timing';
 export type { HairPartSnapshot, HairSnapshot } from '../render/hair-view';
 export {

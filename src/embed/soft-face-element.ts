@@ -25,7 +25,7 @@ interface CarriedState {
 
 /**
  * `<soft-face>`: a face in the page's markup. Its attributes (`resolution`, `expression`, `preset`, `solver`,
- * `panels`, `eye-simulation`, `background`) apply live; `face` is the handle once `ready` has fired (again after a
+ * `panels`, `eye-simulation`, `background`, `identity`) apply live; `face` is the handle once `ready` has fired (again after a
  * new resolution or solver rebuilt it, keeping what the face had); `change` tells what changed (`detail.change`);
  * `error` tells of a bad attribute value (the face keeps its last good one) or a face that could not start.
  * Removing the element disposes its face.
@@ -86,6 +86,9 @@ export class SoftFaceElement extends HTMLElement {
     } else if (attribute === 'background') {
       face.handle.setBackground(next.background);
       this.changed('background');
+    } else if (attribute === 'identity') {
+      // The face says 'head' once the person is shown.
+      face.handle.setIdentity(next.identity).catch((error: Error) => this.report(error));
     }
   }
 
@@ -99,6 +102,7 @@ export class SoftFaceElement extends HTMLElement {
       solver: v.solver,
       background: v.background,
       panels: v.panels,
+      identity: v.identity,
       ...(carried
         ? { expression: carried.expression, light: carried.light, appearance: carried.appearance, eyeSimulation: carried.eyeSimulation }
         : {}),

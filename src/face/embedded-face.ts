@@ -11,6 +11,9 @@ import { HairView } from '../render/hair-view';
 import { SkinView } from '../render/skin-view';
 import { HeadExporter } from '../render/gltf-export';
 import { SkinSimulation } from '../sim/main/skin-simulation';
+import { IdentityBuilder } from '../sim/main/identity-builder';
+import { readIdentity, type NamedIdentity } from '../core/head/identity';
+import { IDENTITY_SOURCE_PATH, prepareIdentityHead } from './identity-head';
 import { EyeDriver } from './eye-driver';
 import { TimelinePlayer } from './timeline-player';
 import { VideoRecorder } from './video-recorder';
@@ -75,6 +78,8 @@ export class EmbeddedFace {
   private partsUrl = '';
   private rigKey: string | undefined;
   private headStore: HeadStore | undefined;
+  /** Builds identities' heads, from the first `setIdentity` on. */
+  private identities: IdentityBuilder | undefined;
   private head!: HeadDescription;
   private shownHead: HeadModel | undefined;
   private guide: LandmarkGuide | undefined;
@@ -172,7 +177,13 @@ export class EmbeddedFace {
     this.handle.dispose();
     this.panels.dispose();
     try {
-      takeBack([() => this.view.dispose(), ...this.undo, () => this.unmount(), () => this.guide?.cancel()]);
+      takeBack([
+        () => this.view.dispose(),
+        ...this.undo,
+        () => this.unmount(),
+        () => this.guide?.cancel(),
+        () => this.identities?.dispose(),
+      ]);
     } finally {
       this.undo.length = 0;
       this.element.remove();
@@ -209,6 +220,12 @@ export class EmbeddedFace {
         }
         signal?.throwIfAborted();
       }
+    }
+    // A person asked for by the options is shown in place of the default head or a kept one.
+    const named = o.model === null ? readIdentity(o.identity, 'createFace: identity') : null;
+    if (named) {
+      prepared = await this.identityHead(named);
+      signal?.throwIfAborted();
     }
     let head: HeadModel;
     if (prepared) head = prepared.head;
@@ -316,6 +333,39 @@ export class EmbeddedFace {
     return next;
   }
 
+  /**
+   * Shows the head of a person (built in a worker from the base mesh and MakeHuman's targets) with the face's rig
+   * carried over, or the default head again for null. Built and fitted before the current head is touched.
+   */
+  async showIdentity(named: NamedIdentity | null): Promise<HeadDescription> {
+    this.alive();
+    this.guide?.cancel();
+    if (named === null) {
+      await this.revertHead();
+      return this.describeHead();
+    }
+    const run = async (): Promise<HeadDescription> => {
+      const started = performance.now();
+      const prepared = await this.identityHead(named);
+      await this.mount(prepared.head, prepared, { started });
+      // A loaded head kept from before would come back on the next visit instead of the person asked for.
+      await this.headStore?.clear();
+      return this.describeHead();
+    };
+    const next = this.loading.then(run, run);
+    this.loading = next.catch(() => {});
+    return next;
+  }
+
+  /** Builds a person's head (in the identity worker) at the face's resolution and carries the rig over to it. */
+  private async identityHead(named: NamedIdentity): Promise<PreparedHead> {
+    const level = this.options.resolution;
+    this.identities ??= new IdentityBuilder(new URL(IDENTITY_SOURCE_PATH, assetBase(this.options.assetBase)).href);
+    const build = await this.identities.generate(named.identity, level);
+    this.alive();
+    return prepareIdentityHead(build, named, this.original, level);
+  }
+
   /** What the face shows now: the default head or a loaded one. */
   describeHead(): HeadDescription {
     return structuredClone(this.head);
@@ -347,7 +397,13 @@ export class EmbeddedFace {
       head.hair = new HairView(head.skin, prepared?.landmarks ?? DEFAULT_LANDMARKS, eyes);
       // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
       if (this.rigKey) {
-        autosave = new RigAutosave(prepared && this.headStore ? this.headStore.rigKey : this.rigKey, original);
+        // An identity's edited rig is kept under its own name, a loaded head's in the loaded head's slot.
+        const key = prepared?.identity
+          ? `${this.rigKey}:identity:${prepared.identity.name}`
+          : prepared && this.headStore
+            ? this.headStore.rigKey
+            : this.rigKey;
+        autosave = new RigAutosave(key, original);
         // A head just loaded starts from its carried-over rig; one kept from an earlier visit from its edited rig.
         if (fresh) await autosave.clear();
         else rig = (await autosave.load()) ?? original;
@@ -432,7 +488,7 @@ export class EmbeddedFace {
     this.parts.muscles = muscles;
     this.controllers.editor.showMuscles();
     // After the binding: listeners of the handle's 'rig' change see a face that already shows the edit.
-    const name = prepared ? prepared.files[0].name.replace(/\.(glb|gltf|obj)$/i, '') : rigName(o.rig);
+    const name = prepared?.identity?.name ?? (prepared ? prepared.files[0].name.replace(/\.(glb|gltf|obj)$/i, '') : rigName(o.rig));
     this.controllers.editor.attachRig(document, original, name);
     if (autosave) {
       const saver = autosave;

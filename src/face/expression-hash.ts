@@ -25,12 +25,19 @@ const TIMELINE_HASH_KEY = 'timeline';
  */
 const APPEARANCE_HASH_PREFIX = 'appearance.';
 
+/** The hash entry that carries the person shown (see `identityText`): `identity=old-african-woman`. */
+const IDENTITY_HASH_KEY = 'identity';
+
 /** Longest timeline JSON the app puts in its URL hash, in characters: longer ones make links too long to share. */
 export const MAX_HASH_TIMELINE_CHARS = 1500;
 
-/** The hash (with its `#`) for an expression, and a timeline's JSON text if given; zero values are left out. */
-export function encodeExpression(e: HashExpression, timeline?: string, appearance: HashAppearance = {}): string {
+/**
+ * The hash (with its `#`) for an expression, and a timeline's JSON text, appearance changes and the identity's text
+ * form if given; zero values are left out.
+ */
+export function encodeExpression(e: HashExpression, timeline?: string, appearance: HashAppearance = {}, identity?: string): string {
   const params = new URLSearchParams();
+  if (identity !== undefined) params.set(IDENTITY_HASH_KEY, identity);
   for (const [id, v] of Object.entries(e.actionUnits)) if (v !== 0) params.set(id, String(round(v)));
   for (const [name, w] of Object.entries(e.presets)) if (w !== 0) params.set(PRESET_PREFIX + name, String(round(w)));
   for (const [key, value] of Object.entries(appearance)) {
@@ -48,7 +55,7 @@ export function encodeExpression(e: HashExpression, timeline?: string, appearanc
 export function decodeExpression(hash: string): HashExpression {
   const out: HashExpression = { actionUnits: {}, presets: {} };
   for (const [key, text] of new URLSearchParams(hash.replace(/^#/, ''))) {
-    if (key === TIMELINE_HASH_KEY || key.startsWith(APPEARANCE_HASH_PREFIX)) continue;
+    if (key === TIMELINE_HASH_KEY || key === IDENTITY_HASH_KEY || key.startsWith(APPEARANCE_HASH_PREFIX)) continue;
     const value = Number(text);
     if (text.trim() === '' || !Number.isFinite(value)) continue;
     if (key.startsWith(PRESET_PREFIX)) out.presets[key.slice(PRESET_PREFIX.length)] = value;
@@ -88,6 +95,11 @@ export function appearanceChanges(current: Readonly<HashAppearance>, defaults: R
     if (!same) out[key] = value;
   }
   return out;
+}
+
+/** The identity text a hash carries (a stock name or `sex:1,age:30,african:1`), or null. */
+export function decodeIdentity(hash: string): string | null {
+  return new URLSearchParams(hash.replace(/^#/, '')).get(IDENTITY_HASH_KEY);
 }
 
 /** The timeline JSON text a hash carries (see `encodeExpression`), or null. */

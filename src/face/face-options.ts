@@ -11,6 +11,7 @@ import {
   type LightOptions,
 } from '../render/view-options';
 import { readExpression, type ExpressionEntries } from './expression-hash';
+import { readIdentity, type Identity } from '../core/head/identity';
 
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 /** The head's mesh resolution: low (4,284 skin vertices), medium (17,091) or high (68,277). */
@@ -31,6 +32,11 @@ export interface FaceOptions {
   rig?: string | URL | Rig | null;
   /** The URL of a softface head model (GLB) to show instead of the package's head of `resolution`. */
   model?: string | URL | null;
+  /**
+   * A person to show instead of the default head (see `setIdentity`): a stock name (`listIdentities`) or
+   * `{ sex, age, ancestry }`; null for the default head. A `model` given as well takes precedence.
+   */
+  identity?: Identity | string | null;
   solver?: SolverChoice;
   /**
    * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of most passes (the same shape,
@@ -80,6 +86,7 @@ export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
   resolution: 'medium',
   rig: null,
   model: null,
+  identity: null,
   solver: 'auto',
   workers: 'auto',
   panels: false,
@@ -140,6 +147,9 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
     case 'model':
     case 'assetBase':
       if (!(value === null || isUrl(value))) throw bad('a URL');
+      break;
+    case 'identity':
+      readIdentity(value, `${what}: identity`);
       break;
     case 'onResolution':
       if (!(value === null || typeof value === 'function')) throw bad('a function');

@@ -16,6 +16,7 @@ import type { HashExpression } from './expression-hash';
 import type { HeadDescription, HeadSource, LoadHeadOptions } from './head-loader';
 import type { LandmarkGuide } from './landmark-guide';
 import type { VideoOptions } from './video-options';
+import type { NamedIdentity } from '../core/head/identity';
 
 /** The welded skin at one moment, in simulation vertex order. */
 export interface SkinSnapshot {
@@ -88,6 +89,7 @@ export interface FaceHeads {
   describeHead(): HeadDescription;
   guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription>;
   landmarkGuide(): LandmarkGuide | undefined;
+  showIdentity(named: NamedIdentity | null): Promise<HeadDescription>;
 }
 
 /** The face's element around its canvas: the panels and the background (EmbeddedFace). */

@@ -1,3 +1,4 @@
+import { readIdentity, stockIdentities, type Identity, type NamedIdentity } from '../core/head/identity';
 import type { Vec3 } from '../core/rig/rig-types';
 import type { ExpressionController } from './expression-controller';
 import type { FaceParts } from './face-parts';
@@ -65,6 +66,30 @@ export class HeadController {
     this.parts.headSide().landmarkGuide()?.cancel();
   }
 
+  /**
+   * Shows a person: `{ sex, age, ancestry }` (sex 0 female .. 1 male, age 1..90 years, ancestry weights
+   * `{ african, asian, european }` scaled to sum to 1; missing fields take MakeHuman's average), a stock name (see
+   * `listIdentities`), or null for the default head. The head is built from the MakeHuman base mesh and its macro
+   * targets at the face's resolution, with eyes, teeth and the rig carried over; the expression stays. Resolves to
+   * the head shown; a bad identity rejects naming the field, and the current head stays.
+   */
+  async setIdentity(identity: Identity | string | null): Promise<HeadDescription> {
+    const named = readIdentity(identity, 'setIdentity');
+    this.parts.alive();
+    await this.ready;
+    return this.parts.headSide().showIdentity(named);
+  }
+
+  /** The person the face shows (a copy), or null for the default head and a loaded one. */
+  getIdentity(): Identity | null {
+    return this.parts.headSide().describeHead().identity;
+  }
+
+  /** The stock identities, by name: each sex, three ages (22, 45, 72 years) and three ancestries. */
+  listIdentities(): NamedIdentity[] {
+    return stockIdentities();
+  }
+
   /** The head shown: default or loaded, its file, size, units, axes and landmarks (read-only). */
   describeHead(): HeadDescription {
     return this.parts.headSide().describeHead();
@@ -102,4 +127,7 @@ export const HEAD_METHODS = [
   'locateLandmarkPoint',
   'cancelLandmarkGuide',
   'describeHead',
+  'setIdentity',
+  'getIdentity',
+  'listIdentities',
 ] as const;

@@ -22,6 +22,7 @@ import {
   type LandmarkName,
   type Landmarks,
 } from '../core/head/landmarks';
+import type { Identity, NamedIdentity } from '../core/head/identity';
 import { parseRig } from '../core/rig/rig-schema';
 import type { Rig, Vec3 } from '../core/rig/rig-types';
 import { warpRig } from '../core/rig/rig-warp';
@@ -68,7 +69,8 @@ export const MAX_HEAD_FILE_BYTES = 64 * 1024 * 1024;
 
 /** What a face shows: the default head or a loaded one, its size, frame and landmarks (read-only). */
 export interface HeadDescription {
-  source: 'default' | 'loaded';
+  /** The default head, a loaded one or an identity's (see `setIdentity`). */
+  source: 'default' | 'loaded' | 'identity';
   /** The file's name (the default head's model file for the default head). */
   name: string;
   /** The resolution shown: a level (the default head's, or reached by subdivision or decimation) or the file's own mesh. */
@@ -83,8 +85,10 @@ export interface HeadDescription {
   landmarks: Landmarks;
   /** Where the eyes, teeth and jaw pivot came from: the file's named nodes, or the default head (carried over). */
   parts: PartSources;
-  /** Milliseconds from the start of `loadHead` to the new head shown (0 for the default head). */
+  /** Milliseconds from the start of `loadHead` or `setIdentity` to the new head shown (0 for the default head). */
   loadMs: number;
+  /** The person an identity's head shows (null for the default head and a loaded one). */
+  identity: Identity | null;
 }
 
 /** A head read, checked and fitted, with its rig carried over: ready to be shown. */
@@ -97,6 +101,8 @@ export interface PreparedHead {
   transform: HeadTransform;
   files: HeadFile[];
   options: Required<LoadHeadOptions>;
+  /** Set for an identity's head (built in the page, see identity-head.ts; `files` is then empty). */
+  identity?: NamedIdentity;
 }
 
 /**
@@ -262,10 +268,11 @@ export function describeShownHead(
   shown: { level: HeadLevel; file: string; vertices: number; triangles: number; loadMs: number },
 ): HeadDescription {
   const transform = prepared?.transform;
+  const identity = prepared?.identity;
   return {
-    source: prepared ? 'loaded' : 'default',
+    source: identity ? 'identity' : prepared ? 'loaded' : 'default',
     level: prepared ? prepared.level : shown.level,
-    name: prepared ? prepared.files[0].name : shown.file,
+    name: identity ? identity.name : prepared ? prepared.files[0].name : shown.file,
     vertices: shown.vertices,
     triangles: shown.triangles,
     units: transform?.units ?? 'm',
@@ -274,5 +281,6 @@ export function describeShownHead(
     landmarks: structuredClone(prepared ? prepared.landmarks : (DEFAULT_LANDMARKS as Landmarks)),
     parts: prepared ? { ...prepared.sources } : { eyes: 'file', teeth: 'file', jaw: 'file' },
     loadMs: shown.loadMs,
+    identity: identity ? structuredClone(identity.identity) : null,
   };
 }

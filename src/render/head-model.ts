@@ -1,6 +1,7 @@
 import { type Box3, BufferAttribute, Mesh, type Object3D, Texture, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { HEAD_NODES } from '../core/head/head-nodes';
+import type { IdentityLook } from '../core/head/identity-look';
 import { createHeadMaterials } from './materials';
 import type { HairView } from './hair-view';
 import { mouthLight, SKIN_TINT_DEFAULTS, skinTint } from './skin-tint';
@@ -27,21 +28,32 @@ export interface HeadModel {
   bounds: Box3;
   /** Eyebrows and eyelashes on the skin, once the face has placed them (see HairView). */
   hair?: HairView;
+  /** The head's own brow and lash look (an identity's), shown where the appearance options are left at their defaults. */
+  hairLook?: { browColor: string; lashColor: string; browDensity: number };
 }
 
 /** Loads a softface head GLB and gives its parts the app's materials. */
 export async function loadHeadModel(url: string): Promise<HeadModel> {
   const gltf = await new GLTFLoader().loadAsync(url);
-  const info = gltf.scene.userData.softface as HeadModelInfo | undefined;
+  return headModelOf(gltf.scene, url);
+}
+
+/**
+ * A head from a softface head scene (a loaded model file's, or one built in the page: see head-from-spec.ts): its parts
+ * found by name and given the app's materials. `source` names the scene in messages.
+ */
+export function headModelOf(root: Object3D, source: string, look?: IdentityLook): HeadModel {
+  const url = source;
+  const info = root.userData.softface as HeadModelInfo | undefined;
   if (info?.format !== 'softface-head') throw new Error(`${url} is not a softface head model (its scene has no softface extras)`);
-  const root = gltf.scene;
   root.traverse((o) => {
     const t = [...o.position.toArray(), ...o.quaternion.toArray(), ...o.scale.toArray()];
     if (!t.every(Number.isFinite)) throw new Error(`${url}: node "${o.name}" has a non-finite transform`);
   });
   const skin = root.getObjectByName(HEAD_NODES.skin);
   if (!(skin instanceof Mesh)) throw new Error(`${url} has no mesh named "${HEAD_NODES.skin}"`);
-  const materials = createHeadMaterials();
+  // A person's own skin and irises (an identity's head); else the materials' defaults.
+  const materials = look ? createHeadMaterials({ color: look.skin }, look.iris) : createHeadMaterials();
   replaceMaterial(skin, materials.skin);
   // Lips, inner mouth and cheeks: per-vertex albedo multipliers, computed once at rest.
   const uv = skin.geometry.getAttribute('uv');
@@ -99,6 +111,7 @@ export async function loadHeadModel(url: string): Promise<HeadModel> {
     jaw: root.getObjectByName(HEAD_NODES.jaw),
     info,
     bounds: skin.geometry.boundingBox!.clone(),
+    ...(look ? { hairLook: { browColor: look.browColor, lashColor: look.lashColor, browDensity: look.browDensity } } : {}),
   };
 }
 

@@ -468,11 +468,19 @@ export class HeadView {
 
 /**
  * Gives a head the appearance asked for: the hair's, and the skin's colour. The default colour keeps the skin
- * material's own (its linear value, which the sRGB hex only rounds), so that a face never asked for another is drawn
- * exactly as before.
+ * material's own (its linear value, which the sRGB hex only rounds; an identity's skin tone, see identity-look.ts),
+ * so that a face never asked for another is drawn exactly as before.
  */
 function applyAppearance(head: HeadModel, appearance: Required<AppearanceOptions>): void {
-  head.hair?.setAppearance(appearance);
+  // Brow and lash options left at their defaults show the head's own look (an identity's), if it has one.
+  const own = head.hairLook;
+  const hair = { ...appearance };
+  if (own) {
+    if (hair.browColor === APPEARANCE_DEFAULTS.browColor) hair.browColor = own.browColor;
+    if (hair.lashColor === APPEARANCE_DEFAULTS.lashColor) hair.lashColor = own.lashColor;
+    if (hair.browDensity === APPEARANCE_DEFAULTS.browDensity) hair.browDensity = own.browDensity;
+  }
+  head.hair?.setAppearance(hair);
   const skin = head.skin.material;
   if (!(skin instanceof MeshPhysicalMaterial)) return;
   skin.userData.ownColor ??= skin.color.clone();

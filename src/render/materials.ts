@@ -21,7 +21,7 @@ import {
   type Texture,
   type WebGLProgramParametersWithUniforms,
 } from 'three';
-import { generateIrisImage, generateScleraImage, type EyeImage } from './eye-textures';
+import { generateIrisImage, generateScleraImage, type EyeImage, type IrisOptions } from './eye-textures';
 import { generatePoreMap, type PoreMap } from './pore-map';
 
 /** A light-scattering look for a dielectric: wrapped, per-channel diffuse lighting. */
@@ -85,14 +85,14 @@ export interface HeadMaterials {
 }
 
 /** Makes the head's materials; the procedural textures are generated here, once. */
-export function createHeadMaterials(skin: Partial<SkinLookOptions> = {}): HeadMaterials {
+export function createHeadMaterials(skin: Partial<SkinLookOptions> = {}, iris: Partial<IrisOptions> = {}): HeadMaterials {
   const s: Required<SkinLookOptions> = { ...SKIN_LOOK_DEFAULTS, ...skin };
   const pores = poreTexture(generatePoreMap({ seed: s.poreSeed }), s.poreRepeat);
   pores.userData.seed = s.poreSeed;
   return {
     skin: createSkinMaterial(s, pores),
     sclera: createScleraMaterial(),
-    iris: createIrisMaterial(),
+    iris: createIrisMaterial(iris),
     cornea: createCorneaMaterial(),
     teeth: createTeethMaterial(),
     gums: createGumsMaterial(),
@@ -126,8 +126,8 @@ function createScleraMaterial(): MeshPhysicalMaterial {
 }
 
 /** Iris: radial fibres, collarette, dark limbal ring and pupil, seen through the cornea. */
-function createIrisMaterial(): MeshPhysicalMaterial {
-  return new MeshPhysicalMaterial({ name: 'iris', map: colourTexture(generateIrisImage()), roughness: 0.6 });
+function createIrisMaterial(options: Partial<IrisOptions> = {}): MeshPhysicalMaterial {
+  return new MeshPhysicalMaterial({ name: 'iris', map: colourTexture(generateIrisImage(options)), roughness: 0.6 });
 }
 
 /**

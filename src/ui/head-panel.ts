@@ -77,7 +77,7 @@ export class HeadPanel {
       h.source === 'default'
         ? `default head · ${h.vertices.toLocaleString('en-US')} vertices`
         : `${h.name} · ${h.vertices.toLocaleString('en-US')} vertices, ${h.triangles.toLocaleString('en-US')} triangles`;
-    this.revertButton.show(h.source === 'loaded');
+    this.revertButton.show(h.source !== 'default');
     const guide = this.face.describeLandmarkGuide();
     this.guideButton.show(!guide && !!this.unplaced);
     this.cancelButton.show(!!guide);

@@ -4,6 +4,7 @@ import { ActionUnitsPanel } from './action-units-panel';
 import { EditorPanel } from './editor-panel';
 import { ExportPanel } from './export-panel';
 import { HeadPanel } from './head-panel';
+import { IdentityPanel } from './identity-panel';
 import { LightPanel } from './light-panel';
 import { OutputsPanel, type FrameSource } from './outputs-panel';
 import { PresetsPanel } from './presets-panel';
@@ -45,6 +46,7 @@ export class Panels {
   readonly actionUnits: ActionUnitsPanel;
   readonly editor: EditorPanel;
   readonly head: HeadPanel;
+  readonly identity: IdentityPanel;
   readonly gltf: ExportPanel;
 
   constructor(face: FaceHandle, options: PanelsOptions) {
@@ -65,6 +67,7 @@ export class Panels {
     this.light = new LightPanel(this.gui, face);
     this.editor = new EditorPanel(this.gui, face, o.container);
     this.head = new HeadPanel(this.gui, face, o.container);
+    this.identity = new IdentityPanel(this.gui, face);
     this.gltf = new ExportPanel(this.gui, face);
     this.outputs = new OutputsPanel(this.gui, face, o.frames);
     this.actionUnits = new ActionUnitsPanel(this.gui, face);
@@ -74,6 +77,7 @@ export class Panels {
     this.light.folder.close();
     this.editor.folder.close();
     this.head.folder.close();
+    this.identity.folder.close();
     this.gltf.folder.close();
   }
 
@@ -82,6 +86,7 @@ export class Panels {
     this.actionUnits.dispose();
     this.outputs.dispose();
     this.gltf.dispose();
+    this.identity.dispose();
     this.head.dispose();
     this.editor.dispose();
     this.light.dispose();

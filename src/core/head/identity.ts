@@ -177,3 +177,76 @@ export const STOCK_IDENTITIES: Readonly<Record<string, Identity>> = Object.freez
     ),
   ),
 );
+
+/** A named identity of the stock set (see `listIdentities`). */
+export interface NamedIdentity {
+  name: string;
+  identity: Identity;
+}
+
+/** The stock identities, by name, in a stable order. */
+export function stockIdentities(): NamedIdentity[] {
+  return Object.entries(STOCK_IDENTITIES).map(([name, identity]) => ({ name, identity: structuredClone(identity) as Identity }));
+}
+
+/**
+ * Reads an identity as callers give it: a stock name, an object `{ sex, age, ancestry }` (missing fields default), or
+ * null for the default head. Throws naming the field (`<what>: ...`) for anything else.
+ */
+export function readIdentity(value: unknown, what: string): NamedIdentity | null {
+  if (value === null) return null;
+  if (typeof value === 'string') {
+    const stock = STOCK_IDENTITIES[value.trim()];
+    if (stock) return { identity: structuredClone(stock) as Identity, name: value.trim() };
+    if (!value.includes(':'))
+      throw refusal(
+        what,
+        '',
+        `a stock identity (${Object.keys(STOCK_IDENTITIES).join(', ')}) or text like "sex:1,age:30,african:1"`,
+        value,
+      );
+    const identity = checkIdentity(parseIdentityText(value, what), what);
+    return { identity, name: identityText(identity) };
+  }
+  const identity = checkIdentity(value, what);
+  return { identity, name: identityText(identity) };
+}
+
+/** Whether two identities are the same person (within a thousandth). */
+export function sameIdentity(a: Identity, b: Identity): boolean {
+  const near = (x: number, y: number): boolean => Math.abs(x - y) < 1e-3;
+  return (
+    near(a.sex, b.sex) &&
+    near(a.age, b.age) &&
+    near(a.ancestry.african, b.ancestry.african) &&
+    near(a.ancestry.asian, b.ancestry.asian) &&
+    near(a.ancestry.european, b.ancestry.european)
+  );
+}
+
+/**
+ * The text form of an identity, as URL hashes and the `identity` attribute carry it: its stock name, else
+ * `sex:1,age:30,african:0.5,european:0.5`.
+ */
+export function identityText(identity: Identity): string {
+  for (const [name, stock] of Object.entries(STOCK_IDENTITIES)) if (sameIdentity(stock, identity)) return name;
+  const parts = [`sex:${+identity.sex.toFixed(4)}`, `age:${+identity.age.toFixed(3)}`];
+  for (const key of ANCESTRIES) if (identity.ancestry[key] > 0) parts.push(`${key}:${+identity.ancestry[key].toFixed(4)}`);
+  return parts.join(',');
+}
+
+/** Reads `sex:1,age:30,african:1` into the object form; a part that is not `name:number` throws naming it. */
+function parseIdentityText(text: string, what: string): Record<string, unknown> {
+  const out: Record<string, unknown> = {};
+  const ancestry: Record<string, number> = {};
+  for (const part of text.split(',')) {
+    const [key, number, ...rest] = part.split(':').map((x) => x.trim());
+    const value = Number(number);
+    if (!key || number === undefined || number === '' || rest.length > 0 || !Number.isFinite(value))
+      throw refusal(what, '', 'parts like "sex:1", "age:30" or "african:1" separated by commas', part);
+    if ((ANCESTRIES as readonly string[]).includes(key)) ancestry[key] = value;
+    else out[key] = value;
+  }
+  if (Object.keys(ancestry).length > 0) out.ancestry = ancestry;
+  return out;
+}

@@ -16,7 +16,16 @@ export interface ThinPlateWarp {
   readonly translation: Float64Array;
   /** The affine part's uniform scale: the cube root of its determinant (lengths in the rig scale by this). */
   readonly scale: number;
+  /**
+   * Where many more point pairs are known than the spline was fitted on (two heads with the same vertices): those
+   * points (xyz, flat) and what the spline misses at each (target minus spline, xyz), spread to every point from its
+   * nearest few by inverse distance squared, so that the warp takes each known point exactly onto its target.
+   */
+  readonly correction?: { readonly points: Float64Array; readonly residuals: Float64Array };
 }
+
+/** How many known points spread their residual to a warped point (see ThinPlateWarp.correction). */
+const CORRECTION_NEIGHBOURS = 6;
 
 /**
  * Fits the spline that maps `sources[i]` onto `targets[i]` exactly. Needs at least four points not all in one plane;
@@ -75,10 +84,36 @@ export function warpPoint(warp: ThinPlateWarp, p: readonly number[]): Vec3 {
     const r = Math.hypot(p[0] - sources[3 * i], p[1] - sources[3 * i + 1], p[2] - sources[3 * i + 2]);
     for (let k = 0; k < 3; k++) out[k] += weights[3 * i + k] * r;
   }
+  if (warp.correction) addCorrection(warp.correction, p, out);
   return out;
 }
 
-/** The warp's derivative at `p`: row-major 3 x 3, d(out_row) / d(in_column). */
+/** Adds the inverse-distance-squared mean of the nearest known points' residuals to `out` (see ThinPlateWarp.correction). */
+function addCorrection(c: NonNullable<ThinPlateWarp['correction']>, p: readonly number[], out: Vec3): void {
+  const nearest: { d: number; i: number }[] = [];
+  for (let i = 0; i < c.points.length / 3; i++) {
+    const d = (p[0] - c.points[3 * i]) ** 2 + (p[1] - c.points[3 * i + 1]) ** 2 + (p[2] - c.points[3 * i + 2]) ** 2;
+    if (nearest.length === CORRECTION_NEIGHBOURS && d >= nearest[CORRECTION_NEIGHBOURS - 1].d) continue;
+    if (nearest.length === CORRECTION_NEIGHBOURS) nearest.pop();
+    let at = nearest.length;
+    while (at > 0 && nearest[at - 1].d > d) at--;
+    nearest.splice(at, 0, { d, i });
+  }
+  // On a known point itself: its residual whole.
+  if (nearest.length > 0 && nearest[0].d < 1e-18) {
+    for (let k = 0; k < 3; k++) out[k] += c.residuals[3 * nearest[0].i + k];
+    return;
+  }
+  let total = 0;
+  const sum = [0, 0, 0];
+  for (const { d, i } of nearest) {
+    total += 1 / d;
+    for (let k = 0; k < 3; k++) sum[k] += c.residuals[3 * i + k] / d;
+  }
+  if (total > 0) for (let k = 0; k < 3; k++) out[k] += sum[k] / total;
+}
+
+/** The warp's derivative at `p`: row-major 3 x 3, d(out_row) / d(in_column) (the spline's: a correction's is left out). */
 export function warpJacobian(warp: ThinPlateWarp, p: readonly number[]): Float64Array {
   const J = Float64Array.from(warp.linear);
   const { sources, weights } = warp;

@@ -20,7 +20,9 @@ import { CUT_HEAD_GROUP, type IdentitySource, type IdentitySourceGroup } from '.
 
 /**
  * The stored vertices' positions (xyz, decimetres) for `identity`: the base mesh's moved by the identity's macro
- * targets as applyMacroTargets moves them; `null` gives the base mesh's own.
+ * targets as applyMacroTargets moves them, then all moved back together by the head's mean offset; `null` gives the
+ * base mesh's own. The targets shape the whole body, so a shorter person's head also sits up to 20 cm lower: taken
+ * back, every identity's head stands where the default head does, and a switch keeps the camera's framing.
  */
 function identityPositions(source: IdentitySource, identity: Identity | null): Float64Array {
   const P = source.positions.slice();
@@ -30,6 +32,10 @@ function identityPositions(source: IdentitySource, identity: Identity | null): F
     if (!offsets) throw new Error(`identity-source.bin: the target "${target}" is missing`);
     for (let i = 0; i < P.length; i++) P[i] += weight * offsets[i];
   }
+  const head = groupOf(source, CUT_HEAD_GROUP).vertices;
+  const shift = [0, 0, 0];
+  for (const v of head) for (let k = 0; k < 3; k++) shift[k] += (P[3 * v + k] - source.positions[3 * v + k]) / head.length;
+  for (let i = 0; i < P.length; i++) P[i] -= shift[i % 3];
   return P;
 }
 
@@ -64,8 +70,8 @@ function identityHeadSource(source: IdentitySource, identity: Identity | null): 
 
 /**
  * Builds one resolution of the head of `identity` (a checked one: checkIdentity or STOCK_IDENTITIES), or of the base
- * mesh with no targets for `null` (the default head): exactly what `npm run build:models` writes for that level, with
- * `--identity` for a person.
+ * mesh with no targets for `null` (the default head): exactly what `npm run build:models` writes for that level (for a
+ * person, what it writes with `--identity`, moved as a whole to stand where the default head does).
  */
 export function buildIdentityHead(source: IdentitySource, identity: Identity | null, level: HeadLevel): BuiltHead {
   const plan = LEVELS.find((l) => l.name === level);
