@@ -425,8 +425,11 @@ export class EmbeddedFace {
     own.push(() => simulation.dispose());
     // From here on nothing waits: the current head goes and the new one takes its place in one step.
     const carried = this.expression ? this.controllers.head.carried() : undefined;
+    // The camera stays where it was relative to the framing: another person is seen from the same place.
+    const camera = this.shownHead ? this.view.cameraOptions() : undefined;
     this.unmount();
     this.view.setHead(head);
+    if (camera) this.view.setCamera(camera);
     this.shownHead = head;
     own.push(() => {
       this.view.removeHead(head);

@@ -1,0 +1,84 @@
+import type { Page } from '@playwright/test';
+import { openFace } from './face';
+import { expect, test } from './fixtures';
+
+/**
+ * Every stock identity's head (built in the page from the base mesh and MakeHuman's targets) expresses as the default
+ * head does: AU12 lifts its lip corners and AU1 its inner brows by amounts within 30 % of the default head's, relative
+ * to the size of the face (its height from the brows to the chin), and up. Each head is measured at its own landmarks
+ * (`describeHead().landmarks`: found on the default head, carried over to a person's by the same warp as the rig): the
+ * skin vertices nearest the mouth corners, the inner brows (the brow landmarks 40 % of the way to the midline) and the chin.
+ */
+
+/**
+ * How far a pair of points moves under an Action Unit (the mean), over the face's height (brows to chin), and the
+ * mean of their vertical movements (m).
+ */
+async function lift(page: Page, id: string, points: 'mouth' | 'brows'): Promise<{ amount: number; up: number }> {
+  return page.evaluate(
+    async ({ id, points }) => {
+      const face = window.face;
+      const l = face.describeHead().landmarks;
+      const { rest } = face.getSkin();
+      const nearest = (p: readonly number[]): number => {
+        let best = 0;
+        let bestD = Infinity;
+        for (let v = 0; v < rest.length / 3; v++) {
+          const d = Math.hypot(rest[3 * v] - p[0], rest[3 * v + 1] - p[1], rest[3 * v + 2] - p[2]);
+          if (d < bestD) [best, bestD] = [v, d];
+        }
+        return best;
+      };
+      const inner = (p: readonly number[]): number[] => [0.6 * p[0], p[1], p[2]];
+      const pair = points === 'mouth' ? [l['mouth-l'], l['mouth-r']].map(nearest) : [inner(l['brow-l']), inner(l['brow-r'])].map(nearest);
+      const chin = nearest(l.chin);
+      face.reset();
+      face.setActionUnit(id, 1);
+      await face.settle(120_000);
+      const { positions } = face.getSkin();
+      // How far each point moves (FACS's AU12 pulls the corners up and out, AU1 the inner brows up and in).
+      const moved = pair.map((v) =>
+        Math.hypot(positions[3 * v] - rest[3 * v], positions[3 * v + 1] - rest[3 * v + 1], positions[3 * v + 2] - rest[3 * v + 2]),
+      );
+      face.reset();
+      await face.settle(120_000);
+      const browHeight = (l['brow-l'][1] + l['brow-r'][1]) / 2;
+      const up = pair.reduce((sum, v) => sum + (positions[3 * v + 1] - rest[3 * v + 1]) / 2, 0);
+      return { amount: (moved[0] + moved[1]) / 2 / Math.abs(browHeight - rest[3 * chin + 1]), up };
+    },
+    { id, points },
+  );
+}
+
+test.describe.configure({ timeout: 600_000 });
+
+test('every stock identity lifts its lip corners under AU12 and its inner brows under AU1 as the default head does, within 30 %', async ({
+  page,
+}) => {
+  await openFace(page, '/?resolution=low');
+  type Moves = { au12: { amount: number; up: number }; au1: { amount: number; up: number } };
+  const measure = async (): Promise<Moves> => ({ au12: await lift(page, 'AU12', 'mouth'), au1: await lift(page, 'AU1', 'brows') });
+  const reference = await measure();
+  // Up by a millimetre at least on the default head.
+  expect(reference.au12.up).toBeGreaterThan(0.001);
+  expect(reference.au1.up).toBeGreaterThan(0.001);
+  const names = await page.evaluate(() => window.face.listIdentities().map((i) => i.name));
+  expect(names.length).toBeGreaterThanOrEqual(12);
+  const rows: string[] = [];
+  for (const name of names) {
+    const head = await page.evaluate(async (name) => {
+      const h = await window.face.setIdentity(name);
+      return { source: h.source, name: h.name, level: h.level };
+    }, name);
+    expect(head).toEqual({ source: 'identity', name, level: 'low' });
+    const m = await measure();
+    const ratio = { au12: m.au12.amount / reference.au12.amount, au1: m.au1.amount / reference.au1.amount };
+    rows.push(`${name}: AU12 ${ratio.au12.toFixed(2)}, AU1 ${ratio.au1.toFixed(2)} of the default head's`);
+    for (const id of ['au12', 'au1'] as const) {
+      expect.soft(m[id].up, `${name} ${id} lifts`).toBeGreaterThan(0.5 * reference[id].up);
+      expect.soft(ratio[id], `${name} ${id}`).toBeGreaterThan(0.7);
+      expect.soft(ratio[id], `${name} ${id}`).toBeLessThan(1.3);
+    }
+  }
+  console.log(rows.join('\n'));
+});
