@@ -59,7 +59,7 @@ test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a s
   expect([...webm.subarray(0, 4)]).toEqual([0x1a, 0x45, 0xdf, 0xa3]);
   expect(webm.length).toBeGreaterThan(1000);
   const manifest = readFileSync(join(out, 'manifest.csv'), 'utf8').trim().split('\n');
-  expect(manifest[0]).toBe('file,name,format,expression,timeline,intensity,light,camera,resolution,width,height,fps');
+  expect(manifest[0]).toBe('file,name,format,expression,timeline,intensity,light,camera,resolution,identity,width,height,fps');
   expect(manifest.slice(1).map((row) => row.split(',')[0])).toEqual([...files, 'brows_i1_l0_c0_low.webm']);
   expect(manifest[4]).toContain('"{""yaw"":40,""distance"":0.7}"');
 

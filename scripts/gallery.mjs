@@ -6,6 +6,8 @@
  * Options:
  *   --only AU1+AU2,AU4,happiness   these expressions only (`+` combines Action Units and presets in one tile)
  *   --region forehead|brows|eyes|nose|mouth|chin|face   a close-up of part of the face (default: face)
+ *   --identities                   each stock identity (face.listIdentities()), neutral and with happiness, in place of
+ *                                  the expressions (docs/images/identities.jpg)
  *   --columns N                    tiles per row (default 6)
  *   --out docs/images/name.jpg     where to write the sheet
  *   --no-build                     serve the last build (dist/) as it is
@@ -53,8 +55,10 @@ try {
   await openApp(page, `http://127.0.0.1:${PORT}/?resolution=${resolution}`, { timeout: 120_000, retries: 51, retryMs: 200 });
   // The page's panel column (280 px on the right) would cover part of the face in this 640 px window.
   await page.addStyleTag({ content: '.softface-panels, #status { display: none !important; }' });
-  const items =
-    only.length > 0
+  // With --identities an item is `<identity>|<expression>`.
+  const items = args.includes('--identities')
+    ? (await page.evaluate(() => window.face.listIdentities().map((i) => i.name))).flatMap((n) => [`${n}|neutral`, `${n}|happiness`])
+    : only.length > 0
       ? only
       : await page.evaluate(() => [
           'neutral',
@@ -62,7 +66,9 @@ try {
           ...window.face.listPresets().map((p) => p.name),
         ]);
   const tiles = [];
-  for (const item of items) {
+  for (const entry of items) {
+    const [person, item] = entry.includes('|') ? entry.split('|') : [null, entry];
+    if (person) await page.evaluate((person) => window.face.setIdentity(person), person);
     const settled = await page.evaluate(
       async ({ item, timeout }) => {
         const face = window.face;
@@ -82,8 +88,9 @@ try {
     );
     await page.waitForTimeout(200); // let the renderer show the newest frame
     const png = await page.screenshot({ clip: { x: region.x, y: region.y, width: region.width, height: region.height } });
-    tiles.push({ label: settled ? item : `${item} (not settled)`, data: png.toString('base64') });
-    console.log(`${item}: ${settled ? 'settled' : 'not settled'}`);
+    const label = person ? (item === 'neutral' ? person : item) : item;
+    tiles.push({ label: settled ? label : `${label} (not settled)`, data: png.toString('base64') });
+    console.log(`${entry}: ${settled ? 'settled' : 'not settled'}`);
   }
   const sheet = await page.evaluate(
     async ({ tiles, tile, columns }) => {

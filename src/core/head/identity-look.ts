@@ -36,7 +36,7 @@ const EPIDERMIS_PATH_CM = 0.007;
 const SURFACE_REFLECTANCE = 0.04;
 
 /** Melanosome volume fraction of the epidermis by ancestry (see the sources above). */
-const MELANIN_BY_ANCESTRY = Object.freeze({ african: 0.35, asian: 0.06, european: 0.025 });
+const MELANIN_BY_ANCESTRY = Object.freeze({ african: 0.35, asian: 0.045, european: 0.025 });
 /** Blood volume fraction of the dermis: men's skin carries a little more (a higher erythema index). */
 const BLOOD_FEMALE = 0.013;
 const BLOOD_MALE = 0.017;

@@ -1,7 +1,6 @@
 import type { HeadLevel } from '../../core/head/head-levels';
 import type { Identity } from '../../core/head/identity';
 import type { BuiltIdentityMessage, FromIdentityWorker, ToIdentityWorker } from '../shared/identity-protocol';
-import { spawnIdentityWorker } from './spawn-identity-worker';
 
 /** A person's head as the identity worker built it (see BuiltIdentityMessage). */
 export type IdentityBuild = Omit<BuiltIdentityMessage, 'type' | 'id'>;
@@ -13,6 +12,7 @@ export type IdentityBuild = Omit<BuiltIdentityMessage, 'type' | 'id'>;
  */
 export class IdentityBuilder {
   private worker: Worker | undefined;
+  private disposed = false;
   private sent = false;
   private source: Promise<ArrayBuffer> | undefined;
   private nextId = 0;
@@ -45,6 +45,10 @@ export class IdentityBuilder {
       throw error;
     }
     if (!this.worker) {
+      // Imported on first use: the library's entry does not carry the builder's code (inlined in the library build).
+      const { spawnIdentityWorker } = await import('./spawn-identity-worker');
+      if (this.disposed) throw new Error('the identity builder was disposed');
+      if (this.worker) return this.generate(identity, level);
       this.worker = spawnIdentityWorker();
       this.worker.addEventListener('message', this.onMessage);
       this.worker.addEventListener('error', this.onError);
@@ -63,6 +67,7 @@ export class IdentityBuilder {
 
   /** Stops the worker; builds under way are rejected. */
   dispose(): void {
+    this.disposed = true;
     this.stop(new Error('the identity builder was disposed'));
   }
 
