@@ -23,8 +23,19 @@ export default defineConfig(({ mode }) => {
         { find: /^\.\/spawn-skin-worker$/, replacement: path('src/sim/main/spawn-skin-worker-inline.ts') },
         { find: /^\.\/spawn-partner-worker$/, replacement: path('src/sim/thread/spawn-partner-worker-inline.ts') },
         { find: /^\.\/spawn-identity-worker$/, replacement: path('src/sim/main/spawn-identity-worker-inline.ts') },
+        { find: /^\.\/package-assets$/, replacement: path('src/face/package-assets-library.ts') },
       ],
     },
+    plugins: [
+      {
+        // The package's files are named by `new URL(/* @vite-ignore */ './…', import.meta.url)` in
+        // package-assets-library.ts: the comment keeps this build from rewriting them (they are copied beside the
+        // modules, not bundled); taken out here, it leaves the plain form an app's bundler follows and copies.
+        name: 'softface-package-file-urls',
+        enforce: 'post',
+        renderChunk: (code: string) => code.replace(/new URL\(\s*\/\* @vite-ignore \*\/\s*/g, 'new URL('),
+      },
+    ],
     worker: { format: 'es' },
     build: {
       outDir: 'dist-lib',

@@ -6,14 +6,14 @@ import { DEFAULT_LANDMARKS, type Landmarks } from '../core/head/landmarks';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
-import { ENVIRONMENT_PATH, loadEnvironment } from '../render/environment';
+import { loadEnvironment } from '../render/environment';
 import { HairView } from '../render/hair-view';
 import { SkinView } from '../render/skin-view';
 import { HeadExporter } from '../render/gltf-export';
 import { SkinSimulation } from '../sim/main/skin-simulation';
 import { IdentityBuilder } from '../sim/main/identity-builder';
 import { readIdentity, type NamedIdentity } from '../core/head/identity';
-import { IDENTITY_SOURCE_PATH, prepareIdentityHead } from './identity-head';
+import { prepareIdentityHead } from './identity-head';
 import { EyeDriver } from './eye-driver';
 import { TimelinePlayer } from './timeline-player';
 import { VideoRecorder } from './video-recorder';
@@ -38,7 +38,7 @@ import {
 import { HeadStore } from './head-store';
 import { LandmarkGuide } from './landmark-guide';
 import { checkFaceOption, checkFaceOptions, solverMode, viewBackground, type FaceOptions } from './face-options';
-import { assetBase, loadRig, pageUrl, rigKey, rigName } from './face-assets';
+import { assetUrl, loadRig, pageUrl, rigKey, rigName } from './face-assets';
 import { jawHinge, jawTurner } from './jaw-turner';
 import { PanelSlot } from './panel-slot';
 import { takeBack } from './take-back';
@@ -192,16 +192,16 @@ export class EmbeddedFace {
 
   private async build(signal: AbortSignal | undefined): Promise<void> {
     const o = this.options;
-    const base = assetBase(o.assetBase);
-    const rigLoading = loadRig(o.rig, base);
+    const rigLoading = loadRig(o.rig, o.assetBase);
     // Fetched beside the head and the rig; a failure resolves to null, and the view then makes its own.
-    const environment = loadEnvironment(new URL(ENVIRONMENT_PATH, base).href);
+    const environment = loadEnvironment(assetUrl('environment/room.pmrem', o.assetBase));
     // Awaited below; until then a failure must not count as unhandled if the head fails first.
     rigLoading.catch(() => {});
-    this.modelUrl = o.model === null ? new URL(`models/head-${o.resolution}.glb`, base).href : pageUrl(o.model);
+    this.modelUrl = o.model === null ? assetUrl(`models/head-${o.resolution}.glb`, o.assetBase) : pageUrl(o.model);
     // Loaded heads take their eyes and teeth from the lightest default head.
-    this.partsUrl = new URL('models/head-low.glb', base).href;
-    this.rigKey = o.autosave === false ? undefined : typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, base)}`;
+    this.partsUrl = assetUrl('models/head-low.glb', o.assetBase);
+    this.rigKey =
+      o.autosave === false ? undefined : typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, o.assetBase)}`;
     const original = await rigLoading;
     signal?.throwIfAborted();
     this.original = original;
@@ -360,7 +360,7 @@ export class EmbeddedFace {
   /** Builds a person's head (in the identity worker) at the face's resolution and carries the rig over to it. */
   private async identityHead(named: NamedIdentity): Promise<PreparedHead> {
     const level = this.options.resolution;
-    this.identities ??= new IdentityBuilder(new URL(IDENTITY_SOURCE_PATH, assetBase(this.options.assetBase)).href);
+    this.identities ??= new IdentityBuilder(assetUrl('models/identity-source.bin', this.options.assetBase));
     const build = await this.identities.generate(named.identity, level);
     this.alive();
     return prepareIdentityHead(build, named, this.original, level);

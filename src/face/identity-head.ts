@@ -12,9 +12,6 @@ import { headModelOf } from '../render/head-model';
 import type { IdentityBuild } from '../sim/main/identity-builder';
 import { LOAD_HEAD_DEFAULTS, type PreparedHead } from './head-loader';
 
-/** Where the identity source lies, under the asset base (written by `npm run build:models`). */
-export const IDENTITY_SOURCE_PATH = 'models/identity-source.bin';
-
 /**
  * An identity's head ready to show: the built head as three.js objects, and the rig and landmarks of the default head
  * carried over by the warp fitted on the two heads' matching vertices (the heads share their vertices, so the fit

@@ -1,13 +1,22 @@
 /**
- * Where a face fetches the package's own models and rigs from when no `assetBase` is given. The library build puts
- * them beside its modules, so they are found from the module's own URL wherever it is served from (node_modules, a
- * static host, a CDN). This project's own pages, in development and in its app build, serve them from the site's root.
+ * The package's own files (models, rig, environment), and where a face fetches each from when no `assetBase` is
+ * given. This project's own pages, in development and in its app build, serve them from the site's root; the library
+ * build swaps this module for package-assets-library.ts, which names each file beside its modules by
+ * `new URL('./…', import.meta.url)`, so that a bundler copies it into the app that imports the package.
  */
-export function packageAssetBase(): string {
-  const library = import.meta.env.MODE === 'library' || import.meta.env.MODE === 'standalone';
-  if (!library) return new URL(import.meta.env.BASE_URL, location.origin).href;
-  // Through a variable: written out as `new URL('./', import.meta.url)`, the build would take './' for a file of its
-  // own and put that file's contents in its place.
-  const module = import.meta.url;
-  return new URL('./', module).href;
+
+/** The files a face may fetch from the package, by their path under its asset folder. */
+const PACKAGE_FILES = [
+  'models/head-low.glb',
+  'models/head-medium.glb',
+  'models/head-high.glb',
+  'models/identity-source.bin',
+  'rigs/default.json',
+  'environment/room.pmrem',
+] as const;
+export type PackageFile = (typeof PACKAGE_FILES)[number];
+
+/** Where the package's file is served from (absolute). */
+export function packageFileUrl(file: PackageFile): string {
+  return new URL(file, new URL(import.meta.env.BASE_URL, location.origin)).href;
 }

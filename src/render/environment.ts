@@ -10,9 +10,6 @@ import {
 } from 'three';
 import { decodeEnvironment, type EnvironmentLevels } from '../core/baked-environment';
 
-/** Where the baked room environment lies under a face's asset base. */
-export const ENVIRONMENT_PATH = 'environment/room.pmrem';
-
 /**
  * Loads the baked lighting environment (written by `npm run build:environment`): the same prefiltered cube map the
  * view would otherwise make with PMREMGenerator at start-up, which without a GPU costs seconds of every page load.
