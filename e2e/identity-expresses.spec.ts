@@ -1,4 +1,5 @@
 import type { Page } from '@playwright/test';
+import { agedSkin } from '../src/core/head/identity-skin';
 import { openFace } from './face';
 import { expect, test } from './fixtures';
 
@@ -32,18 +33,21 @@ async function lift(page: Page, id: string, points: 'mouth' | 'brows'): Promise<
       const inner = (p: readonly number[]): number[] => [0.6 * p[0], p[1], p[2]];
       const pair = points === 'mouth' ? [l['mouth-l'], l['mouth-r']].map(nearest) : [inner(l['brow-l']), inner(l['brow-r'])].map(nearest);
       const chin = nearest(l.chin);
+      // From the head's rest shape: the unit at full intensity is its muscles fully contracted, an old face's resting
+      // pull (src/core/head/identity-skin.ts) included.
+      const neutral = rest;
       face.reset();
       face.setActionUnit(id, 1);
       await face.settle(120_000);
       const { positions } = face.getSkin();
       // How far each point moves (FACS's AU12 pulls the corners up and out, AU1 the inner brows up and in).
       const moved = pair.map((v) =>
-        Math.hypot(positions[3 * v] - rest[3 * v], positions[3 * v + 1] - rest[3 * v + 1], positions[3 * v + 2] - rest[3 * v + 2]),
+        Math.hypot(positions[3 * v] - neutral[3 * v], positions[3 * v + 1] - neutral[3 * v + 1], positions[3 * v + 2] - neutral[3 * v + 2]),
       );
       face.reset();
       await face.settle(120_000);
       const browHeight = (l['brow-l'][1] + l['brow-r'][1]) / 2;
-      const up = pair.reduce((sum, v) => sum + (positions[3 * v + 1] - rest[3 * v + 1]) / 2, 0);
+      const up = pair.reduce((sum, v) => sum + (positions[3 * v + 1] - neutral[3 * v + 1]) / 2, 0);
       return { amount: (moved[0] + moved[1]) / 2 / Math.abs(browHeight - rest[3 * chin + 1]), up };
     },
     { id, points },
@@ -58,19 +62,32 @@ test('every stock identity lifts its lip corners under AU12 and its inner brows 
   await openFace(page, '/?resolution=low');
   type Moves = { au12: { amount: number; up: number }; au1: { amount: number; up: number } };
   const measure = async (): Promise<Moves> => ({ au12: await lift(page, 'AU12', 'mouth'), au1: await lift(page, 'AU1', 'brows') });
-  const reference = await measure();
-  // Up by a millimetre at least on the default head.
-  expect(reference.au12.up).toBeGreaterThan(0.001);
-  expect(reference.au1.up).toBeGreaterThan(0.001);
-  const names = await page.evaluate(() => window.face.listIdentities().map((i) => i.name));
-  expect(names.length).toBeGreaterThanOrEqual(12);
+  const people = await page.evaluate(() => window.face.listIdentities());
+  expect(people.length).toBeGreaterThanOrEqual(12);
+  // The default head with the skin of each age (its parameters, and its resting pull as an overlay): what a person's
+  // head of that age is compared with, so that the comparison is of the shapes and the rig carried over to them.
+  const references = new Map<number, Moves>();
+  for (const age of new Set(people.map((p) => p.identity.age))) {
+    const skin = agedSkin(age);
+    await page.evaluate((skin) => {
+      window.face.setSkinParameters(skin.parameters);
+      window.face.setOverlay(Object.keys(skin.tone), Object.values(skin.tone));
+    }, skin);
+    const reference = await measure();
+    // Up by a millimetre at least on the default head.
+    expect(reference.au12.up).toBeGreaterThan(0.001);
+    expect(reference.au1.up).toBeGreaterThan(0.001);
+    references.set(age, reference);
+  }
+  await page.evaluate(() => window.face.clearOverlay());
   const rows: string[] = [];
-  for (const name of names) {
+  for (const { name, identity } of people) {
     const head = await page.evaluate(async (name) => {
       const h = await window.face.setIdentity(name);
       return { source: h.source, name: h.name, level: h.level };
     }, name);
     expect(head).toEqual({ source: 'identity', name, level: 'low' });
+    const reference = references.get(identity.age)!;
     const m = await measure();
     const ratio = { au12: m.au12.amount / reference.au12.amount, au1: m.au1.amount / reference.au1.amount };
     rows.push(`${name}: AU12 ${ratio.au12.toFixed(2)}, AU1 ${ratio.au1.toFixed(2)} of the default head's`);

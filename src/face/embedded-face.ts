@@ -13,6 +13,8 @@ import { HeadExporter } from '../render/gltf-export';
 import { SkinSimulation } from '../sim/main/skin-simulation';
 import { IdentityBuilder } from '../sim/main/identity-builder';
 import { readIdentity, type NamedIdentity } from '../core/head/identity';
+import { agedSkin } from '../core/head/identity-skin';
+import { SKIN_DEFAULTS } from '../core/solver/skin-parameters';
 import { prepareIdentityHead } from './identity-head';
 import { EyeDriver } from './eye-driver';
 import { TimelinePlayer } from './timeline-player';
@@ -78,6 +80,8 @@ export class EmbeddedFace {
   private partsUrl = '';
   private rigKey: string | undefined;
   private headStore: HeadStore | undefined;
+  /** Whether the head shown has a person's aged skin parameters (see mount). */
+  private agedSkinShown = false;
   /** Builds identities' heads, from the first `setIdentity` on. */
   private identities: IdentityBuilder | undefined;
   private head!: HeadDescription;
@@ -381,6 +385,8 @@ export class EmbeddedFace {
     const o = this.options;
     const original = prepared?.rig ?? this.original;
     const own: (() => void)[] = [];
+    // A person's skin ages (its fold spacing, elasticity and resting pull); the default head's does not.
+    const aged = prepared?.identity ? agedSkin(prepared.identity.identity.age) : undefined;
     let skinView: SkinView;
     let simulation: SkinSimulation;
     let rig = original;
@@ -416,6 +422,7 @@ export class EmbeddedFace {
         indices: head.skin.geometry.index!.array as Uint16Array | Uint32Array,
         colliders,
         muscles: rig.muscles,
+        parameters: aged?.parameters,
       });
     } catch (error) {
       autosave?.dispose();
@@ -525,6 +532,12 @@ export class EmbeddedFace {
       loadMs: started > 0 ? Math.round(performance.now() - started) : 0,
     });
     if (carried) this.controllers.head.restore(carried);
+    // The skin's age-given parameters over what was carried; back to the defaults after a person's head.
+    if (aged) simulation.setParameters(aged.parameters);
+    else if (this.agedSkinShown)
+      simulation.setParameters({ wrinkleSpacing: SKIN_DEFAULTS.wrinkleSpacing, positionStiffness: SKIN_DEFAULTS.positionStiffness });
+    this.agedSkinShown = aged !== undefined;
+    if (aged) expression.setResting(aged.tone);
     this.parts.emit('head');
   }
 

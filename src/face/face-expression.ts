@@ -40,14 +40,22 @@ export class FaceExpression {
     if (JSON.stringify(rig.presets) !== JSON.stringify(this.rigNow.presets)) {
       const sliders = this.state.getActionUnits();
       const overlay = this.state.getOverlay();
+      const resting = this.state.getResting();
       this.state = new ExpressionState(rig.presets);
       for (const [id, value] of Object.entries(sliders)) this.state.setActionUnit(id, value);
       for (const [id, value] of Object.entries(overlay)) this.state.setOverlay(id, value);
+      this.state.setResting(resting);
     }
     this.rigNow = rig;
     if (this.contractions.length !== rig.muscles.length) this.contractions = new Float32Array(rig.muscles.length);
     if (this.preview && this.preview.index >= rig.muscles.length) this.preview = null;
     if (send) this.send();
+  }
+
+  /** Sets the face's resting pull (see ExpressionState.setResting) and sends. */
+  setResting(intensities: Readonly<Record<string, number>>): void {
+    this.state.setResting(intensities);
+    this.send();
   }
 
   /** Contracts muscle `index` by at least `value` (0..1) while it is edited; null ends the preview. */

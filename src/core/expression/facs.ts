@@ -144,6 +144,8 @@ export class ExpressionState {
    * follow), kept apart so that it never moves a slider and `reset` leaves it alone.
    */
   private readonly overlay = new Float64Array(SLOT_IDS.length);
+  /** The face's resting pull (see setResting). */
+  private readonly resting = new Float64Array(SLOT_IDS.length);
   private readonly effectiveSlots = new Float64Array(SLOT_IDS.length);
   private dirty = false;
 
@@ -186,6 +188,31 @@ export class ExpressionState {
     }
     if (changed) this.dirty = true;
     return changed;
+  }
+
+  /**
+   * Sets the face's resting pull (Action Unit intensities, clamped to 0..1; others 0): what an old face keeps at rest
+   * (src/core/head/identity-skin.ts). It adds to everything else, moves no slider, and `reset` leaves it.
+   */
+  setResting(intensities: Readonly<Record<string, number>>): void {
+    const next = new Float64Array(SLOT_IDS.length);
+    for (const [id, value] of Object.entries(intensities)) {
+      const slots = SLOTS_OF.get(id);
+      if (!slots) throw refusal('setResting', '', ACTION_UNIT_ID, id);
+      checkNumber('setResting', id, value);
+      for (const s of slots) next[s] = clamp01(value);
+    }
+    this.resting.set(next);
+    this.dirty = true;
+  }
+
+  /** The resting pull by side id, like `getActionUnits`. */
+  getResting(): Record<string, number> {
+    const out: Record<string, number> = {};
+    SLOT_IDS.forEach((id, s) => {
+      if (this.resting[s] !== 0) out[id] = this.resting[s];
+    });
+    return out;
   }
 
   /** Zeroes the overlay; returns whether it had any contribution. */
@@ -304,7 +331,7 @@ export class ExpressionState {
     if (!this.dirty) return this.effectiveSlots;
     const e = this.effectiveSlots;
     e.set(this.sliders);
-    for (let s = 0; s < e.length; s++) e[s] += this.overlay[s];
+    for (let s = 0; s < e.length; s++) e[s] += this.overlay[s] + this.resting[s];
     this.presetSlots.forEach((values, p) => {
       const w = this.presetWeights[p];
       if (w !== 0) for (let s = 0; s < e.length; s++) e[s] += w * values[s];
