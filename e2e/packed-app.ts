@@ -1,0 +1,93 @@
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readdirSync, statSync, symlinkSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { Page } from '@playwright/test';
+import { expect } from './fixtures';
+
+const project = fileURLToPath(new URL('..', import.meta.url));
+
+/** The app's code: a face from `softface` and an element from `softface/element`, imported the ordinary way. */
+const APP_MAIN =
+  "import { createFace } from 'softface';\nimport 'softface/element';\n" +
+  "window.face = await createFace(document.getElementById('face'), { resolution: 'low' });\n" +
+  "document.documentElement.dataset.state = 'ready';\n";
+
+/** The app's page, loading `script` (a tag). */
+export const appPage = (script: string): string =>
+  '<!doctype html><html><body style="margin:0"><div id="face" style="width:480px;height:480px"></div>' +
+  `<soft-face id="element" resolution="low" style="display:block;width:240px;height:240px"></soft-face>${script}</body></html>`;
+
+/**
+ * A fresh app folder with the package installed as `npm pack` makes it (of the library `npm test` has just built),
+ * unpacked into its node_modules beside three.js, its one peer dependency, and `main.js`.
+ */
+export function packedApp(prefix: string): string {
+  const app = mkdtempSync(join(tmpdir(), prefix));
+  const tarball = execFileSync('npm', ['pack', '--ignore-scripts', '--silent', '--pack-destination', app], {
+    cwd: project,
+    encoding: 'utf8',
+  })
+    .trim()
+    .split('\n')
+    .pop()!;
+  const installed = join(app, 'node_modules', 'softface');
+  mkdirSync(installed, { recursive: true });
+  execFileSync('tar', ['-xzf', join(app, tarball), '-C', installed, '--strip-components=1']);
+  symlinkSync(join(project, 'node_modules', 'three'), join(app, 'node_modules', 'three'), 'dir');
+  writeFileSync(join(app, 'main.js'), APP_MAIN);
+  return app;
+}
+
+/** Every file under `dir`. */
+export function filesUnder(dir: string): string[] {
+  const out: string[] = [];
+  for (const name of readdirSync(dir)) {
+    const path = join(dir, name);
+    if (statSync(path).isDirectory()) out.push(...filesUnder(path));
+    else out.push(path);
+  }
+  return out;
+}
+
+/**
+ * Serves `dir` to `page` at `origin` as a plain static host (no COOP/COEP), opens it, and checks what a user would:
+ * the face shows on a page that is not cross-origin isolated, AU12 moves its skin, the element starts too, and no
+ * request fails.
+ */
+export async function checkPackedApp(page: Page, origin: string, dir: string): Promise<void> {
+  const failed: string[] = [];
+  page.on('requestfailed', (r) => failed.push(`${r.url()}: ${r.failure()?.errorText}`));
+  page.on('response', (r) => {
+    if (r.status() >= 400) failed.push(`${r.url()}: ${r.status()}`);
+  });
+  await page.route(`${origin}/**`, (route) => {
+    const path = decodeURIComponent(new URL(route.request().url()).pathname);
+    const file = join(dir, path === '/' ? 'index.html' : path);
+    if (!existsSync(file) || !statSync(file).isFile()) return route.fulfill({ status: 404, body: 'not found' });
+    return route.fulfill({ path: file });
+  });
+  await page.goto(`${origin}/`);
+  await expect(page.locator('html')).toHaveAttribute('data-state', 'ready', { timeout: 120_000 });
+  const moved = await page.evaluate(async () => {
+    const face = window.face;
+    await face.ready;
+    const before = face.getSkin();
+    face.setActionUnit('AU12', 1);
+    await face.settle(60_000);
+    const after = face.getSkin().positions;
+    let most = 0;
+    for (let i = 0; i < after.length; i++) most = Math.max(most, Math.abs(after[i] - before.rest[i]));
+    return { isolated: crossOriginIsolated, mm: 1000 * most, vertices: before.rest.length / 3 };
+  });
+  expect(moved.isolated).toBe(false);
+  expect(moved.vertices).toBe(4284);
+  expect(moved.mm).toBeGreaterThan(2);
+  await expect
+    .poll(() => page.evaluate(() => (document.getElementById('element') as HTMLElement & { face?: unknown }).face !== undefined), {
+      timeout: 120_000,
+    })
+    .toBe(true);
+  expect(failed).toEqual([]);
+}
