@@ -51,5 +51,7 @@ test("the ES modules run with the page's own three.js, and solve on shared memor
     '/lib/models/head-low.glb',
     '/lib/rigs/default.json',
     '/lib/softface.js',
+    // The skin worker's code, fetched as the face starts.
+    expect.stringMatching(/^\/lib\/spawn-skin-worker-inline-[\w-]+\.js$/),
   ]);
 });

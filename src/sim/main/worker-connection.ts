@@ -1,5 +1,4 @@
 import type { FromWorker, InitMessage, ReadyMessage, ToWorker } from '../shared/protocol';
-import { spawnSkinWorker } from './spawn-skin-worker';
 
 /** The skin worker, started and initialised: its messages, its failure if any, and its end. */
 export class WorkerConnection {
@@ -28,7 +27,10 @@ export class WorkerConnection {
   }
 
   /** Starts a worker and resolves once it has built the skin and written its first frame. */
-  static start(init: InitMessage): Promise<{ connection: WorkerConnection; ready: ReadyMessage }> {
+  static async start(init: InitMessage): Promise<{ connection: WorkerConnection; ready: ReadyMessage }> {
+    // Imported here, not at the top: in the library build the worker's code (inlined there) is a chunk of its own,
+    // fetched beside the head, so that the entry carries only the page's side.
+    const { spawnSkinWorker } = await import('./spawn-skin-worker');
     const worker = spawnSkinWorker();
     return new Promise((resolve, reject) => {
       const finish = (outcome: () => void): void => {
