@@ -2,7 +2,7 @@ import { RigDocument } from '../core/rig/rig-document';
 import type { Rig } from '../core/rig/rig-types';
 import { HEAD_NODES } from '../core/head/head-nodes';
 import { headColliders } from '../render/head-colliders';
-import { DEFAULT_LANDMARKS, type Landmarks } from '../core/head/landmarks';
+import { DEFAULT_LANDMARKS } from '../core/head/landmarks';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
@@ -11,11 +11,9 @@ import { HairView } from '../render/hair-view';
 import { SkinView } from '../render/skin-view';
 import { HeadExporter } from '../render/gltf-export';
 import { SkinSimulation } from '../sim/main/skin-simulation';
-import { IdentityBuilder } from '../sim/main/identity-builder';
-import { readIdentity, type NamedIdentity } from '../core/head/identity';
+import { readIdentity } from '../core/head/identity';
 import { agedSkin } from '../core/head/identity-skin';
 import { SKIN_DEFAULTS } from '../core/solver/skin-parameters';
-import { prepareIdentityHead } from './identity-head';
 import { EyeDriver } from './eye-driver';
 import { TimelinePlayer } from './timeline-player';
 import { VideoRecorder } from './video-recorder';
@@ -26,19 +24,9 @@ import { readExpression } from './expression-hash';
 import { FaceExpression } from './face-expression';
 import { createControllers, FaceHandle, type FaceControllers } from './face-handle';
 import { FaceParts } from './face-parts';
-import {
-  checkLoadHeadOptions,
-  describeShownHead,
-  MissingLandmarksError,
-  prepareHead,
-  readHeadFiles,
-  type HeadDescription,
-  type HeadSource,
-  type LoadHeadOptions,
-  type PreparedHead,
-} from './head-loader';
+import { describeShownHead, prepareHead, type HeadDescription, type PreparedHead } from './head-loader';
 import { HeadStore } from './head-store';
-import { LandmarkGuide } from './landmark-guide';
+import { HeadSwitch } from './head-switch';
 import { checkFaceOption, checkFaceOptions, solverMode, viewBackground, type FaceOptions } from './face-options';
 import { assetUrl, loadRig, pageUrl, rigKey, rigName } from './face-assets';
 import { jawHinge, jawTurner } from './jaw-turner';
@@ -82,13 +70,10 @@ export class EmbeddedFace {
   private headStore: HeadStore | undefined;
   /** Whether the head shown has a person's aged skin parameters (see mount). */
   private agedSkinShown = false;
-  /** Builds identities' heads, from the first `setIdentity` on. */
-  private identities: IdentityBuilder | undefined;
+  /** Which head is shown, and the changes to it (loaded heads, people, the default head, the landmark guide). */
+  private readonly heads: HeadSwitch;
   private head!: HeadDescription;
   private shownHead: HeadModel | undefined;
-  private guide: LandmarkGuide | undefined;
-  /** The last head load or revert asked for: the next waits for it. */
-  private loading: Promise<unknown> = Promise.resolve();
 
   private constructor(
     container: HTMLElement,
@@ -113,7 +98,22 @@ export class EmbeddedFace {
     });
     Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
     this.parts.view = this.view;
-    this.parts.heads = this;
+    this.heads = new HeadSwitch({
+      options,
+      view: this.view,
+      original: () => this.original,
+      modelUrl: () => this.modelUrl,
+      partsUrl: () => this.partsUrl,
+      headStore: () => this.headStore,
+      shownHead: () => this.shownHead,
+      describeHead: () => this.describeHead(),
+      mount: (head, prepared, how) => this.mount(head, prepared, how),
+      emit: (change) => this.parts.emit(change),
+      stopEditing: () => this.handle.setEditor(false),
+      alive: () => this.alive(),
+      disposed: () => this.disposed,
+    });
+    this.parts.heads = this.heads;
     this.parts.shell = this;
     this.background = options.background;
     // One player for the face's life: a timeline keeps playing across a head change.
@@ -181,13 +181,7 @@ export class EmbeddedFace {
     this.handle.dispose();
     this.panels.dispose();
     try {
-      takeBack([
-        () => this.view.dispose(),
-        ...this.undo,
-        () => this.unmount(),
-        () => this.guide?.cancel(),
-        () => this.identities?.dispose(),
-      ]);
+      takeBack([() => this.view.dispose(), ...this.undo, () => this.unmount(), () => this.heads.dispose()]);
     } finally {
       this.undo.length = 0;
       this.element.remove();
@@ -228,7 +222,7 @@ export class EmbeddedFace {
     // A person asked for by the options is shown in place of the default head or a kept one.
     const named = o.model === null ? readIdentity(o.identity, 'createFace: identity') : null;
     if (named) {
-      prepared = await this.identityHead(named);
+      prepared = await this.heads.identityHead(named);
       signal?.throwIfAborted();
     }
     let head: HeadModel;
@@ -252,122 +246,6 @@ export class EmbeddedFace {
     if (Object.keys(o.appearance).length > 0) this.handle.setAppearance(o.appearance);
     if (o.eyeSimulation) this.handle.setEyeSimulation(true);
     if (o.panels) await this.setPanels(true);
-  }
-
-  /**
-   * Loads a head from a file or URL, carries the rig over to it and shows it in place of the current one. Everything is
-   * read, checked and fitted before the current head is touched: a refused file changes nothing.
-   */
-  async loadHead(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
-    this.alive();
-    const o = checkLoadHeadOptions(options);
-    // Another head asked for: a landmark guide under way is given up.
-    this.guide?.cancel();
-    const run = async (): Promise<HeadDescription> => {
-      const started = performance.now();
-      const files = await readHeadFiles(source);
-      const prepared = await prepareHead(files, o, this.partsUrl, this.original, o.resolution ?? this.options.resolution);
-      this.alive();
-      await this.mount(prepared.head, prepared, { started, fresh: true });
-      await this.headStore?.save({
-        files: prepared.files,
-        options: { ...prepared.options, landmarks: null },
-        landmarks: prepared.landmarks,
-      });
-      return this.describeHead();
-    };
-    // One load at a time, in the order asked.
-    const next = this.loading.then(run, run);
-    this.loading = next.catch(() => {});
-    return next;
-  }
-
-  /**
-   * Loads a head as `loadHead` does, but where landmarks cannot be found, shows its skin alone and has them placed by
-   * clicking on it (or `placeLandmark`), in the order of `LANDMARK_NAMES`; once the last is placed the head loads with
-   * them. Resolves when it is shown; rejects if the guide is cancelled or the file is refused for another reason.
-   */
-  async guideLandmarks(source: HeadSource, options?: LoadHeadOptions): Promise<HeadDescription> {
-    this.alive();
-    const o = checkLoadHeadOptions(options);
-    const files = await readHeadFiles(source);
-    try {
-      return await this.loadHead(files, o);
-    } catch (error) {
-      if (!(error instanceof MissingLandmarksError)) throw error;
-      this.guide?.cancel();
-      const guide = new LandmarkGuide(this.view, error, this.currentHeadRoot(), () => this.parts.emit('landmarks'));
-      this.guide = guide;
-      this.handle.setEditor(false);
-      this.parts.emit('landmarks');
-      let landmarks: Partial<Landmarks>;
-      try {
-        landmarks = await guide.done;
-      } finally {
-        guide.dispose();
-        if (this.guide === guide) this.guide = undefined;
-        if (!this.disposed && this.shownHead) this.view.frameBounds(this.shownHead.bounds);
-        this.parts.emit('landmarks');
-      }
-      return this.loadHead(files, { ...o, landmarks: { ...(o.landmarks ?? {}), ...landmarks } });
-    }
-  }
-
-  /** The landmark guide under way, if any. */
-  landmarkGuide(): LandmarkGuide | undefined {
-    return this.guide;
-  }
-
-  private currentHeadRoot(): HeadModel['root'] | undefined {
-    return this.shownHead?.root;
-  }
-
-  /** Shows the default head again with the face's own rig, and forgets a kept loaded head. */
-  async revertHead(): Promise<void> {
-    this.alive();
-    this.guide?.cancel();
-    const run = async (): Promise<void> => {
-      const head = await loadHeadModel(this.modelUrl);
-      this.alive();
-      await this.mount(head, undefined, {});
-      await this.headStore?.clear();
-    };
-    const next = this.loading.then(run, run);
-    this.loading = next.catch(() => {});
-    return next;
-  }
-
-  /**
-   * Shows the head of a person (built in a worker from the base mesh and MakeHuman's targets) with the face's rig
-   * carried over, or the default head again for null. Built and fitted before the current head is touched.
-   */
-  async showIdentity(named: NamedIdentity | null): Promise<HeadDescription> {
-    this.alive();
-    this.guide?.cancel();
-    if (named === null) {
-      await this.revertHead();
-      return this.describeHead();
-    }
-    const run = async (): Promise<HeadDescription> => {
-      const started = performance.now();
-      const prepared = await this.identityHead(named);
-      await this.mount(prepared.head, prepared, { started });
-      // A loaded head kept from before would come back on the next visit instead of the person asked for.
-      await this.headStore?.clear();
-      return this.describeHead();
-    };
-    const next = this.loading.then(run, run);
-    this.loading = next.catch(() => {});
-    return next;
-  }
-
-  /** Builds a person's head (in the identity worker) at the face's resolution and carries the rig over to it. */
-  private async identityHead(named: NamedIdentity): Promise<PreparedHead> {
-    const level = this.options.resolution;
-    this.identities ??= new IdentityBuilder(assetUrl('models/identity-source.bin', this.options.assetBase));
-    const build = await this.identities.generate(named.identity, level);
-    this.alive();
-    return prepareIdentityHead(build, named, this.original, level);
   }
 
   /** What the face shows now: the default head or a loaded one. */

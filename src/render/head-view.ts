@@ -467,12 +467,10 @@ export class HeadView {
 }
 
 /**
- * Gives a head the appearance asked for: the hair's, and the skin's colour. The default colour keeps the skin
- * material's own (its linear value, which the sRGB hex only rounds; an identity's skin tone, see identity-look.ts),
- * so that a face never asked for another is drawn exactly as before.
+ * Gives a head the appearance asked for: the hair's, and the skin's colour. A default keeps the head's own (an
+ * identity's: identity-look.ts; the skin's linear value, which the sRGB hex only rounds), drawn exactly as before.
  */
 function applyAppearance(head: HeadModel, appearance: Required<AppearanceOptions>): void {
-  // Brow and lash options left at their defaults show the head's own look (an identity's), if it has one.
   const own = head.hairLook;
   const hair = { ...appearance };
   if (own) {
