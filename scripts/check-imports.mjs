@@ -1,4 +1,4 @@
-// Checks the layout's import rules: which folders of src/ each folder's modules may import (the README's layout
+// Checks the layout's import rules: which folders of src/ each folder's modules may import (docs/contributing.md's layout
 // table). A static import of a folder not allowed fails `npm run lint`, naming the file and the import.
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { dirname, join, relative, resolve } from 'node:path';
