@@ -1,21 +1,26 @@
-import { rmSync, writeFileSync } from 'node:fs';
+import { rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { build } from 'vite';
 import { expect, test } from './fixtures';
-import { appPage, checkPackedApp, filesUnder, packedApp } from './packed-app';
+import { checkPackedApp, filesUnder, packedApp } from './packed-app';
 
 /**
- * The package as a web developer uses it with Vite: packed, installed in a fresh app, imported the ordinary way, built
- * with no configuration and served without the isolation headers. The head models, the rig and the environment are
- * found by Vite through the package's `new URL('./…', import.meta.url)` and copied into the build.
+ * The package as a web developer uses it with Vite: `examples/vite-app` with the package packed and installed, built
+ * (its config only keeps the package out of the dev server's pre-bundling) and served without the isolation headers.
+ * The head models, the rig and the environment are found by Vite through the package's
+ * `new URL('./…', import.meta.url)` and copied into the build.
  */
 test.describe.configure({ timeout: 240_000 });
 
 let app: string;
 test.beforeAll(async () => {
-  app = packedApp('softface-vite-app-');
-  writeFileSync(join(app, 'index.html'), appPage('<script type="module" src="./main.js"></script>'));
-  await build({ root: app, logLevel: 'silent', configFile: false, build: { outDir: join(app, 'dist'), target: 'es2022' } });
+  app = packedApp('vite-app');
+  await build({
+    root: app,
+    logLevel: 'silent',
+    configFile: join(app, 'vite.config.js'),
+    build: { outDir: join(app, 'dist'), target: 'es2022' },
+  });
 });
 
 test.afterAll(() => {

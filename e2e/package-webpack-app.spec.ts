@@ -1,27 +1,24 @@
-import { rmSync, writeFileSync } from 'node:fs';
+import { rmSync } from 'node:fs';
+import { pathToFileURL } from 'node:url';
 import { join } from 'node:path';
 import webpack from 'webpack';
 import { expect, test } from './fixtures';
-import { appPage, checkPackedApp, filesUnder, packedApp } from './packed-app';
+import { checkPackedApp, filesUnder, packedApp } from './packed-app';
 
 /**
- * The package as a web developer uses it with webpack 5: packed, installed in a fresh app, imported the ordinary way,
- * built with a minimal configuration (an entry and an output folder) and served without the isolation headers. The
- * head models, the rig and the environment are asset modules to webpack, found through the package's
- * `new URL('./…', import.meta.url)` and emitted into the build.
+ * The package as a web developer uses it with webpack 5: `examples/webpack-app` with the package packed and installed,
+ * built with its configuration (an entry and an output folder) and served without the isolation headers. The head
+ * models, the rig and the environment are asset modules to webpack, found through the package's
+ * `new URL('./…', import.meta.url)` and emitted beside its bundle.
  */
 test.describe.configure({ timeout: 240_000 });
 
 let app: string;
 test.beforeAll(async () => {
-  app = packedApp('softface-webpack-app-');
-  const compiler = webpack({
-    mode: 'production',
-    context: app,
-    entry: './main.js',
-    output: { path: join(app, 'dist'), filename: 'main.js' },
-    performance: { hints: false },
-  });
+  app = packedApp('webpack-app');
+  const config = (await import(pathToFileURL(join(app, 'webpack.config.js')).href)).default;
+  // As `npx webpack` run in the app's folder would build it.
+  const compiler = webpack({ ...config, context: app });
   await new Promise<void>((resolve, reject) =>
     compiler.run((error, stats) => {
       if (error) reject(error);
@@ -29,7 +26,6 @@ test.beforeAll(async () => {
       else compiler.close(() => resolve());
     }),
   );
-  writeFileSync(join(app, 'dist', 'index.html'), appPage('<script src="./main.js"></script>'));
 });
 
 test.afterAll(() => {
@@ -46,5 +42,5 @@ test('a fresh webpack 5 app that imports the packed library builds, shows a face
       files.some((f) => f.endsWith(extension)),
       extension,
     ).toBe(true);
-  await checkPackedApp(page, 'http://localhost:4396', join(app, 'dist'));
+  await checkPackedApp(page, 'http://localhost:4396', app);
 });

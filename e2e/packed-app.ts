@@ -1,5 +1,5 @@
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readdirSync, statSync, symlinkSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, statSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -8,23 +8,14 @@ import { expect } from './fixtures';
 
 const project = fileURLToPath(new URL('..', import.meta.url));
 
-/** The app's code: a face from `softface` and an element from `softface/element`, imported the ordinary way. */
-const APP_MAIN =
-  "import { createFace } from 'softface';\nimport 'softface/element';\n" +
-  "window.face = await createFace(document.getElementById('face'), { resolution: 'low' });\n" +
-  "document.documentElement.dataset.state = 'ready';\n";
-
-/** The app's page, loading `script` (a tag). */
-export const appPage = (script: string): string =>
-  '<!doctype html><html><body style="margin:0"><div id="face" style="width:480px;height:480px"></div>' +
-  `<soft-face id="element" resolution="low" style="display:block;width:240px;height:240px"></soft-face>${script}</body></html>`;
-
 /**
- * A fresh app folder with the package installed as `npm pack` makes it (of the library `npm test` has just built),
- * unpacked into its node_modules beside three.js, its one peer dependency, and `main.js`.
+ * A fresh copy of one of the project's examples (`examples/<name>`) with the package installed as `npm pack` makes it
+ * (of the library `npm test` has just built), unpacked into its node_modules beside three.js, its one peer dependency.
  */
-export function packedApp(prefix: string): string {
-  const app = mkdtempSync(join(tmpdir(), prefix));
+export function packedApp(example: string): string {
+  const app = mkdtempSync(join(tmpdir(), `softface-${example}-`));
+  // What a developer's own runs of the example left there is not part of it.
+  cpSync(join(project, 'examples', example), app, { recursive: true, filter: (path) => !/[\\/](node_modules|dist)$/.test(path) });
   const tarball = execFileSync('npm', ['pack', '--ignore-scripts', '--silent', '--pack-destination', app], {
     cwd: project,
     encoding: 'utf8',
@@ -36,7 +27,6 @@ export function packedApp(prefix: string): string {
   mkdirSync(installed, { recursive: true });
   execFileSync('tar', ['-xzf', join(app, tarball), '-C', installed, '--strip-components=1']);
   symlinkSync(join(project, 'node_modules', 'three'), join(app, 'node_modules', 'three'), 'dir');
-  writeFileSync(join(app, 'main.js'), APP_MAIN);
   return app;
 }
 
