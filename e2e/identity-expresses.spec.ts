@@ -44,8 +44,6 @@ async function lift(page: Page, id: string, points: 'mouth' | 'brows'): Promise<
       const moved = pair.map((v) =>
         Math.hypot(positions[3 * v] - neutral[3 * v], positions[3 * v + 1] - neutral[3 * v + 1], positions[3 * v + 2] - neutral[3 * v + 2]),
       );
-      face.reset();
-      await face.settle(120_000);
       const browHeight = (l['brow-l'][1] + l['brow-r'][1]) / 2;
       const up = pair.reduce((sum, v) => sum + (positions[3 * v + 1] - neutral[3 * v + 1]) / 2, 0);
       return { amount: (moved[0] + moved[1]) / 2 / Math.abs(browHeight - rest[3 * chin + 1]), up };

@@ -1,5 +1,5 @@
 import { execFileSync } from 'node:child_process';
-import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, statSync, symlinkSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, statSync, symlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -7,6 +7,24 @@ import type { Page } from '@playwright/test';
 import { expect } from './fixtures';
 
 const project = fileURLToPath(new URL('..', import.meta.url));
+
+let tarball: string | undefined;
+
+/** The package as `npm pack` makes it, once per test worker (each app unpacks its own copy). */
+function packed(): string {
+  if (tarball && existsSync(tarball)) return tarball;
+  const folder = mkdtempSync(join(tmpdir(), 'softface-pack-'));
+  process.once('exit', () => rmSync(folder, { recursive: true, force: true }));
+  const name = execFileSync('npm', ['pack', '--ignore-scripts', '--silent', '--pack-destination', folder], {
+    cwd: project,
+    encoding: 'utf8',
+  })
+    .trim()
+    .split('\n')
+    .pop()!;
+  tarball = join(folder, name);
+  return tarball;
+}
 
 /**
  * A fresh copy of one of the project's examples (`examples/<name>`) with the package installed as `npm pack` makes it
@@ -16,16 +34,9 @@ export function packedApp(example: string): string {
   const app = mkdtempSync(join(tmpdir(), `softface-${example}-`));
   // What a developer's own runs of the example left there is not part of it.
   cpSync(join(project, 'examples', example), app, { recursive: true, filter: (path) => !/[\\/](node_modules|dist)$/.test(path) });
-  const tarball = execFileSync('npm', ['pack', '--ignore-scripts', '--silent', '--pack-destination', app], {
-    cwd: project,
-    encoding: 'utf8',
-  })
-    .trim()
-    .split('\n')
-    .pop()!;
   const installed = join(app, 'node_modules', 'softface');
   mkdirSync(installed, { recursive: true });
-  execFileSync('tar', ['-xzf', join(app, tarball), '-C', installed, '--strip-components=1']);
+  execFileSync('tar', ['-xzf', packed(), '-C', installed, '--strip-components=1']);
   symlinkSync(join(project, 'node_modules', 'three'), join(app, 'node_modules', 'three'), 'dir');
   return app;
 }

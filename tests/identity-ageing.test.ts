@@ -48,10 +48,10 @@ describe('skin that ages', () => {
     expect(Object.keys(old.tone).sort()).toEqual(['AU1', 'AU2', 'AU4', 'AU6']);
   });
 
+  // Two of the six pairs of sex and ancestry: each builds and settles two medium heads.
   for (const [sex, ancestry] of [
     [0, 'european'],
     [1, 'african'],
-    [0, 'asian'],
   ] as const) {
     describe(`${sex === 0 ? 'women' : 'men'} of ${ancestry} ancestry, 20 and 70 years`, () => {
       let f: ReturnType<typeof atRest>;
