@@ -1,7 +1,7 @@
-import { existsSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect, test } from './fixtures';
+import { failedRequests, serveFiles } from './packed-app';
 
 /**
  * `examples/static-html`: a plain page on a static host without a bundler or the isolation headers, with the library's
@@ -12,19 +12,10 @@ const root = (p: string): string => fileURLToPath(new URL(`../${p}`, import.meta
 
 test('the static HTML example shows a face from the standalone module that moves, fetching nothing missing', async ({ page }) => {
   test.setTimeout(120_000);
-  const failed: string[] = [];
-  page.on('requestfailed', (r) => failed.push(`${r.url()}: ${r.failure()?.errorText}`));
-  page.on('response', (r) => {
-    if (r.status() >= 400) failed.push(`${r.url()}: ${r.status()}`);
-  });
-  await page.route(`${ORIGIN}/**`, (route) => {
-    const path = decodeURIComponent(new URL(route.request().url()).pathname);
-    const file = path.startsWith('/softface/')
-      ? join(root('dist-lib'), path.slice('/softface/'.length))
-      : join(root('examples/static-html'), path === '/' ? 'index.html' : path);
-    if (!existsSync(file) || !statSync(file).isFile()) return route.fulfill({ status: 404, body: 'not found' });
-    return route.fulfill({ path: file });
-  });
+  const failed = failedRequests(page);
+  await serveFiles(page, ORIGIN, (path) =>
+    path.startsWith('/softface/') ? join(root('dist-lib'), path.slice('/softface/'.length)) : join(root('examples/static-html'), path),
+  );
   await page.goto(`${ORIGIN}/`);
   await expect.poll(() => page.evaluate(() => document.querySelector('soft-face')?.face !== undefined), { timeout: 90_000 }).toBe(true);
   const moved = await page.evaluate(async () => {

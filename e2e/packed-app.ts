@@ -52,23 +52,36 @@ export function filesUnder(dir: string): string[] {
   return out;
 }
 
-/**
- * Serves `dir` to `page` at `origin` as a plain static host (no COOP/COEP), opens it, and checks what a user would:
- * the face shows on a page that is not cross-origin isolated, AU12 moves its skin, the element starts too, and no
- * request fails.
- */
-export async function checkPackedApp(page: Page, origin: string, dir: string): Promise<void> {
+/** The page's failed requests and error responses from now on (`url: reason`), gathered as they happen. */
+export function failedRequests(page: Page): string[] {
   const failed: string[] = [];
   page.on('requestfailed', (r) => failed.push(`${r.url()}: ${r.failure()?.errorText}`));
   page.on('response', (r) => {
     if (r.status() >= 400) failed.push(`${r.url()}: ${r.status()}`);
   });
+  return failed;
+}
+
+/**
+ * Answers `page`'s requests to `origin` as a plain static host would (no COOP/COEP): each path from the file `fileOf`
+ * names for it (`/` is `/index.html`), a missing one a 404.
+ */
+export async function serveFiles(page: Page, origin: string, fileOf: (path: string) => string): Promise<void> {
   await page.route(`${origin}/**`, (route) => {
     const path = decodeURIComponent(new URL(route.request().url()).pathname);
-    const file = join(dir, path === '/' ? 'index.html' : path);
+    const file = fileOf(path === '/' ? '/index.html' : path);
     if (!existsSync(file) || !statSync(file).isFile()) return route.fulfill({ status: 404, body: 'not found' });
     return route.fulfill({ path: file });
   });
+}
+
+/**
+ * Serves `dir` to `page` at `origin` as a plain static host, opens it, and checks what a user would: the face shows
+ * on a page that is not cross-origin isolated, AU12 moves its skin, the element starts too, and no request fails.
+ */
+export async function checkPackedApp(page: Page, origin: string, dir: string): Promise<void> {
+  const failed = failedRequests(page);
+  await serveFiles(page, origin, (path) => join(dir, path));
   await page.goto(`${origin}/`);
   await expect(page.locator('html')).toHaveAttribute('data-state', 'ready', { timeout: 120_000 });
   const moved = await page.evaluate(async () => {
