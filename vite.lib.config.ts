@@ -49,9 +49,9 @@ export default defineConfig(({ mode }) => {
       rollupOptions: {
         external: standalone ? [] : [/^three($|\/)/],
         // Every module at the root, side by side: the default asset base is the folder of the module's own URL. The
-        // standalone module is one file whole: its lazily loaded parts (decimation, video encoding, glTF export) go
-        // inside it, so that a host serves it alone.
-        output: standalone ? { inlineDynamicImports: true } : { chunkFileNames: '[name]-[hash].js' },
+        // standalone module's lazily loaded parts (the workers, the panels, video encoding, decimation) are chunks
+        // beside it too, fetched when first used; those that are the library's own, byte for byte, share its files.
+        output: { chunkFileNames: '[name]-[hash].js' },
       },
     },
   };

@@ -46,13 +46,17 @@ test('the standalone module runs on a static host under a strict content securit
   expect(r.moved).toBeGreaterThan(0.005);
   // Nothing the policy forbids was tried: no eval, no inline style or script, workers only from Blob URLs.
   expect(r.violations).toEqual([]);
-  // The host served the page, its script, the module and the models, rig and lighting beside it: no worker file, and the
-  // module found its assets from its own URL.
-  expect([...new Set(asked)].sort()).toEqual([
+  // The host served the page, its script, the module with its chunks (three.js, and the skin worker's, which starts it
+  // from a Blob URL: no worker file), and the models, rig and lighting beside it: the module found them from its own
+  // URL. Chunks by name without their hash.
+  expect([...new Set(asked.map((path) => path.replace(/-[\w-]{8}\.js$/, '.js')))].sort()).toEqual([
     '/lib/environment/room.pmrem',
+    '/lib/face-options.js',
     '/lib/models/head-low.glb',
     '/lib/rigs/default.json',
     '/lib/softface.standalone.js',
+    '/lib/spawn-skin-worker-inline.js',
+    '/lib/three.core.js',
     '/standalone.css',
     '/standalone.html',
     '/standalone.js',
