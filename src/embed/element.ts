@@ -1,6 +1,8 @@
 /**
  * `import 'softface/element'` registers `<soft-face>` (once, even if imported twice) and gives it a default size:
  * a block 400 px high, which any style of the page's own overrides.
+ *
+ * @module softface/element
  */
 import { SoftFaceElement } from './soft-face-element';
 

@@ -9,6 +9,7 @@ import type { FaceChange, MuscleDisplay } from '../face/face-handle';
 
 /** What a `change` event's detail says: what the handle changed, or which shown part the attributes switched. */
 export interface SoftFaceChangeDetail {
+  /** What changed: a `FaceChange` the face's handle reported, or `panels` or `background` set by an attribute. */
   change: FaceChange | 'panels' | 'background';
 }
 
@@ -31,6 +32,10 @@ interface CarriedState {
  * Removing the element disposes its face.
  */
 export class SoftFaceElement extends HTMLElement {
+  /**
+   * The attributes whose changes the element applies live (the browser reports them to `attributeChangedCallback`):
+   * `resolution`, `expression`, `preset`, `solver`, `panels`, `eye-simulation`, `background`, `identity`.
+   */
   static readonly observedAttributes: readonly string[] = FACE_ATTRIBUTES;
   private embedded: EmbeddedFace | undefined;
   /** Aborts the build under way, if any. */
@@ -44,10 +49,12 @@ export class SoftFaceElement extends HTMLElement {
     return this.embedded?.handle;
   }
 
+  /** Starts building the face the attributes ask for, unless it has one or is building it already. */
   connectedCallback(): void {
     if (!this.embedded && !this.building) this.build(undefined);
   }
 
+  /** Disposes the face (or stops its build) unless the element is back in the page at once, as when it is moved. */
   disconnectedCallback(): void {
     // An element moved elsewhere in the page is disconnected and connected again at once: it keeps its face.
     queueMicrotask(() => {
@@ -55,6 +62,10 @@ export class SoftFaceElement extends HTMLElement {
     });
   }
 
+  /**
+   * Applies a changed attribute to the face: `resolution` and `solver` rebuild it, keeping what it had; the others
+   * change it in place (or when it is built). A bad value fires `error` and the face keeps its last good one.
+   */
   attributeChangedCallback(name: string, old: string | null, value: string | null): void {
     if (old === value) return;
     const attribute = name as FaceAttribute;

@@ -151,7 +151,12 @@ export class EditorController {
   }
 
   /** Where a shown muscle's glyph can be clicked on the page, in client pixels, or null (read-only: for tests). */
-  locateMuscle(name: string): { x: number; y: number } | null {
+  locateMuscle(name: string): {
+    /** Client pixels from the viewport's left edge, as `MouseEvent.clientX` counts them. */
+    x: number;
+    /** Client pixels from the viewport's top edge, as `MouseEvent.clientY` counts them. */
+    y: number;
+  } | null {
     this.parts.alive();
     return this.session.locateMuscle(name);
   }

@@ -16,7 +16,12 @@ export type { GizmoMode, GizmoPart };
  * spheres of `radius` metres, stored in the rig in rest space.
  */
 export interface BrushOptions {
+  /**
+   * What a press or drag on the skin does while the editor is on and a muscle is selected: nothing (`off`, the
+   * default; the gizmo shows), or dabs spheres that paint the skin into (`add`) or out of (`remove`) its influence.
+   */
   mode: 'off' | 'add' | 'remove';
+  /** Radius of each dab's sphere, in metres (0.001..0.05; default 0.006): full hold in its inner half. */
   radius: number;
 }
 
@@ -32,16 +37,30 @@ const GIZMO_MODES: readonly GizmoMode[] = ['translate', 'rotate', 'scale'];
 
 /** The editor's state, as `describeEditor` reports it (read-only). */
 export interface EditorState {
+  /** Whether the muscle editor is on (`setEditor`). */
   on: boolean;
+  /** The selected muscle's name, or null when none is. */
   selected: string | null;
+  /** What the gizmo does to the part it holds: `translate`, `rotate` or `scale` (a point only moves). */
   mode: GizmoMode;
+  /** The part of the selected muscle the gizmo holds; null when the editor is off or nothing is held. */
   part: GizmoPart | null;
   /** Contraction of the selected muscle while it is edited, 0..1 (on top of the Action Units). */
   preview: number;
   /** Where the gizmo is on the page (client pixels), if it shows. */
-  gizmo: { x: number; y: number } | null;
+  gizmo: {
+    /** Client pixels from the viewport's left edge, as `MouseEvent.clientX` counts them. */
+    x: number;
+    /** Client pixels from the viewport's top edge, as `MouseEvent.clientY` counts them. */
+    y: number;
+  } | null;
   /** Undo and redo steps available. */
-  history: { undo: number; redo: number };
+  history: {
+    /** Rig edits that can be undone now. */
+    undo: number;
+    /** Undone rig edits that can be redone now. */
+    redo: number;
+  };
   /** Whether edits are mirrored onto the twin. */
   mirror: boolean;
   /** Whether the rig differs from the one the face was made with. */
@@ -50,6 +69,7 @@ export interface EditorState {
   autosave: 'off' | 'clean' | 'pending' | 'saved' | 'failed';
   /** The rig's name, for its exported file (`<name>.rig.json`). */
   rigName: string;
+  /** The vertex brush's mode and radius, as `getBrush` gives them. */
   brush: BrushOptions;
 }
 

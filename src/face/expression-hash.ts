@@ -7,7 +7,9 @@ import { refusal } from '../core/check';
 
 /** What the hash carries: Action Unit sliders by side id, and preset weights by name. */
 export interface HashExpression {
+  /** Action Unit intensities by id as `setActionUnit` takes them (`AU12`, `AU12L`, `AU17`); the face clamps to 0..1. */
   actionUnits: Record<string, number>;
+  /** Preset weights by the preset's name in the rig (`happiness`, no `preset:` prefix); the face clamps to 0..1. */
   presets: Record<string, number>;
 }
 

@@ -73,9 +73,11 @@ type Delegated<K extends keyof FaceControllers> = Pick<
 >;
 
 /**
- * The methods the handle hands to its controllers (their documentation is on the controllers' methods). They are
- * put on the class's prototype by its static block, from the same lists.
+ * A face on the page: what `createFace` resolves to (and a `<soft-face>` element's `face`). Its methods set the
+ * expression, the view, the timeline, the eyes and the head, export what it shows, and edit its rig.
  */
+// The methods the handle hands to its controllers (their documentation is on the controllers' methods). They are put
+// on the class's prototype by its static block, from the same lists.
 export interface FaceHandle
   extends Delegated<'skin'>,
     Delegated<'view'>,

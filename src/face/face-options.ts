@@ -13,10 +13,14 @@ import {
 import { readExpression, type ExpressionEntries } from './expression-hash';
 import { readIdentity, type Identity } from '../core/head/identity';
 
+export type { SolverMode };
+
+/** The head resolutions a face offers, coarsest first: the values of `Resolution`. */
 export const RESOLUTIONS = ['low', 'medium', 'high'] as const;
 /** The head's mesh resolution: low (4,284 skin vertices), medium (17,091) or high (68,277). */
 export type Resolution = (typeof RESOLUTIONS)[number];
 
+/** The values `solver` takes (see `SolverChoice`). */
 export const SOLVER_CHOICES = ['auto', 'shared', 'transfer', 'main'] as const;
 /**
  * Where the skin solver runs: `shared` (a worker on SharedArrayBuffers; needs a cross-origin isolated page),
@@ -27,6 +31,7 @@ export type SolverChoice = (typeof SOLVER_CHOICES)[number];
 
 /** What `createFace` takes; every option may be left out. */
 export interface FaceOptions {
+  /** The head's mesh resolution (see `Resolution`): `medium` by default. */
   resolution?: Resolution;
   /** The muscle rig: the URL of a rig document (JSON), or a rig object, checked as a document would be. */
   rig?: string | URL | Rig | null;
@@ -37,6 +42,7 @@ export interface FaceOptions {
    * `{ sex, age, ancestry }`; null for the default head. A `model` given as well takes precedence.
    */
   identity?: Identity | string | null;
+  /** Where the skin solver runs (see `SolverChoice`): `auto` by default. */
   solver?: SolverChoice;
   /**
    * Threads that solve in `shared` mode: 2 adds a partner worker that takes half of most passes (the same shape,
@@ -82,6 +88,7 @@ export interface FaceOptions {
   autosave?: boolean | string;
 }
 
+/** What `createFace` takes for each option left out (every one listed, frozen). */
 export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
   resolution: 'medium',
   rig: null,

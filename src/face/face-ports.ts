@@ -22,14 +22,17 @@ import type { NamedIdentity } from '../core/head/identity';
 export interface SkinSnapshot {
   /** Rest positions, xyz per vertex. */
   rest: Float32Array;
-  /** Current positions and unit normals, xyz per vertex. */
+  /** Current positions, xyz per vertex. */
   positions: Float32Array;
+  /** Current unit normals, xyz per vertex. */
   normals: Float32Array;
   /** Triangles over the vertices, counter-clockwise from outside. */
   triangles: Uint32Array;
 }
 
+/** What `stats` reports: the skin solver's state as of its newest frame (see `SkinSimulationStats`). */
 export type FaceStats = SkinSimulationStats;
+export type { SkinSimulationStats };
 
 /**
  * What a handle call changed: the Action Units or presets, the light, the render options, the skin parameters,
@@ -60,19 +63,25 @@ export interface FaceMuscles {
   shown(): string[];
 }
 
-/** What the eye simulation has done since the page started it first: counts, and the gaze now in degrees. */
+/** What the eye simulation has done since it was last switched on: counts, and the gaze now in degrees. */
 export interface EyeStats {
   /** Whether it runs. */
   on: boolean;
-  /** Blinks and saccades started. */
+  /** Blinks started. */
   blinks: number;
+  /** Saccades (quick turns of the gaze to a new target) started. */
   saccades: number;
   /** Lid closure of the blink now, 0 open .. 1 closed. */
   blink: number;
   /** The simulation's clock: ms of rendered frames since it was switched on. */
   time: number;
   /** Positive yaw looks to the subject's left, positive pitch up. */
-  gaze: { yaw: number; pitch: number };
+  gaze: {
+    /** Degrees the eyes turn sideways, positive to the subject's left; saccades aim within `yawMin`..`yawMax`. */
+    yaw: number;
+    /** Degrees the eyes turn up (positive) or down; saccades aim within `pitchMin`..`pitchMax`. */
+    pitch: number;
+  };
 }
 
 /** The eye simulation the handle switches (EyeDriver). */
@@ -109,10 +118,15 @@ export interface CarriedState {
 
 /** Where the timeline is: whether one is loaded, whether it plays, its clock and duration in seconds, and its loop flag. */
 export interface TimelineState {
+  /** Whether a timeline is loaded (`setTimeline`). */
   loaded: boolean;
+  /** Whether it plays; false when paused, after a timeline without loop has reached its end, or with none loaded. */
   playing: boolean;
+  /** The timeline's clock in seconds, 0..`duration`. */
   time: number;
+  /** How long the timeline runs, in seconds: its `duration`, else the end of its last key or action; 0 without one. */
   duration: number;
+  /** Whether the timeline starts again at its end (its `loop`); false without one. */
   loop: boolean;
 }
 

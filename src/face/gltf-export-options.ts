@@ -3,8 +3,11 @@ import { MAX_EXPORT_FPS } from '../core/expression/morph-export';
 
 /** How far `exportGLTF` has come: targets solved so far of all, and the one it solves now (null once all are). */
 export interface GLTFExportProgress {
+  /** Morph targets solved so far, 0..`total`. */
   done: number;
+  /** Morph targets the export solves: those asked for, and those the exported timeline needs besides. */
   total: number;
+  /** The morph target being solved now (an Action Unit id such as `AU12L`, or a preset's name); null once all are. */
   target: string | null;
 }
 

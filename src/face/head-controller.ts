@@ -57,7 +57,12 @@ export class HeadController {
   }
 
   /** Where a point of the skin the guide shows is on the page (client pixels), to click it (read-only, for tests). */
-  locateLandmarkPoint(point: Vec3): { x: number; y: number } | null {
+  locateLandmarkPoint(point: Vec3): {
+    /** Client pixels from the viewport's left edge, as `MouseEvent.clientX` counts them. */
+    x: number;
+    /** Client pixels from the viewport's top edge, as `MouseEvent.clientY` counts them. */
+    y: number;
+  } | null {
     return this.parts.headSide().landmarkGuide()?.locate(point) ?? null;
   }
 

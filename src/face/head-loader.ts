@@ -75,13 +75,20 @@ export interface HeadDescription {
   name: string;
   /** The resolution shown: a level (the default head's, or reached by subdivision or decimation) or the file's own mesh. */
   level: HeadLevel | 'file';
-  /** Welded skin vertices and triangles. */
+  /** Welded skin vertices: the solver's, as `getSkin` gives them. */
   vertices: number;
+  /** Triangles of the skin mesh shown. */
   triangles: number;
   /** Units and axes the file was read with (the default head's are metres, +y, +z). */
   units: Unit;
+  /** The file's axis that points up, as given or found (`+y` for the default head and an identity's). */
   up: Axis;
+  /** The file's axis the face looks along, as given or found (`+z` for the default head and an identity's). */
   forward: Axis;
+  /**
+   * The head's landmarks in metres in the app's frame (+y up, the face toward +z): for a loaded head those the rig was
+   * carried over by (found, given or placed), for an identity's the default head's carried over with its shape.
+   */
   landmarks: Landmarks;
   /** Where the eyes, teeth and jaw pivot came from: the file's named nodes, or the default head (carried over). */
   parts: PartSources;

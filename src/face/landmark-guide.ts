@@ -9,10 +9,16 @@ import type { MissingLandmarksError } from './head-loader';
 export interface LandmarkGuideState {
   /** The file whose landmarks are placed. */
   file: string;
+  /** The landmark the next click (or `placeLandmark`) places, e.g. `mouth-l`; null once all are placed. */
   next: LandmarkName | null;
   /** What to click for it, as the panel asks. */
   prompt: string;
+  /**
+   * The landmarks placed so far by this guide, by name: points on the shown skin, in metres in the app's frame (+y up,
+   * the face toward +z, the subject's left at +x).
+   */
   placed: Partial<Record<LandmarkName, Vec3>>;
+  /** Every landmark that could not be found in the file, placed ones included, in the order the guide asks for them. */
   missing: LandmarkName[];
 }
 

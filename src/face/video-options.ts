@@ -8,13 +8,15 @@ export type VideoFormat = 'webm' | 'png-zip';
 export interface VideoOptions {
   /** Frames per second of the video, 1 to 120. */
   fps?: number;
-  /** Size of the video in pixels: even, 16 to 4096. */
+  /** Width of the video in pixels: even, 16 to 4096. */
   width?: number;
+  /** Height of the video in pixels: even, 16 to 4096. */
   height?: number;
   /** Length in seconds (up to 3600); 0 records the timeline's whole duration. */
   seconds?: number;
   /** A timeline document (JSON text or object) to load first, as `setTimeline` does; null records the loaded one. */
   timeline?: string | object | null;
+  /** What the recording is saved as: `webm`, a WebM video, or `png-zip`, a zip of PNG frames (see `VideoFormat`). */
   format?: VideoFormat;
   /**
    * Solver frames between two video frames, 1 to 100: the skin reaches 2 % of a step's final shape in 44 to 63
@@ -30,6 +32,7 @@ export interface VideoOptions {
   onProgress?: ((fraction: number) => void) | null;
 }
 
+/** What `recordVideo` takes for each option left out: 640 x 480 pixels at 30 fps, WebM at 4 Mbit/s. */
 export const VIDEO_DEFAULTS: Readonly<Required<VideoOptions>> = Object.freeze({
   fps: 30,
   width: 640,

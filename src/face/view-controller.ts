@@ -66,7 +66,12 @@ export class ViewController {
    * Where a point of the head (the skin's model space, metres, as `getSkin` gives them) is on the page, in client
    * pixels, as the camera sees it now (for overlays and tests); null before a head is shown.
    */
-  locatePoint(point: Vec3): { x: number; y: number } | null {
+  locatePoint(point: Vec3): {
+    /** Client pixels from the viewport's left edge, as `MouseEvent.clientX` counts them. */
+    x: number;
+    /** Client pixels from the viewport's top edge, as `MouseEvent.clientY` counts them. */
+    y: number;
+  } | null {
     return this.parts.shown().locate(point);
   }
 

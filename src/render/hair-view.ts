@@ -18,6 +18,7 @@ export interface SkinShape {
 export interface HairPartSnapshot {
   /** Hairs drawn (0 when switched off). */
   count: number;
+  /** Vertices in one hair's ribbon: two per point along the hair, the root's pair first. */
   verticesPerHair: number;
   /** The drawn hairs' ribbon vertices as shown, xyz in the skin's model space; a hair's first two are its root. */
   positions: Float32Array;
@@ -29,7 +30,9 @@ export interface HairPartSnapshot {
 
 /** The face's brows and lashes as drawn now. */
 export interface HairSnapshot {
+  /** The eyebrows: no hairs while `brows` is off (see `setAppearance`), fewer at a lower `browDensity`. */
   brows: HairPartSnapshot;
+  /** The eyelashes: no hairs while `lashes` is off (see `setAppearance`). */
   lashes: HairPartSnapshot;
 }
 

@@ -10,7 +10,12 @@ import { skinTint, SKIN_TINT_DEFAULTS } from './skin-tint';
 
 /** A file given for a head: its name (with extension) and bytes. A `.gltf` comes with the files it refers to. */
 export interface HeadFile {
+  /**
+   * The file's name with its extension (`head.glb`, `scene.bin`): the extension says the head's format, and a `.gltf`
+   * finds the files it refers to by their names.
+   */
   name: string;
+  /** The file's whole contents. */
   bytes: ArrayBuffer;
 }
 
@@ -130,8 +135,11 @@ export interface HeadParts {
  */
 /** Where a loaded head's eyes, teeth and jaw pivot came from: its own file's named nodes, or the default head. */
 export interface PartSources {
+  /** `file` if the file has an `eye-l` or `eye-r` node (the other eye, if missing, is the default head's, warped). */
   eyes: 'file' | 'default';
+  /** `file` if the file has a `teeth-upper` or `teeth-lower` node; teeth it lacks are the default head's, warped. */
   teeth: 'file' | 'default';
+  /** `file` if the file has a `jaw` node (the hinge the lower teeth and tongue turn about), else the default head's. */
   jaw: 'file' | 'default';
 }
 

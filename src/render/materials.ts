@@ -275,29 +275,50 @@ function addSubsurface<M extends MeshPhysicalMaterial>(material: M, options: Sub
 
 /** What a material is, as plain data (for tests and debugging). */
 export interface MaterialDescription {
+  /** The material's name, e.g. `skin`, `sclera`, `iris`, `cornea`, `teeth`, `gums` or `tongue`. */
   name: string;
+  /** The three.js material class, e.g. `MeshPhysicalMaterial`. */
   type: string;
+  /** Whether it draws only its triangles' edges (the `wireframe` render option). */
   wireframe: boolean;
   /** Base colour, sRGB `#rrggbb`. */
   color: string;
+  /** Surface roughness, 0 (mirror-like) to 1 (matte); 1 for a material that has none. */
   roughness: number;
+  /** Whether it is blended over what lies behind it (as the cornea is), rather than drawn opaque. */
   transparent: boolean;
+  /** Strength of the sheen layer that catches grazing light (fine hair, an oily film), 0..1; 0 without one. */
   sheen: number;
+  /** Strength of the clear coat, a glossy film over the surface (the cornea's), 0..1; 0 without one. */
   clearcoat: number;
   /** The colour texture's size, if any. */
-  map: { width: number; height: number } | null;
+  map: {
+    /** Width of the colour texture, in texels. */
+    width: number;
+    /** Height of the colour texture, in texels. */
+    height: number;
+  } | null;
   /** The normal map: size, tiling, strength and what its texels hold (normal components -1..1). */
   normalMap: {
+    /** Width of the normal map, in texels. */
     width: number;
+    /** Height of the normal map, in texels. */
     height: number;
+    /** How many times the map tiles across the mesh's uv square, along u and v. */
     repeat: [number, number];
+    /** Strength of the map's bumps along u and v (three.js `normalScale`): 0 flat, 1 as the texels say. */
     normalScale: [number, number];
+    /** Seed of the procedural pore map it was generated from, or null for a map that is not one. */
     seed: number | null;
     /** Mean normal of the texels. */
     mean: [number, number, number];
     /** Fraction of texels whose normal leans more than 10 degrees from flat. */
     detail: number;
   } | null;
+  /**
+   * The light-scattering look (diffuse light wrapped past the terminator per channel) of skin, sclera, teeth, gums and
+   * tongue; null for a material without one.
+   */
   subsurface: SubsurfaceOptions | null;
 }
 

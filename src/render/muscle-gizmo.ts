@@ -5,8 +5,13 @@ import { MuscleField } from '../core/rig/muscle-fields';
 import type { Muscle, Vec3 } from '../core/rig/rig-types';
 import { rotationOf } from './muscle-view';
 
-/** What the gizmo does, and which part of a muscle it holds (see GizmoPart in the handle). */
+/** What the editor's gizmo does to the part it holds: move, turn or scale it (a point only moves). */
 export type GizmoMode = 'translate' | 'rotate' | 'scale';
+/**
+ * The part of the selected muscle the editor's gizmo holds: a linear muscle's `insertion` or `origin` (its bone end),
+ * a sphincter's or lid's `ellipsoid`, the jaw's `box` or `hinge` (its joint). Points only move; volumes also turn and
+ * scale.
+ */
 export type GizmoPart = 'insertion' | 'origin' | 'ellipsoid' | 'box' | 'hinge';
 
 /** Told while a drag runs: when it starts, each change of the part (as muscle fields), and when it ends. */

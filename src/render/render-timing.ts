@@ -3,19 +3,25 @@ import type { HairView } from './hair-view';
 
 /** What `measureRender` reports: main-thread time of `renderer.render` and what the last frame drew. */
 export interface RenderTiming {
+  /** Frames timed, as asked (a frame rendered before them, to compile shaders and upload textures, is not counted). */
   frames: number;
-  /** Main-thread milliseconds spent in `renderer.render` per frame: mean and median. */
+  /** Mean main-thread milliseconds per frame spent in `renderer.render`. */
   meanMs: number;
+  /** Median main-thread milliseconds per frame spent in `renderer.render`. */
   medianMs: number;
-  /** Main-thread milliseconds spent posing the brows and lashes on the skin per frame (as at each new skin frame): mean and median. */
+  /** Mean main-thread milliseconds per frame spent posing the brows and lashes on the skin (as at a new skin frame). */
   hairMeanMs: number;
+  /** Median main-thread milliseconds per frame spent posing the brows and lashes on the skin. */
   hairMedianMs: number;
   /** Wall milliseconds per frame over the whole run, waiting at the end for the GPU to finish (pixel cost included). */
   finishedMs: number;
-  /** From `renderer.info` after the last frame. */
+  /** Draw calls of the last frame (`renderer.info.render.calls`). */
   calls: number;
+  /** Triangles the last frame drew (`renderer.info.render.triangles`). */
   triangles: number;
+  /** Shader programs the renderer holds (`renderer.info.programs`). */
   programs: number;
+  /** Textures the renderer holds on the GPU (`renderer.info.memory.textures`). */
   textures: number;
 }
 /**

@@ -8,6 +8,7 @@ export interface LightOptions {
   keyAzimuth: number;
   /** Key light's vertical angle in degrees: -90 from straight below, 0 level with the head's centre, 90 from above. */
   keyElevation: number;
+  /** Key light's intensity (a three.js directional light's), 0..10. */
   keyIntensity: number;
   /** Key light colour, sRGB `#rrggbb`. */
   keyColor: string;
@@ -17,6 +18,7 @@ export interface LightOptions {
 export interface RenderOptions {
   /** Draw every mesh of the head as its triangle edges. */
   wireframe: boolean;
+  /** Draw the eyeballs. */
   showEyes: boolean;
   /** Teeth and tongue. */
   showTeeth: boolean;

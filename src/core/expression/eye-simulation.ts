@@ -10,23 +10,43 @@ import { mulberry32 } from '../random';
 export interface EyeSimulationOptions {
   /** Seed of the random generator: the same seed gives the same blinks and gaze path. */
   seed: number;
-  /** Time from one blink's start to the next's, drawn uniformly from this range (thesis: 3 to 8 s). */
+  /**
+   * Shortest time from one blink's start to the next's, ms (default 3000); each interval is drawn uniformly between
+   * this and `blinkIntervalMax` (thesis: 3 to 8 s). It must exceed a whole blink plus `saccadeMax`.
+   */
   blinkIntervalMin: number;
+  /** Longest time from one blink's start to the next's, ms (default 8000). */
   blinkIntervalMax: number;
-  /** The lids close in this time, stay closed, then open (opening is slower than closing in real blinks). */
+  /** How long the lids take to close at a blink's start, ms (default 100). */
   blinkClose: number;
+  /** How long the lids stay fully closed in a blink, between closing and opening, ms (default 50). */
   blinkHold: number;
+  /** How long the lids take to open again after the hold, ms (default 150: slower than closing, as in real blinks). */
   blinkOpen: number;
-  /** How long the gaze holds still between saccades, drawn uniformly. */
+  /** Shortest time the gaze holds still between saccades, ms (default 500); each is drawn uniformly up to `holdMax`. */
   holdMin: number;
+  /** Longest time the gaze holds still between saccades, ms (default 3000). */
   holdMax: number;
-  /** How long a saccade takes, drawn uniformly (real ones take 20..100 ms, longer for larger turns). */
+  /**
+   * Shortest time a saccade takes, ms (default 40); each is drawn uniformly up to `saccadeMax` (real ones take
+   * 20..100 ms, longer for larger turns).
+   */
   saccadeMin: number;
+  /** Longest time a saccade takes, ms (default 80), at most 1000. */
   saccadeMax: number;
-  /** Gaze range (thesis: yaw -30..30, pitch -20..25); positive yaw turns to the subject's left, positive pitch up. */
+  /**
+   * Low end of the saccades' yaw, degrees, -45..45 (default -30: 30 to the subject's right); each target's yaw is
+   * drawn uniformly between this and `yawMax` (thesis: -30..30). Positive yaw turns to the subject's left.
+   */
   yawMin: number;
+  /** High end of the saccades' yaw, degrees, -45..45 (default 30: 30 to the subject's left). */
   yawMax: number;
+  /**
+   * Low end of the saccades' pitch, degrees, -45..45 (default -20: 20 down); each target's pitch is drawn uniformly
+   * between this and `pitchMax` (thesis: -20..25). Positive pitch turns up.
+   */
   pitchMin: number;
+  /** High end of the saccades' pitch, degrees, -45..45 (default 25: 25 up). */
   pitchMax: number;
   /** Lid closing (AU43) added per degree of downward gaze: the upper lid follows the eye down. */
   lidDownPerDegree: number;

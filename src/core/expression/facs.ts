@@ -84,17 +84,25 @@ export type SideCode = 'L' | 'R' | 'M';
 
 /** An Action Unit as `listActionUnits` shows it. */
 export interface ActionUnitListing {
+  /** The unit's id without a side, as `setActionUnit` takes it for both sides: `AU12`. */
   id: string;
+  /** Its FACS number: 12 for `AU12`. */
   number: number;
+  /** Its FACS name, lower case: `lip corner puller`. */
   name: string;
+  /** `['L', 'R']` for a unit set per side (ids `AU12L`, `AU12R`), `['M']` for a midline one set whole (`AU17`). */
   sides: SideCode[];
 }
 
 /** A preset as `listPresets` shows it, with its current weight. */
 export interface PresetListing {
+  /** Its name in the rig, as `applyPreset` takes it: `happiness`. */
   name: string;
+  /** Where it comes from: `FACS prototype`, `thesis 5.2`. */
   source: string;
+  /** The rig's remark on it, if any: which Action Units it combines and why at these intensities. */
   note?: string;
+  /** Its current weight, 0..1 (0: off). */
   weight: number;
 }
 

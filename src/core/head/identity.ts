@@ -6,15 +6,21 @@ import { checkNumber, checkObject, refusal } from '../check';
 
 /** Ancestry as weights (each 0..1; missing ones are 0): they are scaled to sum to 1. */
 export interface Ancestry {
+  /** African ancestry's weight, 0..1 (MakeHuman's `african` targets). */
   african: number;
+  /** Asian ancestry's weight, 0..1 (MakeHuman's `asian` targets). */
   asian: number;
+  /** European ancestry's weight, 0..1 (MakeHuman's `caucasian` targets). */
   european: number;
 }
 
 /** A person: `sex` from 0 (female) to 1 (male), `age` in years from 1 to 90, `ancestry` weights. */
 export interface Identity {
+  /** 0 female .. 1 male; values between blend the two (default 0.5). */
   sex: number;
+  /** Age in years, 1..90 (default 25). */
   age: number;
+  /** The ancestries' weights, scaled to sum to 1 (default a third each). */
   ancestry: Ancestry;
 }
 
@@ -180,7 +186,12 @@ export const STOCK_IDENTITIES: Readonly<Record<string, Identity>> = Object.freez
 
 /** A named identity of the stock set (see `listIdentities`). */
 export interface NamedIdentity {
+  /**
+   * The stock name, as `setIdentity` and the `identity` option take it: `<age>-<ancestry>-<woman|man>`, such as
+   * `young-african-woman` (ages: `young` 22, `middle-aged` 45, `old` 72 years).
+   */
   name: string;
+  /** The person the name stands for (a copy). */
   identity: Identity;
 }
 

@@ -24,7 +24,9 @@ export const LANDMARK_NAMES = [
   'head-back',
 ] as const;
 
+/** A landmark's name, one of `LANDMARK_NAMES`; `l` and `r` are the subject's left and right. */
 export type LandmarkName = (typeof LANDMARK_NAMES)[number];
+/** A point for every landmark: `[x, y, z]` in metres, +y up, the face toward +z, the subject's left at +x. */
 export type Landmarks = Record<LandmarkName, Vec3>;
 
 /** What the editor asks the user to click for each landmark ("click the left mouth corner"). */

@@ -9,6 +9,7 @@ import type { Rig } from './rig-types';
 
 /** What is shown: all muscles, and (independently, so that switching `all` off restores them) some Action Units. */
 export interface MuscleDisplay {
+  /** Whether every muscle of the rig is shown, whatever `actionUnits` lists. */
   all: boolean;
   /** Action Unit ids without a side (`AU12`), in catalogue order. */
   actionUnits: string[];

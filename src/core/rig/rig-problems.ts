@@ -10,7 +10,9 @@ const MAX_LISTED_PROBLEMS = 50;
 
 /** One problem in a rig document: where (`muscles[3].radii[1]`, or '' for the whole document) and what is wrong. */
 export interface RigProblem {
+  /** Where in the document: a path like `muscles[3].radii[1]` or `presets[0].name`; '' for the whole document. */
   path: string;
+  /** What is wrong, as "expected ..., got ..." (or e.g. `missing`, `unknown field`). */
   message: string;
 }
 

@@ -25,13 +25,19 @@ export type BrushSphere = [x: number, y: number, z: number, radius: number];
  * sphere loses as much of its hold. Removal wins where both overlap.
  */
 export interface MuscleBrush {
+  /** Spheres that paint skin into the muscle's influence (at most 4096). */
   add: BrushSphere[];
+  /** Spheres that paint skin out of the muscle's influence (at most 4096); they win where they overlap `add`. */
   remove: BrushSphere[];
 }
 
 interface MuscleCommon {
   /** Unique within the rig, e.g. `zygomaticus-major-l`. */
   name: string;
+  /**
+   * Which side of the face the muscle is on: a bilateral Action Unit links it on this side, and mirroring swaps left
+   * and right.
+   */
   side: MuscleSide;
   /** Painted influence, on top of the muscle's own zone. */
   brush?: MuscleBrush;
@@ -44,13 +50,26 @@ interface MuscleCommon {
  * (cosine) to zero at `falloffEnd` x length; sideways it falls (cosine) to zero at the cone's edge.
  */
 export interface LinearMuscle extends MuscleCommon {
+  /** Tells a linear muscle apart among the `Muscle` types. */
   type: 'linear';
+  /** Where the muscle is anchored to bone, metres in the head model's frame: the skin is pulled toward it. */
   origin: Vec3;
+  /**
+   * Where the muscle inserts into the skin, metres in the head model's frame (apart from `origin`): with the origin it
+   * sets the cone's axis and the muscle's length.
+   */
   insertion: Vec3;
   /** Half-angle of the cone, degrees (0..90). */
   angle: number;
-  /** Where the radial falloff starts and ends, as fractions of the muscle's length (0 < start < end). */
+  /**
+   * Where the pull is full, as a fraction of the muscle's length from the origin (above 0, below `falloffEnd`): it
+   * rises (cosine) from none at the bone to full here.
+   */
   falloffStart: number;
+  /**
+   * Where the pull has fallen (cosine) to none, as a fraction of the muscle's length from the origin (above
+   * `falloffStart`, at most 100): skin farther from the origin is not pulled.
+   */
   falloffEnd: number;
   /** Fraction of the way to the origin that fully pulled skin moves at contraction 1 (0..1). */
   strength: number;
@@ -67,13 +86,27 @@ export interface LinearMuscle extends MuscleCommon {
  * from the center along that axis, as the lips thrust forward while the mouth's ring tightens in a pucker).
  */
 export interface SphincterMuscle extends MuscleCommon {
+  /** Tells a sphincter muscle apart among the `Muscle` types. */
   type: 'sphincter';
+  /** Centre of the ellipsoids, metres in the head model's frame: the skin is pulled toward it. */
   center: Vec3;
+  /** Turns the local frame the radii and `scale` are measured in (degrees, -360..360 each). */
   rotation: EulerDegrees;
+  /** Semi-axes of the outer ellipsoid along the local x, y, z axes, metres (> 0): at its surface the pull is none. */
   radii: Vec3;
+  /**
+   * Semi-axes of the inner ellipsoid, metres (> 0, each at most the matching one of `radii`): the pull is full on its
+   * surface and falls (cosine) to none at the centre, so the skin there is not over-compressed.
+   */
   innerRadii: Vec3;
+  /**
+   * Pull along each local axis x, y, z, as a factor of the pull toward the centre (-10..10): 0 pulls not at all along
+   * that axis, a negative factor pushes away from the centre.
+   */
   scale: Vec3;
+  /** Fraction of the way to the centre that fully pulled skin moves at contraction 1 (0..1), before `scale`. */
   strength: number;
+  /** How much of the pull acts along the skin's normal, 0..1 (low: the skin slides and can fold). */
   normalWeight: number;
 }
 
@@ -84,11 +117,23 @@ export interface SphincterMuscle extends MuscleCommon {
  * angle turns right-handed about local +x (+y toward +z): skin in front of the joint moves down, closing an upper lid.
  */
 export interface LidMuscle extends MuscleCommon {
+  /** Tells a lid muscle apart among the `Muscle` types. */
   type: 'lid';
+  /** Centre of the ellipsoid, metres in the head model's frame; the hinge lies `radii[2]` behind it along local z. */
   center: Vec3;
+  /** Turns the ellipsoid's local frame (degrees, -360..360 each); the lid turns about the local x axis. */
   rotation: EulerDegrees;
+  /** Semi-axes of the ellipsoid along the local x, y, z axes, metres (> 0). */
   radii: Vec3;
+  /**
+   * The turn at contraction 1, degrees (-90..90): positive moves skin in front of the hinge down (closing an upper
+   * lid), negative moves it up.
+   */
   maxAngle: number;
+  /**
+   * Normalised distance from the centre (0 to below 1, as a fraction of the radii) within which the skin turns fully;
+   * from there the turn fades (cosine) to none at the surface.
+   */
   innerFraction: number;
 }
 
@@ -102,52 +147,88 @@ export interface LidMuscle extends MuscleCommon {
  * angle moves the chin down (right-handed about local +x).
  */
 export interface JawMuscle extends MuscleCommon {
+  /** Tells a jaw muscle apart among the `Muscle` types. */
   type: 'jaw';
+  /** Centre of the box, metres in the head model's frame. */
   center: Vec3;
+  /** Turns the box's local frame (degrees, -360..360 each); the lower face turns about the local x axis. */
   rotation: EulerDegrees;
+  /** Full edge lengths of the box along its local x, y, z axes, metres (> 0). */
   size: Vec3;
   /** The hinge the lower face turns about; defaults to the centre of the box's back face. */
   joint?: Vec3;
+  /** The turn at contraction 1, degrees (-90..90), before `curve` adds to it: positive moves the chin down. */
   maxAngle: number;
+  /**
+   * Extra turn at the box's centre line, as a fraction of the angle (0..1), falling as a parabola to none at its sides:
+   * the lower lip's middle opens further than its corners.
+   */
   curve: number;
+  /**
+   * Depth inside the box's faces over which the turn fades (cosine) from none on a face to full, metres (> 0); the top
+   * face uses `lipFade` when it is given.
+   */
   fade: number;
   /** The top face's fade (metres, > 0): short, so the lips part cleanly while the skin around the jaw stretches. */
   lipFade?: number;
 }
 
+/** A muscle of a rig, of any of the four kinds, told apart by its `type`. */
 export type Muscle = LinearMuscle | SphincterMuscle | LidMuscle | JawMuscle;
 
 /** One muscle an Action Unit drives, on which side of the AU, with what weight (contraction = intensity x weight). */
 export interface ActionUnitMuscle {
+  /** Name of the muscle driven, as in the rig's `muscles`. */
   muscle: string;
   /** For a bilateral AU, the side this muscle belongs to; `mid` for midline AUs. */
   side: MuscleSide;
+  /**
+   * How strongly the AU contracts the muscle (above 0, at most 10): contraction = intensity x weight, summed over the
+   * AUs that drive the muscle and capped at 1.
+   */
   weight: number;
 }
 
 /** A FACS Action Unit: `AU12`. Bilateral ones get ids `AU12L` and `AU12R` for their sides. */
 export interface ActionUnitDefinition {
+  /** The unit's FACS id, `AU` and its number (`AU12`); it must be one of the built-in catalogue's. */
   id: string;
+  /** The unit's FACS name, e.g. `lip corner puller`. */
   name: string;
+  /**
+   * Whether each side of the face is set on its own (ids `AU12L` and `AU12R`, muscles linked on `left` and `right`),
+   * rather than once for the midline; it must agree with the built-in catalogue.
+   */
   bilateral: boolean;
+  /** The muscles the unit contracts, with their sides and weights (at least one). */
   muscles: ActionUnitMuscle[];
 }
 
 /** A preset expression: Action Unit intensities (ids like `AU12`, `AU12L`, 0..1) scaled by the preset's weight. */
 export interface PresetDefinition {
+  /** The preset's name, unique within the rig, by which it is applied (`applyPreset`), e.g. `thesis-happiness`. */
   name: string;
   /** Where it comes from, e.g. "thesis 5.2" or "FACS prototype". */
   source: string;
+  /**
+   * The Action Unit intensities at full weight, by id (`AU12` sets both sides, `AU12L` or `AU12R` one), each 0..1; the
+   * preset's weight (0..1) scales them.
+   */
   actionUnits: Record<string, number>;
+  /** Free-text remarks on how the preset was made; `listPresets` returns them with the `source`. */
   note?: string;
 }
 
 /** A whole rig document. */
 export interface Rig {
+  /** Marks the JSON document as a softface rig: always `softface-rig`. */
   format: 'softface-rig';
   /** 2 added the muscles' `brush`; version 1 documents are read as version 2. */
   version: 2;
+  /** The muscles (at most 256), with unique names. */
   muscles: Muscle[];
+  /** The Action Units the rig drives (at most 64), each with the muscles it contracts; ids are unique. */
   actionUnits: ActionUnitDefinition[];
+  /** The preset expressions (at most 256), each a weighted mix of Action Unit intensities. */
   presets: PresetDefinition[];
 }

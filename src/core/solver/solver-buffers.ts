@@ -52,9 +52,17 @@ export interface FrameTimings {
 
 /** Counts of each constraint type, as the app's outputs show them. */
 export interface ConstraintCounts {
+  /** Position constraints, which pull each skin vertex back toward its rest position: one per simulation vertex. */
   position: number;
+  /** Length constraints, which keep each edge of the skin mesh near its rest length: one per edge. */
   length: number;
+  /** Muscle constraints: the simulation vertices a muscle holds now (weight or normal weight above 0). */
   muscle: number;
+  /** Bending constraints, which set the wrinkle spacing: one per simulation vertex, 0 when `wrinkleSpacing` is 0. */
   bending: number;
+  /**
+   * Collision constraints: skin vertices checked against a collider (eyes, teeth), one per vertex and collider near
+   * it at rest.
+   */
   collision: number;
 }

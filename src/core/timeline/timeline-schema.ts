@@ -28,7 +28,12 @@ export type TimelineProblem = RigProblem;
 
 /** A timeline document that was refused: its message has one line per problem, `source: path: what is wrong`. */
 export class TimelineError extends Error {
+  /**
+   * The refused document's name, which starts each line of the message: the `source` given to `setTimeline` (such as
+   * a file's name), or `setTimeline` when none was.
+   */
   readonly source: string;
+  /** Every problem found, each with its path and message (the message spells out at most the first 50). */
   readonly problems: readonly TimelineProblem[];
 
   constructor(source: string, problems: readonly TimelineProblem[]) {

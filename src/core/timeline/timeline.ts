@@ -14,13 +14,17 @@ export const EASINGS: readonly Easing[] = Object.freeze(['linear', 'ease-in', 'e
 
 /** A keyframe: the value (0..1) at `time` seconds; `easing` shapes the segment from this key to the next (as in CSS). */
 export interface TimelineKey {
+  /** When the key is, in seconds from the timeline's start (0..3600); a track's keys have strictly increasing times. */
   time: number;
+  /** The target's value at the key (0..1); a track holds its first key's value before it, its last's after it. */
   value: number;
+  /** How the segment from this key to the next is eased; `linear` when left out. */
   easing?: Easing;
 }
 
 /** The keys of one Action Unit side or preset, in strictly increasing time. */
 export interface TimelineTrack {
+  /** The keys (1 to 4096), in strictly increasing time; the value is eased from each key to the next. */
   keys: TimelineKey[];
 }
 
@@ -29,11 +33,17 @@ export interface TimelineTrack {
  * over `onset` seconds (ease-in-out), holds there for `apex` seconds and falls back to 0 over `offset` seconds.
  */
 export interface TimelineAction {
+  /** What the action sets: an Action Unit id (`AU12`, `AU12L`, `AU17`) or a preset as `preset:<name>`. */
   target: string;
+  /** When the action starts to rise, in seconds from the timeline's start (0..3600). */
   start: number;
+  /** The value the action rises to and holds at its apex (0..1). */
   intensity: number;
+  /** How long the action rises from 0 to `intensity` (ease-in-out), in seconds (above 0, at most 3600). */
   onset: number;
+  /** How long the action holds at `intensity`, in seconds (0..3600). */
   apex: number;
+  /** How long the action falls from `intensity` back to 0 (ease-in-out), in seconds (above 0, at most 3600). */
   offset: number;
 }
 
@@ -44,11 +54,20 @@ export interface TimelineAction {
  * starts again after it.
  */
 export interface Timeline {
+  /** Marks the JSON document as a softface timeline: always `softface-timeline`. */
   format: 'softface-timeline';
+  /** The document format's version, 1; a document that leaves it out is read as version 1. */
   version: 1;
+  /**
+   * How long the timeline runs, in seconds (above 0, at most 3600, and not before the end of its last key or action);
+   * when left out, it ends with its last key or action.
+   */
   duration?: number;
+  /** Whether the timeline starts again from 0 at its end; without it (the default), it stops and holds its end. */
   loop?: boolean;
+  /** The keyframe tracks (at most 128), by target: an Action Unit id (`AU12`, `AU12L`) or `preset:<name>`. */
   tracks: Record<string, TimelineTrack>;
+  /** The FACS actions (at most 4096), each one target rising, holding and falling back to 0. */
   actions: TimelineAction[];
 }
 

@@ -48,12 +48,17 @@ export interface SkinSimulationOptions {
 
 /** The simulation's state, as of the newest frame. */
 export interface SkinSimulationStats {
+  /** Where the solver runs: `shared` or `transfer` (in a worker), or `main` (on the page's thread). */
   mode: SolverMode;
+  /** Simulation vertices: the skin mesh's vertices after welding those that share a position (along UV seams). */
   vertices: number;
+  /** Edges of the simulation mesh, each held near its rest length by a length constraint. */
   edges: number;
+  /** How many constraints of each kind the solver projects. */
   constraints: ConstraintCounts;
   /** Time the last solved frame took, in ms. */
   solveMs: number;
+  /** Whether the skin has settled for the current inputs, so the solver waits, solving nothing, until one changes. */
   sleeping: boolean;
   /** Frames solved so far. */
   frames: number;
