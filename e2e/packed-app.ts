@@ -28,16 +28,19 @@ function packed(): string {
 
 /**
  * A fresh copy of one of the project's examples (`examples/<name>`) with the package installed as `npm pack` makes it
- * (of the library `npm test` has just built), unpacked into its node_modules beside three.js, its one peer dependency.
+ * (of the library `npm test` has just built), unpacked into its node_modules beside three.js, its one peer dependency,
+ * and the example's own dependencies named in `linked` (such as react), both linked from the project's node_modules.
  */
-export function packedApp(example: string): string {
+export function packedApp(example: string, linked: readonly string[] = []): string {
   const app = mkdtempSync(join(tmpdir(), `softface-${example}-`));
   // What a developer's own runs of the example left there is not part of it.
   cpSync(join(project, 'examples', example), app, { recursive: true, filter: (path) => !/[\\/](node_modules|dist)$/.test(path) });
   const installed = join(app, 'node_modules', 'softface');
   mkdirSync(installed, { recursive: true });
   execFileSync('tar', ['-xzf', packed(), '-C', installed, '--strip-components=1']);
-  symlinkSync(join(project, 'node_modules', 'three'), join(app, 'node_modules', 'three'), 'dir');
+  for (const name of ['three', ...linked]) {
+    symlinkSync(join(project, 'node_modules', name), join(app, 'node_modules', name), 'dir');
+  }
   return app;
 }
 
