@@ -20,6 +20,7 @@ describe('<soft-face> attributes', () => {
         background: 'transparent',
         expression: '#AU12=0.8&preset:happiness=0.3',
         preset: 'surprise:0.5, fear',
+        facs: '1+2+5B+L12C',
         identity: ' old-african-woman ',
       }),
     ).toEqual({
@@ -30,6 +31,7 @@ describe('<soft-face> attributes', () => {
       background: 'transparent',
       expression: { actionUnits: { AU12: 0.8 }, presets: { happiness: 0.3 } },
       preset: { actionUnits: {}, presets: { surprise: 0.5, fear: 1 } },
+      facs: { AU1: 1, AU2: 1, AU5: 0.2, AU12L: 0.4 },
       identity: 'old-african-woman',
     });
     expect(read({ identity: 'sex:1,age:30,asian:1' }).identity).toBe('sex:1,age:30,asian:1');
@@ -46,6 +48,7 @@ describe('<soft-face> attributes', () => {
     expect(() => read({ panels: 'yes' })).toThrow('<soft-face>: panels: expected present (on), "true" or "false", got "yes"');
     expect(() => read({ identity: 'sex:1,age:-1' })).toThrow('<soft-face> identity: age: expected a number from 1 to 90, got -1');
     expect(() => read({ expression: 'AU12=' })).toThrow('<soft-face> expression: AU12: expected a finite number, got ""');
+    expect(() => read({ facs: '4+L17' })).toThrow('<soft-face> facs: at 3 of "4+L17": expected 17 without a side');
     expect(() => readPresets('happiness:lots')).toThrow(
       '<soft-face>: preset: expected a preset name and a weight, like "happiness:0.5", got "happiness:lots"',
     );

@@ -44,9 +44,15 @@ describe('createFace options', () => {
       [{ expression: 'AU12=much' }, 'createFace: expression: AU12: expected a finite number, got "much"'],
       [{ expression: { AU12: '0.5' } }, 'createFace: expression: AU12: expected a finite number, got "0.5"'],
       [
+        { facs: '6+12+99' },
+        'createFace: facs: at 6 of "6+12+99": expected an Action Unit the face has ' +
+          '(1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 43), got "99"',
+      ],
+      [
         { resolutoin: 'low' },
-        'createFace: expected one of the options resolution, rig, model, identity, solver, workers, panels, expression, eyeSimulation, ' +
-          'light, appearance, background, motionResolution, slowDrawMs, assetBase, onResolution, autosave, got "resolutoin"',
+        'createFace: expected one of the options resolution, rig, model, identity, solver, workers, panels, expression, facs, ' +
+          'eyeSimulation, light, appearance, background, motionResolution, slowDrawMs, assetBase, onResolution, autosave, ' +
+          'got "resolutoin"',
       ],
       [{ autosave: 1 }, 'createFace: autosave: expected true, false or a key, got 1'],
       [{ appearance: { browDensity: 2 } }, 'createFace: appearance: browDensity: expected a number from 0 to 1, got 2'],

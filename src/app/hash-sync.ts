@@ -3,6 +3,7 @@ import {
   appearanceChanges,
   decodeAppearance,
   decodeExpression,
+  decodeFACS,
   decodeIdentity,
   decodeTimeline,
   encodeExpression,
@@ -76,6 +77,9 @@ export class HashSync {
     this.applying = true;
     try {
       if (replace) this.face.reset();
+      // A FACS code replaces the whole expression; slider and preset entries go over it.
+      const code = decodeFACS(hash);
+      if (code !== null) attempt(() => this.face.setFACS(code));
       // A hash without appearance entries means the default look.
       const look = replace ? { ...APPEARANCE_DEFAULTS, ...appearance } : appearance;
       for (const [key, value] of Object.entries(look))

@@ -1,4 +1,5 @@
 import { refusal } from '../core/check';
+import { facsIntensities } from '../core/expression/facs-code';
 import { readIdentity } from '../core/head/identity';
 import { readExpression, type HashExpression } from '../face/expression-hash';
 import { checkFaceOption, type Resolution, type SolverChoice } from '../face/face-options';
@@ -7,6 +8,7 @@ import { checkFaceOption, type Resolution, type SolverChoice } from '../face/fac
 export const FACE_ATTRIBUTES = [
   'resolution',
   'expression',
+  'facs',
   'preset',
   'solver',
   'panels',
@@ -26,6 +28,8 @@ export interface FaceAttributeValues {
   /** The expression and preset attributes together (presets named in both take the preset attribute's weight). */
   expression: HashExpression;
   preset: HashExpression;
+  /** The facs attribute's Action Units (`1+2+5B+26`, see `setFACS`), under the expression attribute's. */
+  facs: Record<string, number>;
   /** The person shown (a stock name or `sex:1,age:30,african:1`), null for the default head. */
   identity: string | null;
 }
@@ -34,6 +38,7 @@ export interface FaceAttributeValues {
 const ABSENT: Readonly<Record<FaceAttribute, string>> = Object.freeze({
   resolution: 'medium',
   expression: '',
+  facs: '',
   preset: '',
   solver: 'auto',
   panels: 'false',
@@ -90,6 +95,7 @@ export function readAttributes(
   if (wanted('eye-simulation')) out.eyeSimulation = readBoolean('eye-simulation', read('eye-simulation'));
   if (wanted('expression')) out.expression = readExpression(read('expression'), `${WHAT} expression`);
   if (wanted('preset')) out.preset = readPresets(read('preset'));
+  if (wanted('facs')) out.facs = facsIntensities(read('facs'), `${WHAT} facs`);
   if (wanted('identity')) {
     const text = read('identity').trim();
     out.identity = text === '' ? null : text;

@@ -20,6 +20,7 @@ export {
   appearanceChanges,
   decodeAppearance,
   decodeExpression,
+  decodeFACS,
   decodeIdentity,
   decodeTimeline,
   encodeExpression,

@@ -25,7 +25,7 @@ interface CarriedState {
 }
 
 /**
- * `<soft-face>`: a face in the page's markup. Its attributes (`resolution`, `expression`, `preset`, `solver`,
+ * `<soft-face>`: a face in the page's markup. Its attributes (`resolution`, `expression`, `facs`, `preset`, `solver`,
  * `panels`, `eye-simulation`, `background`, `identity`) apply live; `face` is the handle once `ready` has fired (again after a
  * new resolution or solver rebuilt it, keeping what the face had); `change` tells what changed (`detail.change`);
  * `error` tells of a bad attribute value (the face keeps its last good one) or a face that could not start.
@@ -34,7 +34,7 @@ interface CarriedState {
 export class SoftFaceElement extends HTMLElement {
   /**
    * The attributes whose changes the element applies live (the browser reports them to `attributeChangedCallback`):
-   * `resolution`, `expression`, `preset`, `solver`, `panels`, `eye-simulation`, `background`, `identity`.
+   * `resolution`, `expression`, `facs`, `preset`, `solver`, `panels`, `eye-simulation`, `background`, `identity`.
    */
   static readonly observedAttributes: readonly string[] = FACE_ATTRIBUTES;
   private embedded: EmbeddedFace | undefined;
@@ -87,7 +87,7 @@ export class SoftFaceElement extends HTMLElement {
     }
     const face = this.embedded;
     if (!face) return; // applied once the face is built
-    if (attribute === 'expression' || attribute === 'preset') face.handle.setExpression(this.expression());
+    if (attribute === 'expression' || attribute === 'preset' || attribute === 'facs') face.handle.setExpression(this.expression());
     else if (attribute === 'eye-simulation') face.handle.setEyeSimulation(next.eyeSimulation);
     else if (attribute === 'panels') {
       face.handle.setPanels(next.panels).then(
@@ -187,10 +187,10 @@ export class SoftFaceElement extends HTMLElement {
     checkExpression(values.preset, presets, '<soft-face> preset');
   }
 
-  /** The expression attribute with the preset attribute's weights over it, as handle entries. */
+  /** The facs attribute's units, the expression attribute over them and the preset attribute's weights, as entries. */
   private expression(): Record<string, number> {
     const e: HashExpression = {
-      actionUnits: this.values.expression.actionUnits,
+      actionUnits: { ...this.values.facs, ...this.values.expression.actionUnits },
       presets: { ...this.values.expression.presets, ...this.values.preset.presets },
     };
     return expressionEntries(e);

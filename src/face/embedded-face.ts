@@ -21,6 +21,7 @@ import { FaceEditor } from './face-editor';
 import { RigAutosave } from './rig-autosave';
 import { RigBinding } from './rig-binding';
 import { readExpression } from './expression-hash';
+import { facsIntensities } from '../core/expression/facs-code';
 import { FaceExpression } from './face-expression';
 import { createControllers, FaceHandle, type FaceControllers } from './face-handle';
 import { FaceParts } from './face-parts';
@@ -239,7 +240,8 @@ export class EmbeddedFace {
     if (lighting) this.view.setEnvironment(lighting);
     await this.mount(head, prepared, { signal });
 
-    const start = readExpression(o.expression, 'createFace: expression');
+    const given = readExpression(o.expression, 'createFace: expression');
+    const start = { actionUnits: { ...facsIntensities(o.facs, 'createFace: facs'), ...given.actionUnits }, presets: given.presets };
     if (Object.keys(start.actionUnits).length + Object.keys(start.presets).length > 0)
       this.expression!.set(start, 'createFace: expression');
     if (Object.keys(o.light).length > 0) this.handle.setLight(o.light);

@@ -1,5 +1,6 @@
 import { checkNumber, refusal } from '../core/check';
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
+import { facsCode, parseFACSCode } from '../core/expression/facs-code';
 import { readExpression, type ExpressionEntries, type HashExpression } from './expression-hash';
 import type { FaceParts } from './face-parts';
 
@@ -30,6 +31,30 @@ export class ExpressionController {
   setExpression(expression: string | ExpressionEntries): void {
     this.parts.expressed().set(readExpression(expression, 'setExpression'), 'setExpression');
     this.parts.emit('expression');
+  }
+
+  /**
+   * Replaces the whole expression by a FACS code: units joined by `+` (`"1+2+5B+26"`), each an Action Unit number
+   * with an optional side (`L`, `R`, or `U`: one side not coded, taken as the left) and intensity letter (A 0.1, B 0.2,
+   * C 0.4, D 0.7, E 1; none is E); `""` or `"0"` is neutral. Presets go to 0. A unit the face does not have, a side on
+   * a midline unit, a side given twice or a stray `+` throws naming the unit and its place
+   * (`setFACS: at 5 of "1+2+99": expected an Action Unit the face has (...), got "99"`) and changes nothing.
+   */
+  setFACS(code: string): void {
+    const terms = parseFACSCode(code, 'setFACS');
+    const actionUnits: Record<string, number> = {};
+    for (const t of terms) actionUnits[t.id] = t.intensity;
+    this.parts.expressed().set({ actionUnits, presets: {} }, 'setFACS');
+    this.parts.emit('expression');
+  }
+
+  /**
+   * The expression as a FACS code: the Action Units the sliders and presets add up to (not the eye simulation's
+   * lids), each with the letter of its grade, both sides as one unit where they share a grade (`"1E+2E+5B+26D"`,
+   * `"L12C+R12A"`); `""` for the neutral face. `setFACS` of it gives back the same code.
+   */
+  getFACS(): string {
+    return facsCode(this.parts.expressed().expressionIntensities());
   }
 
   /**
@@ -113,6 +138,8 @@ export const EXPRESSION_METHODS = [
   'setActionUnit',
   'getActionUnits',
   'setExpression',
+  'setFACS',
+  'getFACS',
   'getEffectiveActionUnits',
   'listActionUnits',
   'applyPreset',

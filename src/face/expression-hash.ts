@@ -30,6 +30,9 @@ const APPEARANCE_HASH_PREFIX = 'appearance.';
 /** The hash entry that carries the person shown (see `identityText`): `identity=old-african-woman`. */
 const IDENTITY_HASH_KEY = 'identity';
 
+/** The hash entry that sets the expression by a FACS code (see `setFACS`), a way in for links: `facs=1+2+5B+26`. */
+const FACS_HASH_KEY = 'facs';
+
 /** Longest timeline JSON the app puts in its URL hash, in characters: longer ones make links too long to share. */
 export const MAX_HASH_TIMELINE_CHARS = 1500;
 
@@ -57,7 +60,7 @@ export function encodeExpression(e: HashExpression, timeline?: string, appearanc
 export function decodeExpression(hash: string): HashExpression {
   const out: HashExpression = { actionUnits: {}, presets: {} };
   for (const [key, text] of new URLSearchParams(hash.replace(/^#/, ''))) {
-    if (key === TIMELINE_HASH_KEY || key === IDENTITY_HASH_KEY || key.startsWith(APPEARANCE_HASH_PREFIX)) continue;
+    if (key === TIMELINE_HASH_KEY || key === IDENTITY_HASH_KEY || key === FACS_HASH_KEY || key.startsWith(APPEARANCE_HASH_PREFIX)) continue;
     const value = Number(text);
     if (text.trim() === '' || !Number.isFinite(value)) continue;
     if (key.startsWith(PRESET_PREFIX)) out.presets[key.slice(PRESET_PREFIX.length)] = value;
@@ -102,6 +105,14 @@ export function appearanceChanges(current: Readonly<HashAppearance>, defaults: R
 /** The identity text a hash carries (a stock name or `sex:1,age:30,african:1`), or null. */
 export function decodeIdentity(hash: string): string | null {
   return new URLSearchParams(hash.replace(/^#/, '')).get(IDENTITY_HASH_KEY);
+}
+
+/**
+ * The FACS code a hash carries (`facs=1+2+5B+26`; the query form reads its plus signs as spaces, which a code may have
+ * between units), or null. The app writes the expression back as sliders: the code is a way in.
+ */
+export function decodeFACS(hash: string): string | null {
+  return new URLSearchParams(hash.replace(/^#/, '')).get(FACS_HASH_KEY);
 }
 
 /** The timeline JSON text a hash carries (see `encodeExpression`), or null. */

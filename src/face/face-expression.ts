@@ -129,6 +129,11 @@ export class FaceExpression {
     return this.state.effective();
   }
 
+  /** What each side adds up to with the presets, without the overlay and the resting pull (see `getFACS`). */
+  expressionIntensities(): Record<string, number> {
+    return this.state.expressionIntensities();
+  }
+
   listActionUnits(): ActionUnitListing[] {
     return this.state.listActionUnits();
   }

@@ -12,6 +12,7 @@ import {
 } from '../render/view-options';
 import { readExpression, type ExpressionEntries } from './expression-hash';
 import { readIdentity, type Identity } from '../core/head/identity';
+import { parseFACSCode } from '../core/expression/facs-code';
 
 export type { SolverMode };
 
@@ -54,6 +55,8 @@ export interface FaceOptions {
   panels?: boolean;
   /** The expression to start with: `"AU12=0.8&AU6L=0.5&preset:happiness=0.3"` or `{ AU12: 0.8, ... }`. */
   expression?: string | ExpressionEntries;
+  /** The expression to start with as a FACS code (`"1+2+5B+26"`, see `setFACS`); `expression`'s entries go over it. */
+  facs?: string;
   /** Random blinks and gaze saccades (off by default, so that pictures are repeatable). */
   eyeSimulation?: boolean;
   /** Some light options (see `setLight`). */
@@ -98,6 +101,7 @@ export const FACE_DEFAULTS: Readonly<Required<FaceOptions>> = Object.freeze({
   workers: 'auto',
   panels: false,
   expression: '',
+  facs: '',
   eyeSimulation: false,
   light: {},
   appearance: {},
@@ -173,6 +177,9 @@ export function checkFaceOption<K extends keyof FaceOptions>(key: K, value: unkn
     case 'expression':
       // Whether its ids and presets exist is checked against the rig, once it is loaded.
       readExpression(value as string, `${what}: expression`);
+      break;
+    case 'facs':
+      parseFACSCode(value, `${what}: facs`);
       break;
     default:
       throw refusal(what, '', `one of the options ${Object.keys(FACE_DEFAULTS).join(', ')}`, key);

@@ -2,6 +2,7 @@ import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import { gradeOf, type Grade } from '../core/expression/facs';
 import type { FaceChange, FaceHandle } from '../face/face-handle';
+import { note } from './note';
 
 /** One slider of the panel: an Action Unit side (`AU12L`) or a midline unit (`AU17`). */
 interface SideSlider {
@@ -14,9 +15,11 @@ interface SideSlider {
 }
 
 /**
- * The Action Units folder: a folder per unit titled with its number and name, a 0..1 slider per side whose label
- * shows the FACS grade (A trace .. E maximum), for bilateral units a link checkbox (on by default) that makes
- * either side's slider drive both, and a "show muscles" checkbox that draws the unit's muscles over the skin.
+ * The Action Units folder: a FACS code field (the expression as coders write it, `1+2+5B+26`: typed in, it sets the
+ * expression; it follows the sliders and presets), then a folder per unit titled with its number and name, a 0..1
+ * slider per side whose label shows the FACS grade (A trace .. E maximum), for bilateral units a link checkbox (on by
+ * default) that makes either side's slider drive both, and a "show muscles" checkbox that draws the unit's muscles
+ * over the skin.
  */
 export class ActionUnitsPanel {
   readonly folder: GUI;
@@ -28,6 +31,11 @@ export class ActionUnitsPanel {
   /** Whether each unit's muscles are shown, by Action Unit id, as the handle's muscle display says. */
   private readonly showMuscles: Record<string, boolean> = {};
   private readonly muscleControllers: Controller[] = [];
+  /** The FACS code field's value. */
+  private readonly code: { facs: string };
+  private readonly codeController: Controller;
+  /** Why the code typed last was refused, under the field; empty once one is taken. */
+  private readonly codeMessage: HTMLDivElement;
   private readonly unsubscribe: () => void;
 
   constructor(
@@ -36,6 +44,14 @@ export class ActionUnitsPanel {
   ) {
     this.folder = parent.addFolder('Action Units');
     this.values = face.getActionUnits();
+    this.code = { facs: face.getFACS() };
+    this.codeController = this.folder
+      .add(this.code, 'facs')
+      .name('FACS code')
+      .onFinishChange((code: string) => this.setCode(code));
+    this.codeController.domElement.dataset.control = 'facs';
+    this.codeMessage = note('facs-message', { color: '#ff8a80' });
+    this.codeController.domElement.after(this.codeMessage);
     for (const au of face.listActionUnits()) {
       const unit = this.folder.addFolder(`AU${au.number} ${au.name}`);
       unit.domElement.dataset.actionUnit = au.id;
@@ -89,10 +105,22 @@ export class ActionUnitsPanel {
       return;
     }
     if (change !== 'expression') return;
+    this.code.facs = this.face.getFACS();
+    this.codeController.updateDisplay();
+    this.codeMessage.textContent = '';
     Object.assign(this.values, this.face.getActionUnits());
     for (const slider of this.sliders) {
       slider.controller.updateDisplay();
       this.label(slider);
+    }
+  }
+
+  /** Sets the expression by the code typed; a refused one stays in the field, with the reason under it. */
+  private setCode(code: string): void {
+    try {
+      this.face.setFACS(code);
+    } catch (error) {
+      this.codeMessage.textContent = (error as Error).message;
     }
   }
 

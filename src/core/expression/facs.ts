@@ -320,6 +320,20 @@ export class ExpressionState {
   }
 
   /**
+   * The expression set, by side id like `getActionUnits`: each side's slider plus the weighted presets, clamped to
+   * 0..1, without the page's overlay and the resting pull (what `getFACS` writes).
+   */
+  expressionIntensities(): Record<string, number> {
+    const out: Record<string, number> = {};
+    SLOT_IDS.forEach((id, s) => {
+      let v = this.sliders[s];
+      this.presetSlots.forEach((values, p) => (v += this.presetWeights[p] * values[s]));
+      out[id] = clamp01(v);
+    });
+    return out;
+  }
+
+  /**
    * Contraction of each rig muscle (index = position in `rig.muscles`) into `into`: the sum over the Action Unit
    * sides that drive it of intensity x weight, at most 1. Entries past the muscle count are left alone. The rig's
    * links are read once per rig object (rigs are immutable once parsed): pass a new object after editing one.
