@@ -41,6 +41,7 @@ test('every Action Unit and preset at full intensity settles with no NaN and no 
     }
     return out;
   });
-  expect(results).toHaveLength(33);
+  // 25 Action Units and 12 presets.
+  expect(results).toHaveLength(37);
   expect(results.filter((r) => !r.settled || r.nan > 0 || r.inverted > 0)).toEqual([]);
 });

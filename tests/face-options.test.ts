@@ -46,7 +46,7 @@ describe('createFace options', () => {
       [
         { facs: '6+12+99' },
         'createFace: facs: at 6 of "6+12+99": expected an Action Unit the face has ' +
-          '(1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 43), got "99"',
+          '(1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 43, 61, 62, 63, 64), got "99"',
       ],
       [
         { resolutoin: 'low' },

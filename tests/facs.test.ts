@@ -53,8 +53,10 @@ function contractions(state: ExpressionState, rig: Rig = SMALL_RIG): Record<stri
 }
 
 describe('the Action Unit catalogue', () => {
-  it('has the 21 Action Units, with midline ones 9, 17, 18, 23, 24, 25, 26 and 27', () => {
-    expect(ACTION_UNITS.map((a) => a.number)).toEqual([1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 43]);
+  it('has the 25 Action Units, with midline ones 9, 17, 18, 23, 24, 25, 26, 27 and the eye positions 61 to 64', () => {
+    expect(ACTION_UNITS.map((a) => a.number)).toEqual([
+      1, 2, 4, 5, 6, 7, 9, 10, 12, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 43, 61, 62, 63, 64,
+    ]);
     expect(ACTION_UNITS.filter((a) => !a.bilateral).map((a) => a.id)).toEqual([
       'AU9',
       'AU17',
@@ -64,13 +66,18 @@ describe('the Action Unit catalogue', () => {
       'AU25',
       'AU26',
       'AU27',
+      'AU61',
+      'AU62',
+      'AU63',
+      'AU64',
     ]);
     expect(ACTION_UNITS.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', bilateral: true });
   });
 
-  it('matches the default rig (ids, names, sides)', () => {
+  it('matches the default rig (ids, names, sides), but for the sideways eye turns, which no skin muscle makes', () => {
+    // AU61 and AU62 turn the eyeballs only (gaze.ts); AU63 and AU64 also move the upper lids through the rig.
     expect(DEFAULT_RIG.actionUnits.map(({ id, name, bilateral }) => ({ id, name, bilateral }))).toEqual(
-      ACTION_UNITS.map(({ id, name, bilateral }) => ({ id, name, bilateral })),
+      ACTION_UNITS.filter((a) => a.id !== 'AU61' && a.id !== 'AU62').map(({ id, name, bilateral }) => ({ id, name, bilateral })),
     );
   });
 });
@@ -132,7 +139,7 @@ describe('ExpressionState sliders', () => {
 
   it('lists the Action Units with their sides', () => {
     const list = new ExpressionState().listActionUnits();
-    expect(list).toHaveLength(21);
+    expect(list).toHaveLength(25);
     expect(list.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', sides: ['L', 'R'] });
     expect(list.find((a) => a.id === 'AU17')).toEqual({ id: 'AU17', number: 17, name: 'chin raiser', sides: ['M'] });
   });

@@ -68,6 +68,7 @@ function fakeFace() {
         eyesOn = on;
       },
       enabled: () => eyesOn,
+      showGaze: () => {},
       stats: () => ({ on: eyesOn, blinks: 0, saccades: 0, blink: 0, time: 0, gaze: { yaw: 0, pitch: 0 } }),
     },
     presets: ['happiness', 'sadness'],

@@ -397,12 +397,12 @@ export class EmbeddedFace {
     this.controllers.editor.session.attachView(editor);
     // Seeded from the clock and a random number: every face blinks differently, even two made in the same
     // millisecond; the state machine takes a seed for its tests.
-    const eyes = new EyeDriver(this.handle, this.view, head.eyes, {
+    const eyes = new EyeDriver(this.handle, this.view, head.eyes, (id) => expression.effectiveOf(id), {
       simulation: { seed: (Date.now() ^ (Math.random() * 0x7fffffff)) >>> 0 },
     });
     own.push(() => eyes.dispose());
     this.parts.eyes = eyes;
-    this.parts.recorder = new VideoRecorder({ handle: this.handle, simulation, view: this.view, skin: skinView });
+    this.parts.recorder = new VideoRecorder({ handle: this.handle, simulation, view: this.view, skin: skinView, eyes });
     this.mounted = own;
     this.head = describeShownHead(prepared, {
       level: o.resolution,

@@ -1,6 +1,7 @@
 import { Euler, Quaternion, type Object3D } from 'three';
 import { DEGREES } from '../core/math3';
 import { EyeSimulation, type EyeSimulationOptions } from '../core/expression/eye-simulation';
+import { actionUnitGaze, type Gaze } from '../core/expression/gaze';
 import type { EyeStats, FaceEyes, FaceHandle } from './face-handle';
 import type { FrameHook } from '../render/head-view';
 
@@ -23,29 +24,35 @@ const EYE_DRIVER_DEFAULTS: Required<EyeDriverOptions> = { simulation: {}, lids: 
 const LID_IDS: readonly string[] = ['AU43', 'AU5'];
 
 /**
- * Runs the eye simulation on the page: every frame it advances the state machine to the frame's time, turns the
- * eyeballs about their centres (their nodes sit at the model's eye pivots) and sets the lids' Action Units in the
- * face's overlay, so blinks happen on the skin, through the lid muscles, on top of whatever the sliders say.
+ * Turns the eyes on the page: every frame it reads the eye positions the expression asks for (AU61 to AU64, see
+ * gaze.ts) and, while the eye simulation runs, advances its state machine to the frame's time and adds its gaze;
+ * it turns the eyeballs about their centres (their nodes sit at the model's eye pivots) and sets the simulation's lid
+ * Action Units in the face's overlay, so blinks happen on the skin, through the lid muscles, on top of whatever the
+ * sliders say.
  */
 export class EyeDriver implements FaceEyes {
   private simulation: EyeSimulation;
   private readonly o: Required<EyeDriverOptions>;
   private readonly rest: Quaternion[];
   private readonly euler = new Euler(0, 0, 0, 'YXZ');
-  private readonly turn = new Quaternion();
+  private readonly rotation = new Quaternion();
   private readonly lidValues = new Float64Array(LID_IDS.length);
   private readonly stopFrames: () => void;
   private on = false;
   /** Frame time at which the simulation's clock reads 0 (NaN until the first frame after switching on). */
   private startedAt = Number.NaN;
-  /** The gaze last shown (NaN: none since switching on), so that a held fixation draws nothing. */
+  /** The gaze last shown (NaN: none yet), so that a held fixation draws nothing. */
   private shownYaw = Number.NaN;
   private shownPitch = Number.NaN;
+  /** The eye positions' gaze, rewritten every frame. */
+  private readonly asked: Gaze = { yaw: 0, pitch: 0 };
 
+  /** `units` reads an Action Unit's effective intensity by id (`AU61`), as the expression adds it up. */
   constructor(
     private readonly face: FaceHandle,
     frames: FrameHooks,
     private readonly eyes: readonly Object3D[],
+    private readonly units: (id: string) => number,
     options: EyeDriverOptions = {},
   ) {
     this.o = { ...EYE_DRIVER_DEFAULTS, ...options };
@@ -72,6 +79,16 @@ export class EyeDriver implements FaceEyes {
     } else this.putBack();
   }
 
+  /**
+   * Turns the eyes to the gaze the expression asks for now (with the simulation's, while it runs, as last advanced),
+   * without waiting for a frame: for a recorder or a snapshot that draws the next picture itself.
+   */
+  showGaze(): void {
+    actionUnitGaze(this.units, this.asked);
+    const s = this.simulation;
+    this.turn(this.asked.yaw + (this.on ? s.yaw : 0), this.asked.pitch + (this.on ? s.pitch : 0));
+  }
+
   enabled(): boolean {
     return this.on;
   }
@@ -93,27 +110,37 @@ export class EyeDriver implements FaceEyes {
    * hold still, and the view need not draw for them (a face with its eyes alive costs a battery only when they move).
    */
   private frame(now: number): boolean {
-    if (!this.on) return false;
+    actionUnitGaze(this.units, this.asked);
+    if (!this.on) return this.turn(this.asked.yaw, this.asked.pitch);
     if (Number.isNaN(this.startedAt)) this.startedAt = now;
     const s = this.simulation;
     s.advance(now - this.startedAt);
     const close = this.o.lids ? s.lidClose() : 0;
     const raise = this.o.lids ? s.lidRaise() : 0;
-    if (s.yaw === this.shownYaw && s.pitch === this.shownPitch && close === this.lidValues[0] && raise === this.lidValues[1]) return false;
-    this.shownYaw = s.yaw;
-    this.shownPitch = s.pitch;
-    // Both eyes turn alike (no vergence): yaw about the head's up axis, then pitch about the turned eye's x axis.
-    this.euler.set(-s.pitch * DEGREES, s.yaw * DEGREES, 0);
-    this.turn.setFromEuler(this.euler);
-    for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.multiplyQuaternions(this.turn, this.rest[i]);
+    const turned = this.turn(this.asked.yaw + s.yaw, this.asked.pitch + s.pitch);
+    if (close === this.lidValues[0] && raise === this.lidValues[1]) return turned;
     this.lidValues[0] = close;
     this.lidValues[1] = raise;
     if (this.o.lids) this.face.setOverlay(LID_IDS, this.lidValues);
     return true;
   }
 
+  /** Turns both eyes to a gaze (degrees) unless they show it already; returns whether they turned. */
+  private turn(yaw: number, pitch: number): boolean {
+    if (yaw === this.shownYaw && pitch === this.shownPitch) return false;
+    this.shownYaw = yaw;
+    this.shownPitch = pitch;
+    // Both eyes turn alike (no vergence): yaw about the head's up axis, then pitch about the turned eye's x axis.
+    this.euler.set(-pitch * DEGREES, yaw * DEGREES, 0);
+    this.rotation.setFromEuler(this.euler);
+    for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.multiplyQuaternions(this.rotation, this.rest[i]);
+    return true;
+  }
+
+  /** The simulation stopped: the eyes go back to the gaze the expression asks for, the lids to the sliders. */
   private putBack(): void {
-    for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.copy(this.rest[i]);
+    this.lidValues.fill(0);
+    this.showGaze();
     if (this.o.lids) this.face.clearOverlay();
   }
 }

@@ -129,6 +129,11 @@ export class FaceExpression {
     return this.state.effective();
   }
 
+  /** One side's (or midline unit's) effective intensity, without building a record: for a per-frame reader. */
+  effectiveOf(id: string): number {
+    return this.state.effectiveOf(id);
+  }
+
   /** What each side adds up to with the presets, without the overlay and the resting pull (see `getFACS`). */
   expressionIntensities(): Record<string, number> {
     return this.state.expressionIntensities();

@@ -89,6 +89,8 @@ export interface FaceEyes {
   setEnabled(on: boolean, simulation?: Partial<EyeSimulationOptions>): void;
   enabled(): boolean;
   stats(): EyeStats;
+  /** Turns the eyes to the gaze asked for now, for a picture drawn before the next frame. */
+  showGaze(): void;
 }
 
 /** The head side the handle drives (EmbeddedFace): loading another head, going back to the default one. */

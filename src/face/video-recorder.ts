@@ -1,6 +1,7 @@
 import type { HeadView, ViewCapture } from '../render/head-view';
 import type { SkinView } from '../render/skin-view';
 import type { SkinSimulation } from '../sim/main/skin-simulation';
+import type { FaceEyes } from './face-ports';
 import type { FaceHandle } from './face-handle';
 import { videoFrameCount, type VideoOptions } from './video-options';
 
@@ -10,6 +11,8 @@ export interface VideoRecorderParts {
   simulation: SkinSimulation;
   view: HeadView;
   skin: SkinView;
+  /** The eyes, turned to the expression's gaze before each picture. */
+  eyes: FaceEyes;
 }
 
 /**
@@ -61,6 +64,8 @@ export class VideoRecorder {
           if (before.loaded) handle.seek(i / o.fps);
           await simulation.runFrames(o.solverFramesPerVideoFrame);
           this.parts.skin.update();
+          // The render loop holds while recording: the eye positions a timeline sets turn the eyes here.
+          this.parts.eyes.showGaze();
           capture.render();
           await sink.add(capture.canvas, i, o.fps);
           o.onProgress?.((i + 1) / frames);

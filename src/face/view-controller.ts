@@ -130,6 +130,7 @@ export class ViewController {
 
   /** A PNG of the canvas, rendered just before it is read. */
   savePNG(): Promise<Blob> {
+    this.parts.eyes?.showGaze();
     return this.parts.shown().snapshot();
   }
 }

@@ -25,6 +25,8 @@ export interface ActionUnitInfo {
  * - AU18 pucker, AU23 lip tightener, AU24 lip pressor: the orbicularis oris is one ring around the mouth, modelled as
  *   one sphincter per action; FACS allows scoring 23 and 24 on one side, but this rig cannot produce it.
  * - AU25 lips part, AU26 jaw drop, AU27 mouth stretch: the lips and the jaw open as one.
+ * - AU61 to AU64, the eye positions (eyes turn left, right, up, down): both eyes turn together. They turn the
+ *   eyeballs (see gaze.ts); the upper lids follow the eyes up and down through the rig's lid muscles.
  * Bilateral, because FACS scores them on one side and the thesis or the prototypes need it: 1, 2, 4, 5, 6, 7
  * (winks, one raised brow, a squint), 10, 12, 14, 15, 16, 20 (contempt is R12A + R14A) and 43 (one eye closed).
  */
@@ -52,6 +54,10 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [26, 'jaw drop', false],
       [27, 'mouth stretch', false],
       [43, 'eyes closed', true],
+      [61, 'eyes turn left', false],
+      [62, 'eyes turn right', false],
+      [63, 'eyes up', false],
+      [64, 'eyes down', false],
     ] as const
   ).map(([n, name, bilateral]) => Object.freeze({ id: `AU${n}`, number: n, name, bilateral })),
 );
@@ -317,6 +323,13 @@ export class ExpressionState {
     const out: Record<string, number> = {};
     SLOT_IDS.forEach((id, s) => (out[id] = e[s]));
     return out;
+  }
+
+  /** One side's (or midline unit's) effective intensity, as `effective` has it, without building the record. */
+  effectiveOf(id: string): number {
+    const slots = SLOTS_OF.get(id);
+    if (slots?.length !== 1) throw refusal('effectiveOf', '', 'an Action Unit side or midline unit like "AU12L" or "AU61"', id);
+    return this.effectiveIntensities()[slots[0]];
   }
 
   /**
