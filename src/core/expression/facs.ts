@@ -28,7 +28,10 @@ export interface ActionUnitInfo {
  * - AU61 to AU64, the eye positions (eyes turn left, right, up, down): both eyes turn together. They turn the
  *   eyeballs (see gaze.ts); the upper lids follow the eyes up and down through the rig's lid muscles.
  * Bilateral, because FACS scores them on one side and the thesis or the prototypes need it: 1, 2, 4, 5, 6, 7
- * (winks, one raised brow, a squint), 10, 12, 14, 15, 16, 20 (contempt is R12A + R14A) and 43 (one eye closed).
+ * (winks, one raised brow, a squint), 10, 12, 14, 15, 16, 20 (contempt is R12A + R14A) and 43 (one eye closed); the
+ * lid positions of the 1978 manual, 41 (lid droop), 42 (slit) and 44 (squint), likewise: they are made by the same lid
+ * muscles as 43 and 7 (the 2002 manual scores them as intensities of those; people still code them, and tools offer
+ * them).
  */
 export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
   (
@@ -53,7 +56,10 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [25, 'lips part', false],
       [26, 'jaw drop', false],
       [27, 'mouth stretch', false],
+      [41, 'lid droop', true],
+      [42, 'slit', true],
       [43, 'eyes closed', true],
+      [44, 'squint', true],
       [61, 'eyes turn left', false],
       [62, 'eyes turn right', false],
       [63, 'eyes up', false],
