@@ -31,7 +31,8 @@ export interface ActionUnitInfo {
  * (winks, one raised brow, a squint), 10, 12, 14, 15, 16, 20 (contempt is R12A + R14A) and 43 (one eye closed); the
  * lid positions of the 1978 manual, 41 (lid droop), 42 (slit) and 44 (squint), likewise: they are made by the same lid
  * muscles as 43 and 7 (the 2002 manual scores them as intensities of those; people still code them, and tools offer
- * them).
+ * them). 45 (blink) closes the lids as 43 does; what makes it a blink is its timing, a timeline's FACS action of a
+ * tenth of a second each way (docs/timeline.md). 46 (wink) closes one eye and raises its cheek.
  */
 export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
   (
@@ -60,6 +61,8 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [42, 'slit', true],
       [43, 'eyes closed', true],
       [44, 'squint', true],
+      [45, 'blink', true],
+      [46, 'wink', true],
       [61, 'eyes turn left', false],
       [62, 'eyes turn right', false],
       [63, 'eyes up', false],
