@@ -1,8 +1,6 @@
-import { rmSync } from 'node:fs';
 import { join } from 'node:path';
-import { build } from 'vite';
 import { expect, test } from './fixtures';
-import { checkPackedApp, filesUnder, packedApp } from './packed-app';
+import { builtViteApp, checkPackedApp, filesUnder } from './packed-app';
 
 /**
  * The package as a web developer uses it with Vite: `examples/vite-app` with the package packed and installed, built
@@ -12,28 +10,15 @@ import { checkPackedApp, filesUnder, packedApp } from './packed-app';
  */
 test.describe.configure({ timeout: 240_000 });
 
-let app: string;
-test.beforeAll(async () => {
-  app = packedApp('vite-app');
-  await build({
-    root: app,
-    logLevel: 'silent',
-    configFile: join(app, 'vite.config.js'),
-    build: { outDir: join(app, 'dist'), target: 'es2022' },
-  });
-});
-
-test.afterAll(() => {
-  if (app) rmSync(app, { recursive: true, force: true });
-});
+const app = builtViteApp('vite-app');
 
 test('a fresh Vite app that imports the packed library builds, shows a face that moves, and fetches nothing missing', async ({ page }) => {
   // The app's build holds its own copies of the package's files, under hashed names.
-  const files = filesUnder(join(app, 'dist'));
+  const files = filesUnder(join(app(), 'dist'));
   for (const stem of ['head-low', 'default', 'room'])
     expect(
       files.some((f) => f.includes(stem)),
       stem,
     ).toBe(true);
-  await checkPackedApp(page, 'http://localhost:4395', join(app, 'dist'));
+  await checkPackedApp(page, 'http://localhost:4395', join(app(), 'dist'));
 });

@@ -4,7 +4,8 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { Page } from '@playwright/test';
-import { expect } from './fixtures';
+import { build } from 'vite';
+import { expect, test } from './fixtures';
 
 const project = fileURLToPath(new URL('..', import.meta.url));
 
@@ -42,6 +43,27 @@ export function packedApp(example: string, linked: readonly string[] = []): stri
     symlinkSync(join(project, 'node_modules', name), join(app, 'node_modules', name), 'dir');
   }
   return app;
+}
+
+/**
+ * A Vite example with the package installed (see `packedApp`), built once before the file's tests and removed after
+ * them: returns the getter of its folder (the build is in its `dist/`).
+ */
+export function builtViteApp(example: string, linked: string[] = []): () => string {
+  let app = '';
+  test.beforeAll(async () => {
+    app = packedApp(example, linked);
+    await build({
+      root: app,
+      logLevel: 'silent',
+      configFile: join(app, 'vite.config.js'),
+      build: { outDir: join(app, 'dist'), target: 'es2022' },
+    });
+  });
+  test.afterAll(() => {
+    if (app) rmSync(app, { recursive: true, force: true });
+  });
+  return () => app;
 }
 
 /** Every file under `dir`. */
