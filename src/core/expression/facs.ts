@@ -46,6 +46,7 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [9, 'nose wrinkler', false],
       [10, 'upper lip raiser', true],
       [12, 'lip corner puller', true],
+      [13, 'sharp lip puller', true],
       [14, 'dimpler', true],
       [15, 'lip corner depressor', true],
       [16, 'lower lip depressor', true],
