@@ -58,6 +58,8 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [25, 'lips part', false],
       [26, 'jaw drop', false],
       [27, 'mouth stretch', false],
+      [38, 'nostril dilator', true],
+      [39, 'nostril compressor', true],
       [41, 'lid droop', true],
       [42, 'slit', true],
       [43, 'eyes closed', true],
