@@ -53,9 +53,9 @@ function contractions(state: ExpressionState, rig: Rig = SMALL_RIG): Record<stri
 }
 
 describe('the Action Unit catalogue', () => {
-  it('has the 33 Action Units, with midline ones 9, 17, 18, 23, 24, 25, 26, 27 and the eye positions 61 to 64', () => {
+  it('has the 34 Action Units, with midline ones 9, 17, 18, 23, 24, 25, 26, 27 and the eye positions 61 to 64', () => {
     expect(ACTION_UNITS.map((a) => a.number)).toEqual([
-      1, 2, 4, 5, 6, 7, 9, 10, 12, 13, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 38, 39, 41, 42, 43, 44, 45, 46, 61, 62, 63, 64,
+      1, 2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 38, 39, 41, 42, 43, 44, 45, 46, 61, 62, 63, 64,
     ]);
     expect(ACTION_UNITS.filter((a) => !a.bilateral).map((a) => a.id)).toEqual([
       'AU9',
@@ -139,7 +139,7 @@ describe('ExpressionState sliders', () => {
 
   it('lists the Action Units with their sides', () => {
     const list = new ExpressionState().listActionUnits();
-    expect(list).toHaveLength(33);
+    expect(list).toHaveLength(34);
     expect(list.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', sides: ['L', 'R'] });
     expect(list.find((a) => a.id === 'AU17')).toEqual({ id: 'AU17', number: 17, name: 'chin raiser', sides: ['M'] });
   });

@@ -45,6 +45,7 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [7, 'lid tightener', true],
       [9, 'nose wrinkler', false],
       [10, 'upper lip raiser', true],
+      [11, 'nasolabial deepener', true],
       [12, 'lip corner puller', true],
       [13, 'sharp lip puller', true],
       [14, 'dimpler', true],
