@@ -10,7 +10,10 @@ test.describe.configure({ timeout: 600_000 });
 
 test('every hair root stays on its anchor point of the solved skin under each Action Unit', async ({ page }) => {
   await openFace(page, '/');
-  const ids = await page.evaluate(() => window.face.listActionUnits().map((au) => au.id));
+  // The head positions and the sideways eye turns move no skin of the face (the view turns the head or the eyes).
+  const ids = (await page.evaluate(() => window.face.listActionUnits().map((au) => au.id))).filter(
+    (id) => !/^AU(5[1-8]|6[1256])$/.test(id),
+  );
   expect(ids.length).toBeGreaterThanOrEqual(21);
   for (const id of ['neutral', ...ids]) {
     const result = await page.evaluate(async (id) => {

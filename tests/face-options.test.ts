@@ -47,7 +47,7 @@ describe('createFace options', () => {
         { facs: '6+12+99' },
         'createFace: facs: at 6 of "6+12+99": expected an Action Unit the face has ' +
           '(1, 2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 38, 39, 41, 42, 43, 44, 45, 46, ' +
-          '61, 62, 63, 64), got "99"',
+          '51, 52, 53, 54, 55, 56, 57, 58, 61, 62, 63, 64, 65, 66), got "99"',
       ],
       [
         { resolutoin: 'low' },

@@ -53,9 +53,10 @@ function contractions(state: ExpressionState, rig: Rig = SMALL_RIG): Record<stri
 }
 
 describe('the Action Unit catalogue', () => {
-  it('has the 34 Action Units, with midline ones 9, 17, 18, 23, 24, 25, 26, 27 and the eye positions 61 to 64', () => {
+  it('has the 44 Action Units, with midline ones 9, 17, 18, 23 to 27, the head positions 51 to 58 and the eye positions 61 to 66', () => {
     expect(ACTION_UNITS.map((a) => a.number)).toEqual([
-      1, 2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 38, 39, 41, 42, 43, 44, 45, 46, 61, 62, 63, 64,
+      1, 2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 38, 39, 41, 42, 43, 44, 45, 46, 51, 52, 53, 54, 55,
+      56, 57, 58, 61, 62, 63, 64, 65, 66,
     ]);
     expect(ACTION_UNITS.filter((a) => !a.bilateral).map((a) => a.id)).toEqual([
       'AU9',
@@ -66,18 +67,30 @@ describe('the Action Unit catalogue', () => {
       'AU25',
       'AU26',
       'AU27',
+      'AU51',
+      'AU52',
+      'AU53',
+      'AU54',
+      'AU55',
+      'AU56',
+      'AU57',
+      'AU58',
       'AU61',
       'AU62',
       'AU63',
       'AU64',
+      'AU65',
+      'AU66',
     ]);
     expect(ACTION_UNITS.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', bilateral: true });
   });
 
-  it('matches the default rig (ids, names, sides), but for the sideways eye turns, which no skin muscle makes', () => {
-    // AU61 and AU62 turn the eyeballs only (gaze.ts); AU63 and AU64 also move the upper lids through the rig.
+  it('matches the default rig (ids, names, sides), but for the head positions and sideways eye turns, which no muscle makes', () => {
+    // AU51 to AU58 turn the whole head (head-pose.ts); AU61, AU62, AU65 and AU66 turn the eyeballs only (gaze.ts);
+    // AU63 and AU64 also move the upper lids through the rig.
+    const noMuscle = ['AU51', 'AU52', 'AU53', 'AU54', 'AU55', 'AU56', 'AU57', 'AU58', 'AU61', 'AU62', 'AU65', 'AU66'];
     expect(DEFAULT_RIG.actionUnits.map(({ id, name, bilateral }) => ({ id, name, bilateral }))).toEqual(
-      ACTION_UNITS.filter((a) => a.id !== 'AU61' && a.id !== 'AU62').map(({ id, name, bilateral }) => ({ id, name, bilateral })),
+      ACTION_UNITS.filter((a) => !noMuscle.includes(a.id)).map(({ id, name, bilateral }) => ({ id, name, bilateral })),
     );
   });
 });
@@ -139,7 +152,7 @@ describe('ExpressionState sliders', () => {
 
   it('lists the Action Units with their sides', () => {
     const list = new ExpressionState().listActionUnits();
-    expect(list).toHaveLength(34);
+    expect(list).toHaveLength(44);
     expect(list.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', sides: ['L', 'R'] });
     expect(list.find((a) => a.id === 'AU17')).toEqual({ id: 'AU17', number: 17, name: 'chin raiser', sides: ['M'] });
   });

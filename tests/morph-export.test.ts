@@ -30,6 +30,14 @@ describe('planTargets', () => {
     expect(() => planTargets([], [], PRESETS, null)).toThrow(/exportGLTF: actionUnits and presets are empty and there is no timeline/);
   });
 
+  it('refuses a head position, which turns the whole head, and leaves one out of a timeline’s targets', () => {
+    expect(() => planTargets(['AU12', 'AU51'], [], PRESETS, null)).toThrow(
+      /^exportGLTF: actionUnits: AU51 is a head position, which turns the whole head rather than shaping the skin; a morph target cannot/,
+    );
+    const t = timeline({ tracks: { AU53: { keys: [{ time: 0, value: 1 }] }, AU12: { keys: [{ time: 0, value: 1 }] } }, actions: [] });
+    expect(timelineTargets(t).map((x) => x.name)).toEqual(['AU12']);
+  });
+
   it("adds the timeline's targets that were not asked for, once", () => {
     const t = timeline({
       tracks: {

@@ -33,6 +33,7 @@ export type { EyeStats, FaceChange, FaceChangeListener, FaceStats, MuscleDisplay
 export type { Easing, Timeline, TimelineAction, TimelineKey, TimelineTrack } from '../core/timeline/timeline';
 export type { TimelineError } from '../core/timeline/timeline-schema';
 export type { ActionUnitListing, PresetListing, SideCode } from '../core/expression/facs';
+export type { HeadPose } from '../core/expression/head-pose';
 export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 export type { SkinParameters } from '../core/solver/skin-parameters';
 export type {

@@ -31,6 +31,8 @@ import { HeadSwitch } from './head-switch';
 import { checkFaceOption, checkFaceOptions, solverMode, viewBackground, type FaceOptions } from './face-options';
 import { assetUrl, loadRig, pageUrl, rigKey, rigName } from './face-assets';
 import { jawHinge, jawTurner } from './jaw-turner';
+import { HeadTurner } from './head-turner';
+import { findNeck } from '../core/rig/neck-carry';
 import { PanelSlot } from './panel-slot';
 import { takeBack } from './take-back';
 
@@ -351,11 +353,22 @@ export class EmbeddedFace {
       ? { quaternion: head.jaw.quaternion.clone(), position: head.jaw.position.clone(), hinge: jawHinge(rig) }
       : undefined;
     let jaw = jawTurner(head, rig, jawRest);
-    const expression = new FaceExpression(rig, (contractions) => {
-      simulation.setContractions(contractions);
-      jaw?.(contractions);
-      muscles.setContractions(contractions);
-    });
+    // The head positions turn the whole head about the neck's pivot, and the solver carries the neck under it.
+    const neck = findNeck(simulation.rest, simulation.triangles);
+    const turner = new HeadTurner(head.root, head.skin, neck?.pivot ?? null);
+    turner.follow((frame) => muscles.setFrame(frame));
+    const expression = new FaceExpression(
+      rig,
+      (contractions) => {
+        simulation.setContractions(contractions);
+        jaw?.(contractions);
+        muscles.setContractions(contractions);
+      },
+      (pose) => {
+        simulation.setHeadPose(pose);
+        turner.set(pose);
+      },
+    );
     this.expression = expression;
     const document = new RigDocument(rig);
     const binding = new RigBinding(document, {

@@ -1,3 +1,4 @@
+import type { HeadPose } from '../core/expression/head-pose';
 import { checkNumber, refusal } from '../core/check';
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
 import { facsCode, parseFACSCode } from '../core/expression/facs-code';
@@ -55,6 +56,15 @@ export class ExpressionController {
    */
   getFACS(): string {
     return facsCode(this.parts.expressed().expressionIntensities());
+  }
+
+  /**
+   * The head pose the head positions (AU51 to AU58) ask for now: `yaw` toward the subject's left, `pitch` up, `roll`
+   * toward the left shoulder (degrees) and `forward` (metres). The view turns the whole head by it about the neck's
+   * pivot; `getSkin` gives the skin in the head's own frame, before this turn.
+   */
+  getHeadPose(): HeadPose {
+    return this.parts.expressed().headPose();
   }
 
   /**
@@ -140,6 +150,7 @@ export const EXPRESSION_METHODS = [
   'setExpression',
   'setFACS',
   'getFACS',
+  'getHeadPose',
   'getEffectiveActionUnits',
   'listActionUnits',
   'applyPreset',

@@ -24,7 +24,7 @@ const EYE_DRIVER_DEFAULTS: Required<EyeDriverOptions> = { simulation: {}, lids: 
 const LID_IDS: readonly string[] = ['AU43', 'AU5'];
 
 /**
- * Turns the eyes on the page: every frame it reads the eye positions the expression asks for (AU61 to AU64, see
+ * Turns the eyes on the page: every frame it reads the eye positions the expression asks for (AU61 to AU66, see
  * gaze.ts) and, while the eye simulation runs, advances its state machine to the frame's time and adds its gaze;
  * it turns the eyeballs about their centres (their nodes sit at the model's eye pivots) and sets the simulation's lid
  * Action Units in the face's overlay, so blinks happen on the skin, through the lid muscles, on top of whatever the
@@ -44,8 +44,9 @@ export class EyeDriver implements FaceEyes {
   /** The gaze last shown (NaN: none yet), so that a held fixation draws nothing. */
   private shownYaw = Number.NaN;
   private shownPitch = Number.NaN;
+  private shownVergence = Number.NaN;
   /** The eye positions' gaze, rewritten every frame. */
-  private readonly asked: Gaze = { yaw: 0, pitch: 0 };
+  private readonly asked: Gaze = { yaw: 0, pitch: 0, vergence: 0 };
 
   /** `units` reads an Action Unit's effective intensity by id (`AU61`), as the expression adds it up. */
   constructor(
@@ -86,7 +87,7 @@ export class EyeDriver implements FaceEyes {
   showGaze(): void {
     actionUnitGaze(this.units, this.asked);
     const s = this.simulation;
-    this.turn(this.asked.yaw + (this.on ? s.yaw : 0), this.asked.pitch + (this.on ? s.pitch : 0));
+    this.turn(this.asked.yaw + (this.on ? s.yaw : 0), this.asked.pitch + (this.on ? s.pitch : 0), this.asked.vergence);
   }
 
   enabled(): boolean {
@@ -111,13 +112,13 @@ export class EyeDriver implements FaceEyes {
    */
   private frame(now: number): boolean {
     actionUnitGaze(this.units, this.asked);
-    if (!this.on) return this.turn(this.asked.yaw, this.asked.pitch);
+    if (!this.on) return this.turn(this.asked.yaw, this.asked.pitch, this.asked.vergence);
     if (Number.isNaN(this.startedAt)) this.startedAt = now;
     const s = this.simulation;
     s.advance(now - this.startedAt);
     const close = this.o.lids ? s.lidClose() : 0;
     const raise = this.o.lids ? s.lidRaise() : 0;
-    const turned = this.turn(this.asked.yaw + s.yaw, this.asked.pitch + s.pitch);
+    const turned = this.turn(this.asked.yaw + s.yaw, this.asked.pitch + s.pitch, this.asked.vergence);
     if (close === this.lidValues[0] && raise === this.lidValues[1]) return turned;
     this.lidValues[0] = close;
     this.lidValues[1] = raise;
@@ -125,15 +126,23 @@ export class EyeDriver implements FaceEyes {
     return true;
   }
 
-  /** Turns both eyes to a gaze (degrees) unless they show it already; returns whether they turned. */
-  private turn(yaw: number, pitch: number): boolean {
-    if (yaw === this.shownYaw && pitch === this.shownPitch) return false;
+  /**
+   * Turns both eyes to a gaze (degrees; `vergence` turns each toward the nose) unless they show it already; returns
+   * whether they turned.
+   */
+  private turn(yaw: number, pitch: number, vergence: number): boolean {
+    if (yaw === this.shownYaw && pitch === this.shownPitch && vergence === this.shownVergence) return false;
     this.shownYaw = yaw;
     this.shownPitch = pitch;
-    // Both eyes turn alike (no vergence): yaw about the head's up axis, then pitch about the turned eye's x axis.
-    this.euler.set(-pitch * DEGREES, yaw * DEGREES, 0);
-    this.rotation.setFromEuler(this.euler);
-    for (let i = 0; i < this.eyes.length; i++) this.eyes[i].quaternion.multiplyQuaternions(this.rotation, this.rest[i]);
+    this.shownVergence = vergence;
+    for (let i = 0; i < this.eyes.length; i++) {
+      // Yaw about the head's up axis, then pitch about the turned eye's x axis; the left eye (+x) turns toward the
+      // nose by turning right.
+      const inward = this.eyes[i].name === 'eye-r' ? vergence : -vergence;
+      this.euler.set(-pitch * DEGREES, (yaw + inward) * DEGREES, 0);
+      this.rotation.setFromEuler(this.euler);
+      this.eyes[i].quaternion.multiplyQuaternions(this.rotation, this.rest[i]);
+    }
     return true;
   }
 

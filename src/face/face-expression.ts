@@ -3,9 +3,12 @@ import { ACTION_UNIT_ID, checkNumber, refusal } from '../core/check';
 import { ExpressionState, isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
 import type { Rig } from '../core/rig/rig-types';
 import type { HashExpression } from './expression-hash';
+import { actionUnitHeadPose, restingHeadPose, type HeadPose } from '../core/expression/head-pose';
 
 /** Where a face's muscle contractions go after every change: the solver, the jaw's teeth, the muscle glyphs. */
 export type ContractionSink = (contractions: Float32Array) => void;
+/** Where a face's head pose (AU51 to AU58) goes when it changes: the solver's neck and the view's head. */
+export type HeadPoseSink = (pose: HeadPose) => void;
 
 /**
  * A face's expression: the Action Unit sliders, preset weights and overlay of its rig, and the muscle contractions
@@ -18,9 +21,15 @@ export class FaceExpression {
   /** A muscle contracted on its own while it is edited (index and contraction), on top of the Action Units. */
   private preview: { index: number; value: number } | null = null;
 
+  /** The head pose last sent, and the one each change computes (reused). */
+  private readonly sentPose = restingHeadPose();
+  private readonly pose = restingHeadPose();
+  private readonly read = (id: string): number => this.state.effectiveOf(id);
+
   constructor(
     private rigNow: Rig,
     private readonly sink: ContractionSink,
+    private readonly poseSink?: HeadPoseSink,
   ) {
     this.state = new ExpressionState(rigNow.presets);
     this.contractions = new Float32Array(rigNow.muscles.length);
@@ -151,6 +160,17 @@ export class FaceExpression {
     const c = this.state.muscleContractions(this.rigNow, this.contractions);
     if (this.preview && this.preview.index < c.length) c[this.preview.index] = Math.max(c[this.preview.index], this.preview.value);
     this.sink(c);
+    if (!this.poseSink) return;
+    const p = actionUnitHeadPose(this.read, this.pose);
+    const s = this.sentPose;
+    if (p.yaw === s.yaw && p.pitch === s.pitch && p.roll === s.roll && p.forward === s.forward) return;
+    Object.assign(s, p);
+    this.poseSink(p);
+  }
+
+  /** The head pose the head positions ask for now (a copy). */
+  headPose(): HeadPose {
+    return { ...actionUnitHeadPose(this.read, this.pose) };
   }
 }
 

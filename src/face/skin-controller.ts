@@ -15,7 +15,7 @@ export class SkinController {
     return this.parts.running().settle(timeoutMs);
   }
 
-  /** A copy of the skin's newest solved shape. */
+  /** A copy of the skin's newest solved shape, in the head's own frame (before the head positions turn it, see `getHeadPose`). */
   getSkin(): SkinSnapshot {
     const simulation = this.parts.running();
     const positions = new Float32Array(simulation.rest.length);

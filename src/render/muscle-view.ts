@@ -80,15 +80,19 @@ export class MuscleView {
   private visibleNames: ReadonlySet<string> | 'all' | 'none' = 'none';
   private highlighted: string | null = null;
 
+  /** Moves the glyphs with the skin: `frame` maps the rig's frame to the scene's (the skin's world matrix). */
+  setFrame(frame: Matrix4): void {
+    this.group.matrix.copy(frame);
+    this.group.matrixWorldNeedsUpdate = true;
+  }
+
   /** `muscles` are positioned in the frame `frame` maps to the scene's (the skin's world matrix). */
   constructor(muscles: readonly Muscle[], frame?: Matrix4) {
     this.group.name = 'muscles';
     this.group.visible = false;
-    if (frame) {
-      // The head does not move, so the frame is set once rather than recomputed per frame.
-      this.group.matrixAutoUpdate = false;
-      this.group.matrix.copy(frame);
-    }
+    // The frame changes only when the head turns (setFrame), so it is set then rather than recomputed per frame.
+    this.group.matrixAutoUpdate = false;
+    if (frame) this.group.matrix.copy(frame);
     this.shapes = {
       sphere: this.keep(new SphereGeometry(1, 10, 8)),
       rod: this.keep(new CylinderGeometry(1, 1, 1, 8, 1)),

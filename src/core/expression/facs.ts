@@ -25,7 +25,9 @@ export interface ActionUnitInfo {
  * - AU18 pucker, AU23 lip tightener, AU24 lip pressor: the orbicularis oris is one ring around the mouth, modelled as
  *   one sphincter per action; FACS allows scoring 23 and 24 on one side, but this rig cannot produce it.
  * - AU25 lips part, AU26 jaw drop, AU27 mouth stretch: the lips and the jaw open as one.
- * - AU61 to AU64, the eye positions (eyes turn left, right, up, down): both eyes turn together. They turn the
+ * - AU51 to AU58, the head positions (turn, up and down, tilt, forward and back): the head turns about the neck as
+ *   a whole, and the neck's skin is solved under it (see head-pose.ts and neck-carry.ts).
+ * - AU61 to AU66, the eye positions (eyes turn left, right, up, down, out, in): both eyes turn together. They turn the
  *   eyeballs (see gaze.ts); the upper lids follow the eyes up and down through the rig's lid muscles.
  * Bilateral, because FACS scores them on one side and the thesis or the prototypes need it: 1, 2, 4, 5, 6, 7
  * (winks, one raised brow, a squint), 10, 12, 14, 15, 16, 20 (contempt is R12A + R14A) and 43 (one eye closed); the
@@ -67,10 +69,20 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [44, 'squint', true],
       [45, 'blink', true],
       [46, 'wink', true],
+      [51, 'head turn left', false],
+      [52, 'head turn right', false],
+      [53, 'head up', false],
+      [54, 'head down', false],
+      [55, 'head tilt left', false],
+      [56, 'head tilt right', false],
+      [57, 'head forward', false],
+      [58, 'head back', false],
       [61, 'eyes turn left', false],
       [62, 'eyes turn right', false],
       [63, 'eyes up', false],
       [64, 'eyes down', false],
+      [65, 'walleye', false],
+      [66, 'cross-eye', false],
     ] as const
   ).map(([n, name, bilateral]) => Object.freeze({ id: `AU${n}`, number: n, name, bilateral })),
 );

@@ -5,6 +5,7 @@
 
 import { ACTION_UNIT_ID, refusal } from '../check';
 import { isActionUnitId } from './facs';
+import { HEAD_POSITION_UNITS } from './head-pose';
 import {
   createTimelineSample,
   PRESET_TARGET_PREFIX,
@@ -50,6 +51,12 @@ export function planTargets(
   const names = new Set<string>();
   for (const id of actionUnits) {
     if (typeof id !== 'string' || !isActionUnitId(id)) throw refusal(what, 'actionUnits', ACTION_UNIT_ID, id);
+    if (HEAD_POSITION_UNITS.includes(id)) {
+      throw new Error(
+        `${what}: actionUnits: ${id} is a head position, which turns the whole head rather than shaping the skin; ` +
+          'a morph target cannot hold it',
+      );
+    }
     if (names.has(id)) throw new Error(`${what}: actionUnits: ${id} is listed twice`);
     names.add(id);
     targets.push({ name: id, kind: 'actionUnit', id });
@@ -102,6 +109,8 @@ export function timelineTargets(timeline: Timeline): MorphTarget[] {
       add('preset', name.slice(PRESET_TARGET_PREFIX.length));
       continue;
     }
+    // A head position turns the whole head, which no morph target holds.
+    if (HEAD_POSITION_UNITS.includes(name)) continue;
     const unit = unitOf(name);
     if (unit !== null && sided.has(unit)) {
       add('actionUnit', `${unit}L`);

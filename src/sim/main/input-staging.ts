@@ -1,3 +1,4 @@
+import type { HeadPose } from '../../core/expression/head-pose';
 import { clamp01 } from '../../core/math3';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from '../../core/solver/muscle-inputs';
 import { checkOptions } from '../../core/check';
@@ -9,6 +10,7 @@ import {
   CONTROL_PARAMETER_REVISION,
   CONTROL_RIG_REVISION,
   readParameters,
+  writeHeadPose,
   writeParameters,
   type ControlViews,
 } from '../shared/layout';
@@ -18,7 +20,7 @@ export interface ChangedInputs {
   /** Muscle targets and weights set directly. */
   muscles: boolean;
   parameters: boolean;
-  /** The rig's muscle contractions. */
+  /** The rig's muscle contractions or the head pose. */
   contractions: boolean;
 }
 
@@ -95,6 +97,21 @@ export class InputStaging {
     this.begin();
     for (let i = 0; i < values.length; i++) C[i] = clamp01(values[i]);
     C.fill(0, count);
+    Atomics.add(this.control.words, CONTROL_CONTRACTION_REVISION, 1);
+    this.contractionsChanged = true;
+  }
+
+  /**
+   * Sets the head pose (see head-pose.ts) the neck is solved for; published with the contractions. Throws, changing
+   * nothing, on a value that is not finite.
+   */
+  setHeadPose(pose: HeadPose): void {
+    for (const key of ['yaw', 'pitch', 'roll', 'forward'] as const) {
+      if (typeof pose[key] !== 'number' || !Number.isFinite(pose[key]))
+        throw new Error(`setHeadPose: ${key} is not a finite number: ${pose[key]}`);
+    }
+    this.begin();
+    writeHeadPose(pose, this.control.headPose);
     Atomics.add(this.control.words, CONTROL_CONTRACTION_REVISION, 1);
     this.contractionsChanged = true;
   }

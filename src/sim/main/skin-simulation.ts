@@ -1,3 +1,4 @@
+import type { HeadPose } from '../../core/expression/head-pose';
 import type { Collider } from '../../core/solver/colliders';
 import { validateMuscle } from '../../core/rig/muscle-validation';
 import type { Muscle } from '../../core/rig/rig-types';
@@ -190,6 +191,15 @@ export class SkinSimulation {
   setContractions(values: ArrayLike<number>): void {
     this.checkAlive();
     this.staging.setContractions(values);
+  }
+
+  /**
+   * Sets the head pose (AU51 to AU58, see head-pose.ts) the neck is solved for: its base turns by the inverse pose
+   * (see neck-carry.ts). Throws, changing nothing, on a value that is not finite.
+   */
+  setHeadPose(pose: HeadPose): void {
+    this.checkAlive();
+    this.staging.setHeadPose(pose);
   }
 
   /**

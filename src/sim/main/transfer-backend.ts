@@ -32,11 +32,17 @@ export class TransferBackend implements SolverBackend {
     const normalWeights = muscles ? this.control.normalWeights.slice() : undefined;
     const params = parameters ? this.control.parameters.slice() : undefined;
     const muscleContractions = contractions ? this.control.contractions.slice() : undefined;
-    const transfer = [targets?.buffer, weights?.buffer, normalWeights?.buffer, params?.buffer, muscleContractions?.buffer].filter(
-      (b): b is ArrayBuffer => b !== undefined,
-    );
+    const headPose = contractions ? this.control.headPose.slice() : undefined;
+    const transfer = [
+      targets?.buffer,
+      weights?.buffer,
+      normalWeights?.buffer,
+      params?.buffer,
+      muscleContractions?.buffer,
+      headPose?.buffer,
+    ].filter((b): b is ArrayBuffer => b !== undefined);
     this.connection.post(
-      { type: 'inputs', seq, targets, weights, normalWeights, parameters: params, contractions: muscleContractions },
+      { type: 'inputs', seq, targets, weights, normalWeights, parameters: params, contractions: muscleContractions, headPose },
       transfer,
     );
   }

@@ -31,6 +31,7 @@ export class ControlReader {
   private parameterRevision = 0;
   private contractionRevision = 0;
   private readonly contractions: Float32Array;
+  private readonly headPose: Float32Array;
   private readonly targets: Float32Array;
   private readonly weights: Float32Array;
   private readonly normalWeights: Float32Array;
@@ -44,6 +45,7 @@ export class ControlReader {
     this.weights = new Float32Array(control.weights.length);
     this.normalWeights = new Float32Array(control.normalWeights.length);
     this.contractions = new Float32Array(control.contractions.length);
+    this.headPose = new Float32Array(control.headPose.length);
   }
 
   /** True if a batch was published that is not applied yet. */
@@ -98,14 +100,23 @@ export class ControlReader {
       this.normalWeights.set(this.control.normalWeights);
     }
     if (parameters) this.parameters.set(this.control.parameters);
-    if (contractions) this.contractions.set(this.control.contractions);
+    if (contractions) {
+      this.contractions.set(this.control.contractions);
+      this.headPose.set(this.control.headPose);
+    }
     if (Atomics.load(words, CONTROL_INPUT_SEQ) !== seq) return false;
     this.appliedSeq = seq;
     this.muscleRevision = muscleRevision;
     this.parameterRevision = parameterRevision;
     this.contractionRevision = contractionRevision;
     const muscleInput = muscles ? { targets: this.targets, weights: this.weights, normalWeights: this.normalWeights } : null;
-    this.host.apply(seq, muscleInput, parameters ? this.parameters : null, contractions ? this.contractions : null);
+    this.host.apply(
+      seq,
+      muscleInput,
+      parameters ? this.parameters : null,
+      contractions ? this.contractions : null,
+      contractions ? this.headPose : null,
+    );
     return true;
   }
 }

@@ -5,11 +5,12 @@
  * Control block (main thread writes, solver reads): an Int32 header, the skin parameters as Float64 (so a parameter
  * reaches the solver exactly as given, as it does in `main` mode), then the muscle targets and weights (along the surface and along the
  * normal) as Float32
- * (the solver's own precision).
+ * (the solver's own precision), the rig's contractions and the head pose (HEAD_POSE_SLOTS floats).
  *
  * Output block (solver writes, main thread reads): an Int32 header, then two frame slots. Each slot has its own
  * header (frame number, sleep state, solve time, bounds...) so that metadata always matches the vertices beside it.
  */
+import type { HeadPose } from '../../core/expression/head-pose';
 import { MAX_RIG_MUSCLES } from '../../core/rig/rig-schema';
 import type { SkinParameters } from '../../core/solver/skin-parameters';
 import type { ConstraintCounts } from '../../core/solver/solver-buffers';
@@ -58,6 +59,7 @@ export interface ControlLayout {
   normalWeightsByteOffset: number;
   muscleCount: number;
   contractionsByteOffset: number;
+  headPoseByteOffset: number;
   byteLength: number;
 }
 
@@ -67,6 +69,26 @@ export interface ControlLayout {
  */
 export function contractionCapacity(muscleCount: number): number {
   return Math.max(muscleCount, MAX_RIG_MUSCLES);
+}
+
+/** Floats of the head pose in the control block: yaw, pitch, roll (degrees) and forward (metres); see head-pose.ts. */
+export const HEAD_POSE_SLOTS = 4;
+
+/** Writes a head pose into its control-block view (HEAD_POSE_SLOTS floats). */
+export function writeHeadPose(pose: HeadPose, into: Float32Array): void {
+  into[0] = pose.yaw;
+  into[1] = pose.pitch;
+  into[2] = pose.roll;
+  into[3] = pose.forward;
+}
+
+/** Reads a head pose from its control-block view into `out`, and returns it. */
+export function readHeadPose(from: ArrayLike<number>, out: HeadPose): HeadPose {
+  out.yaw = from[0];
+  out.pitch = from[1];
+  out.roll = from[2];
+  out.forward = from[3];
+  return out;
 }
 
 export function controlLayout(vertexCount: number, muscleCount = 0): ControlLayout {
@@ -82,7 +104,8 @@ export function controlLayout(vertexCount: number, muscleCount = 0): ControlLayo
     normalWeightsByteOffset,
     muscleCount,
     contractionsByteOffset: normalWeightsByteOffset + 4 * vertexCount,
-    byteLength: align(normalWeightsByteOffset + 4 * vertexCount + 4 * muscleCount, 16),
+    headPoseByteOffset: normalWeightsByteOffset + 4 * vertexCount + 4 * muscleCount,
+    byteLength: align(normalWeightsByteOffset + 4 * vertexCount + 4 * (muscleCount + HEAD_POSE_SLOTS), 16),
   };
 }
 
@@ -95,6 +118,8 @@ export interface ControlViews {
   normalWeights: Float32Array;
   /** Contraction of each rig muscle, 0..1, in the rig's muscle order (the rig may use fewer than there are). */
   contractions: Float32Array;
+  /** The head pose (see HEAD_POSE_SLOTS), changed with the contractions' revision. */
+  headPose: Float32Array;
 }
 
 export function controlViews(buffer: ArrayBufferLike, layout: ControlLayout): ControlViews {
@@ -106,6 +131,7 @@ export function controlViews(buffer: ArrayBufferLike, layout: ControlLayout): Co
     weights: new Float32Array(buffer, layout.weightsByteOffset, n),
     normalWeights: new Float32Array(buffer, layout.normalWeightsByteOffset, n),
     contractions: new Float32Array(buffer, layout.contractionsByteOffset, layout.muscleCount),
+    headPose: new Float32Array(buffer, layout.headPoseByteOffset, HEAD_POSE_SLOTS),
   };
 }
 
@@ -116,6 +142,7 @@ export function initControl(views: ControlViews, rest: Float32Array, parameters:
   views.weights.fill(0);
   views.normalWeights.fill(0);
   views.contractions.fill(0);
+  views.headPose.fill(0);
   writeParameters(parameters, views.parameters);
 }
 

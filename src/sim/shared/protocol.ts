@@ -57,6 +57,8 @@ export interface InputsMessage {
   normalWeights?: Float32Array;
   parameters?: Float64Array;
   contractions?: Float32Array;
+  /** The head pose (see HEAD_POSE_SLOTS in layout.ts), sent with the contractions. */
+  headPose?: Float32Array;
 }
 
 /** Worker to main (`transfer` mode): a solved frame's slot. Main to worker: a slot it no longer needs. */

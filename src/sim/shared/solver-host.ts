@@ -2,6 +2,8 @@ import type { Collider } from '../../core/solver/colliders';
 import type { RigEdit } from './protocol';
 import { JawFollower } from '../../core/rig/jaw-follower';
 import { MuscleRig } from '../../core/rig/muscles';
+import { NeckCarry } from '../../core/rig/neck-carry';
+import { isRestingPose, restingHeadPose } from '../../core/expression/head-pose';
 import { mulberry32 } from '../../core/random';
 import type { Muscle } from '../../core/rig/rig-types';
 import type { Memory } from '../../core/solver/memory';
@@ -13,6 +15,7 @@ import { buildTopology, describeTopology, type SkinTopology } from '../../core/s
 import {
   CONSTRAINT_INDEX,
   CONSTRAINT_KINDS,
+  readHeadPose,
   readParameters,
   writeFrameHeader,
   writeSlotBounds,
@@ -57,6 +60,10 @@ export class SolverHost {
   readonly solver: SkinSolver;
   /** Turns contractions into the solver's muscle targets and weights; absent without muscles. */
   private rig: MuscleRig | undefined;
+  /** The neck's pull under a turned head (AU51 to AU58); null for a skin without a neck cut. */
+  readonly neck: NeckCarry | null;
+  /** The head pose last applied. */
+  private readonly headPose = restingHeadPose();
   /** Moves the lower teeth's colliders with the jaw muscle; null without a jaw or lower teeth. */
   private jaw: JawFollower | null;
   /** The rig edits applied so far (see RigMessage). */
@@ -82,6 +89,7 @@ export class SolverHost {
       memory: input.memory,
     });
     this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
+    this.neck = NeckCarry.create(this.topology.rest, this.topology.triangles);
     this.colliders = input.colliders;
     this.activeRegion = input.activeRegion;
     this.restColliders = structuredClone(input.colliders);
@@ -92,8 +100,17 @@ export class SolverHost {
     this.countConstraints();
   }
 
-  /** Applies one input batch (null parts did not change), as of input sequence number `seq`. */
-  apply(seq: number, muscles: MuscleInputs | null, parameters: Float64Array | null, contractions: Float32Array | null = null): void {
+  /**
+   * Applies one input batch (null parts did not change), as of input sequence number `seq`. `headPose` (see
+   * HEAD_POSE_SLOTS in layout.ts) comes with the contractions; without it the pose stays.
+   */
+  apply(
+    seq: number,
+    muscles: MuscleInputs | null,
+    parameters: Float64Array | null,
+    contractions: Float32Array | null = null,
+    headPose: Float32Array | null = null,
+  ): void {
     if (muscles) {
       this.solver.buffers.targets.set(muscles.targets);
       this.solver.buffers.weights.set(muscles.weights);
@@ -102,6 +119,7 @@ export class SolverHost {
     }
     // Rig contractions replace directly set targets: the rig computes every vertex's target and weights. The block
     // holds room for more muscles than the rig may have now; the rig's come first.
+    if (headPose) readHeadPose(headPose, this.headPose);
     if (contractions && this.rig) {
       this.contractions = Float32Array.from(contractions.subarray(0, this.rig.muscles.length));
       this.computeMuscles();
@@ -221,6 +239,7 @@ export class SolverHost {
     if (!this.rig || !this.contractions) return;
     this.jaw?.update(this.contractions);
     this.rig.compute(this.contractions, this.solver.buffers);
+    if (this.neck && !isRestingPose(this.headPose)) this.neck.apply(this.headPose, this.solver.buffers);
     this.solver.updateMuscles();
   }
 

@@ -42,7 +42,7 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
     else if (m.type === 'inputs') {
       const muscles =
         m.targets && m.weights && m.normalWeights ? { targets: m.targets, weights: m.weights, normalWeights: m.normalWeights } : null;
-      host?.apply(m.seq, muscles, m.parameters ?? null, m.contractions ?? null);
+      host?.apply(m.seq, muscles, m.parameters ?? null, m.contractions ?? null, m.headPose ?? null);
       schedule();
     } else if (m.type === 'rig') {
       host?.editRig(m.revision, m.edit);
