@@ -23,7 +23,9 @@ function pngSize(file: string): [number, number] {
   return [b.readUInt32BE(16), b.readUInt32BE(20)];
 }
 
-test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a second run skips what is there', async ({ page }) => {
+test('a 6-stimulus batch writes its pictures, an EMFACS face, its clip and its manifest, and a second run skips what is there', async ({
+  page,
+}) => {
   test.setTimeout(240_000);
   const dir = mkdtempSync(join(tmpdir(), 'softface-stimuli-'));
   const list = join(dir, 'list.json');
@@ -46,6 +48,7 @@ test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a s
           },
           fps: 5,
         },
+        { name: 'emfacs', emotion: 'surprise-prototype-1' },
       ],
     }),
   );
@@ -59,8 +62,19 @@ test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a s
   expect([...webm.subarray(0, 4)]).toEqual([0x1a, 0x45, 0xdf, 0xa3]);
   expect(webm.length).toBeGreaterThan(1000);
   const manifest = readFileSync(join(out, 'manifest.csv'), 'utf8').trim().split('\n');
-  expect(manifest[0]).toBe('file,name,format,expression,timeline,intensity,light,camera,resolution,identity,width,height,fps');
-  expect(manifest.slice(1).map((row) => row.split(',')[0])).toEqual([...files, 'brows_i1_l0_c0_low.webm']);
+  expect(manifest[0]).toBe('file,name,format,expression,emotion,timeline,intensity,light,camera,resolution,identity,width,height,fps');
+  expect(manifest.slice(1).map((row) => row.split(',')[0])).toEqual([
+    ...files,
+    'brows_i1_l0_c0_low.webm',
+    'emfacs_surprise-prototype-1_i1_l0_c0_low.png',
+  ]);
+  // The EMFACS face: its code's units set, named in the manifest.
+  expect(first).toContain('wrote emfacs_surprise-prototype-1_i1_l0_c0_low.png');
+  expect(manifest[6]).toContain('surprise-prototype-1 (1+2+5B+26)');
+  const surprise = (
+    await comparePictures(page, readFileSync(join(out, files[0])), readFileSync(join(out, 'emfacs_surprise-prototype-1_i1_l0_c0_low.png')))
+  ).mean;
+  expect(surprise).toBeGreaterThan(0.2);
   expect(manifest[4]).toContain('"{""yaw"":40,""distance"":0.7}"');
 
   // The pictures are of what the list asked: the stronger smile and the other camera each change the picture.
@@ -74,11 +88,11 @@ test('a 5-stimulus batch writes its pictures, its clip and its manifest, and a s
   expect(differs.camera).toBeGreaterThan(2);
 
   // Run again: every file is there, so nothing is rendered and nothing is touched.
-  const all = [...files, 'brows_i1_l0_c0_low.webm'];
+  const all = [...files, 'brows_i1_l0_c0_low.webm', 'emfacs_surprise-prototype-1_i1_l0_c0_low.png'];
   const times = all.map((f) => statSync(join(out, f)).mtimeMs);
   const second = await stimuli(list, out);
   expect(second).not.toContain('wrote ');
-  expect(second).toMatch(/5 skipped/);
+  expect(second).toMatch(/6 skipped/);
   expect(all.map((f) => statSync(join(out, f)).mtimeMs)).toEqual(times);
   rmSync(dir, { recursive: true, force: true });
 });

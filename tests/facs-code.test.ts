@@ -35,8 +35,11 @@ describe('FACS codes', () => {
     };
     expect(refused('1+2+99')).toMatch(/^setFACS: at 5 of "1\+2\+99": expected an Action Unit the face has \(1, 2, 4, .*\), got "99"$/);
     expect(refused('1++2')).toMatch(/^setFACS: at 3 of "1\+\+2": expected a unit on each side of every plus sign/);
-    expect(refused('+1')).toMatch(/^setFACS: at 1 of /);
-    expect(refused('1+')).toMatch(/^setFACS: at 3 of /);
+    // A code that starts or ends with a plus sign: that sign's place.
+    expect(refused('+1')).toMatch(/^setFACS: at 1 of "\+1": expected a unit on each side/);
+    expect(refused('12+')).toMatch(/^setFACS: at 3 of "12\+": expected a unit on each side/);
+    expect(refused('1+2+ ')).toMatch(/^setFACS: at 4 of "1\+2\+ ": expected a unit on each side/);
+    expect(refused('1+')).toMatch(/^setFACS: at 2 of /);
     expect(refused('L17')).toMatch(/^setFACS: at 1 of "L17": expected 17 without a side .*, got "L17"$/);
     expect(refused('12+L12')).toMatch(/^setFACS: at 4 of "12\+L12": expected AU12 once per side, got "L12"$/);
     expect(refused('6 12X')).toMatch(/^setFACS: at 3 of "6 12X": expected a unit like 12, 12C, L12 or R12B, got "12X"$/);

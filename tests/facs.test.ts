@@ -53,15 +53,16 @@ function contractions(state: ExpressionState, rig: Rig = SMALL_RIG): Record<stri
 }
 
 describe('the Action Unit catalogue', () => {
-  it('has the 44 Action Units, with midline ones 9, 17, 18, 23 to 27, the head positions 51 to 58 and the eye positions 61 to 66', () => {
+  it('has the 45 Action Units, with midline ones 9, 17, 18, 22 to 27, the head positions 51 to 58 and the eye positions 61 to 66', () => {
     expect(ACTION_UNITS.map((a) => a.number)).toEqual([
-      1, 2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 20, 23, 24, 25, 26, 27, 38, 39, 41, 42, 43, 44, 45, 46, 51, 52, 53, 54, 55,
-      56, 57, 58, 61, 62, 63, 64, 65, 66,
+      1, 2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 20, 22, 23, 24, 25, 26, 27, 38, 39, 41, 42, 43, 44, 45, 46, 51, 52, 53, 54,
+      55, 56, 57, 58, 61, 62, 63, 64, 65, 66,
     ]);
     expect(ACTION_UNITS.filter((a) => !a.bilateral).map((a) => a.id)).toEqual([
       'AU9',
       'AU17',
       'AU18',
+      'AU22',
       'AU23',
       'AU24',
       'AU25',
@@ -152,7 +153,7 @@ describe('ExpressionState sliders', () => {
 
   it('lists the Action Units with their sides', () => {
     const list = new ExpressionState().listActionUnits();
-    expect(list).toHaveLength(44);
+    expect(list).toHaveLength(45);
     expect(list.find((a) => a.id === 'AU12')).toEqual({ id: 'AU12', number: 12, name: 'lip corner puller', sides: ['L', 'R'] });
     expect(list.find((a) => a.id === 'AU17')).toEqual({ id: 'AU17', number: 17, name: 'chin raiser', sides: ['M'] });
   });

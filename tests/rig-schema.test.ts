@@ -42,7 +42,7 @@ describe('the default rig (public/rigs/default.json)', () => {
   it('parses, with muscles, Action Units and presets', () => {
     expect(rig.format).toBe('softface-rig');
     expect(rig.muscles.length).toBeGreaterThan(30);
-    expect(rig.actionUnits).toHaveLength(32);
+    expect(rig.actionUnits).toHaveLength(33);
     expect(rig.presets.map((p) => p.name)).toEqual(
       expect.arrayContaining([
         'thesis-happiness',

@@ -1,6 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { expandStimulusList, scaleTimeline, stimulusManifest, StimulusListError } from '../scripts/stimuli/stimulus-list';
+import { emotionVariants } from '../src/core/expression/emfacs';
 
 const base = { format: 'softface-stimuli', version: 1 };
 
@@ -101,7 +102,7 @@ describe('stimulus lists', () => {
           'ambientIntensity, keyAzimuth, keyElevation, keyIntensity, keyColor, got "keyColour"',
         'list.json: stimuli[1].camera[0]: yaw: expected a number from -180 to 180, got 400',
         'list.json: stimuli[1].name: a second stimulus named "a"',
-        'list.json: stimuli[2]: expected either an expression (a PNG) or a timeline (a WebM)',
+        'list.json: stimuli[2]: expected one of an expression or an emotion (PNGs) or a timeline (a WebM)',
       ].join('\n'),
     );
   });
@@ -130,15 +131,37 @@ describe('stimulus lists', () => {
     ).toThrow('list.json: stimuli[0].identity[1]: sex: expected a number from 0 to 1, got 2');
   });
 
+  it('an emotion entry renders every face of the EMFACS table it names, each named after its face', () => {
+    const stimuli = expandStimulusList({ ...base, stimuli: [{ name: 'fear', emotion: 'fear', intensity: [0.5, 1] }] });
+    const faces = stimuli.filter((s) => s.intensity === 1);
+    expect(faces.map((s) => s.emotion!.name)).toEqual(emotionVariants('fear').map((v) => v.name));
+    expect(faces.length).toBeGreaterThan(10);
+    expect(stimuli[0]).toMatchObject({
+      file: 'fear_fear-prototype-1_i0.5_l0_c0_medium.png',
+      emotion: { name: 'fear-prototype-1', code: '1+2+4+5+20+25' },
+      expression: { AU1: 0.5, AU2: 0.5, AU4: 0.5, AU5: 0.5, AU20: 0.5, AU25: 0.5 },
+    });
+    expect(stimulusManifest(stimuli).split('\n')[1]).toContain(',fear-prototype-1 (1+2+4+5+20+25),no,0.5,');
+    // A list of selectors: a kind and one face, each face once.
+    const picked = expandStimulusList({
+      ...base,
+      stimuli: [{ name: 's', emotion: ['surprise:prototype', 'surprise-prototype-1', 'happiness-prototype-2'] }],
+    });
+    expect(picked.map((s) => s.emotion!.code)).toEqual(['1+2+5B+26', '1+2+5B+27', '12C']);
+    expect(() => expandStimulusList({ ...base, stimuli: [{ name: 's', emotion: ['fear', 'joy'] }] }, 'list.json')).toThrow(
+      /^list\.json: stimuli\[0\]\.emotion\[1\]: expected an emotion \(surprise, fear, \.\.\.\), .*, got "joy"$/,
+    );
+  });
+
   it('the manifest has a row per stimulus with what it was made from', () => {
     const stimuli = expandStimulusList({
       ...base,
       stimuli: [{ name: 'smile', expression: { AU12: 1 }, light: [{}, { keyColor: '#ff0000', keyIntensity: 2 }] }],
     });
     expect(stimulusManifest(stimuli).split('\n')).toEqual([
-      'file,name,format,expression,timeline,intensity,light,camera,resolution,identity,width,height,fps',
-      'smile_i1_l0_c0_medium.png,smile,png,"{""AU12"":1}",no,1,{},{},medium,,512,512,25',
-      'smile_i1_l1_c0_medium.png,smile,png,"{""AU12"":1}",no,1,"{""keyColor"":""#ff0000"",""keyIntensity"":2}",{},medium,,512,512,25',
+      'file,name,format,expression,emotion,timeline,intensity,light,camera,resolution,identity,width,height,fps',
+      'smile_i1_l0_c0_medium.png,smile,png,"{""AU12"":1}",,no,1,{},{},medium,,512,512,25',
+      'smile_i1_l1_c0_medium.png,smile,png,"{""AU12"":1}",,no,1,"{""keyColor"":""#ff0000"",""keyIntensity"":2}",{},medium,,512,512,25',
       '',
     ]);
   });

@@ -7,6 +7,8 @@
 
 import * as v from 'valibot';
 import { isActionUnitId } from '../../src/core/expression/facs';
+import { emotionVariants } from '../../src/core/expression/emfacs';
+import { facsIntensities } from '../../src/core/expression/facs-code';
 import { pathStep, problemOf, type RigProblem } from '../../src/core/rig/rig-problems';
 import { parseTimeline, TimelineError } from '../../src/core/timeline/timeline-schema';
 import { PRESET_TARGET_PREFIX, type Timeline } from '../../src/core/timeline/timeline';
@@ -36,6 +38,8 @@ export interface Stimulus {
   format: 'png' | 'webm';
   /** Action Unit ids and `preset:<name>` weights, already scaled by the intensity (PNG). */
   expression: Record<string, number> | null;
+  /** The EMFACS face the expression is (its name and FACS code), or null for an expression or timeline given whole. */
+  emotion: { name: string; code: string } | null;
   /** The timeline with every value scaled by the intensity (WebM). */
   timeline: Timeline | null;
   intensity: number;
@@ -122,6 +126,7 @@ const Entry = v.strictObject(
       ),
     ),
     timeline: v.optional(v.unknown()),
+    emotion: v.optional(oneOrMore(v.string('expected an emotion, an emotion and kind, or a face of the EMFACS table'))),
     ...Settings,
   },
   'unknown field',
@@ -157,10 +162,22 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
   const seen = new Set<string>();
   doc.stimuli.forEach((entry, e) => {
     const at = (...keys: (string | number)[]): string => ['stimuli', e, ...keys].map((k, i) => pathStep(k, i === 0)).join('');
-    if ((entry.expression === undefined) === (entry.timeline === undefined)) {
-      problems.push({ path: at(), message: 'expected either an expression (a PNG) or a timeline (a WebM)' });
+    const given = [entry.expression, entry.timeline, entry.emotion].filter((x) => x !== undefined).length;
+    if (given !== 1) {
+      problems.push({ path: at(), message: 'expected one of an expression or an emotion (PNGs) or a timeline (a WebM)' });
       return;
     }
+    // The EMFACS faces the entry names, each an expression of its own (one PNG per face and combination).
+    const faces: ({ name: string; code: string; expression: Record<string, number> } | null)[] = [];
+    (entry.emotion ?? []).forEach((selector, k) => {
+      try {
+        for (const f of emotionVariants(selector, 'emotion'))
+          if (!faces.some((g) => g?.name === f.name)) faces.push({ name: f.name, code: f.code, expression: facsIntensities(f.code) });
+      } catch (error) {
+        problems.push({ path: at('emotion', k), message: (error as Error).message.replace(/^emotion: /, '') });
+      }
+    });
+    if (faces.length === 0) faces.push(null);
     for (const id of Object.keys(entry.expression ?? {})) {
       const known = id.startsWith(PRESET_TARGET_PREFIX) ? id.length > PRESET_TARGET_PREFIX.length : isActionUnitId(id);
       if (!known) problems.push({ path: at('expression', id), message: `expected an Action Unit or a preset, got ${JSON.stringify(id)}` });
@@ -213,34 +230,37 @@ export function expandStimulusList(json: unknown, source = 'stimuli'): Stimulus[
       if (timeline && (merged[side] ?? 512) % 2 === 1)
         problems.push({ path: at(side), message: `a video needs an even ${side}, got ${merged[side]}` });
     }
-    for (const i of list(merged.intensity, [1])) {
-      for (let l = 0; l < lights.length; l++) {
-        for (let c = 0; c < cameras.length; c++) {
-          for (const resolution of list<Resolution>(merged.resolution, ['medium'])) {
-            for (let p = 0; p < people.length; p++) {
-              if (out.length >= MAX_STIMULI) continue;
-              // Named by the person's place in the list only where a list of people was given.
-              const person = merged.identity === undefined ? '' : `_p${p}`;
-              out.push({
-                file: `${entry.name}_i${i}_l${l}_c${c}_${resolution}${person}.${format}`,
-                name: entry.name,
-                format,
-                expression: entry.expression ? Object.fromEntries(Object.entries(entry.expression).map(([id, x]) => [id, x * i])) : null,
-                timeline: timeline ? scaleTimeline(timeline, i) : null,
-                intensity: i,
-                light: lights[l] as Partial<LightOptions>,
-                camera: cameras[c] as Partial<CameraOptions>,
-                resolution,
-                identity: people[p],
-                width: merged.width ?? 512,
-                height: merged.height ?? 512,
-                fps: merged.fps ?? 25,
-              });
+    for (const face of faces)
+      for (const i of list(merged.intensity, [1])) {
+        for (let l = 0; l < lights.length; l++) {
+          for (let c = 0; c < cameras.length; c++) {
+            for (const resolution of list<Resolution>(merged.resolution, ['medium'])) {
+              for (let p = 0; p < people.length; p++) {
+                if (out.length >= MAX_STIMULI) continue;
+                // Named by the person's place in the list only where a list of people was given.
+                const person = merged.identity === undefined ? '' : `_p${p}`;
+                const expression = face?.expression ?? entry.expression;
+                out.push({
+                  file: `${entry.name}${face ? `_${face.name}` : ''}_i${i}_l${l}_c${c}_${resolution}${person}.${format}`,
+                  name: entry.name,
+                  format,
+                  expression: expression ? Object.fromEntries(Object.entries(expression).map(([id, x]) => [id, x * i])) : null,
+                  emotion: face && { name: face.name, code: face.code },
+                  timeline: timeline ? scaleTimeline(timeline, i) : null,
+                  intensity: i,
+                  light: lights[l] as Partial<LightOptions>,
+                  camera: cameras[c] as Partial<CameraOptions>,
+                  resolution,
+                  identity: people[p],
+                  width: merged.width ?? 512,
+                  height: merged.height ?? 512,
+                  fps: merged.fps ?? 25,
+                });
+              }
             }
           }
         }
       }
-    }
   });
   if (out.length >= MAX_STIMULI) problems.push({ path: 'stimuli', message: `expands to more than ${MAX_STIMULI} stimuli` });
   if (problems.length > 0) throw new StimulusListError(source, problems);
@@ -259,6 +279,7 @@ const CSV_COLUMNS = [
   'name',
   'format',
   'expression',
+  'emotion',
   'timeline',
   'intensity',
   'light',
@@ -276,6 +297,8 @@ export function stimulusManifest(stimuli: readonly Stimulus[]): string {
     const text = x === null ? '' : typeof x === 'object' ? JSON.stringify(x) : String(x);
     return /[",\n]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
   };
-  const rows = stimuli.map((s) => CSV_COLUMNS.map((c) => cell(c === 'timeline' ? (s.timeline ? 'yes' : 'no') : s[c])).join(','));
+  const value = (s: Stimulus, c: (typeof CSV_COLUMNS)[number]): unknown =>
+    c === 'timeline' ? (s.timeline ? 'yes' : 'no') : c === 'emotion' ? (s.emotion ? `${s.emotion.name} (${s.emotion.code})` : null) : s[c];
+  const rows = stimuli.map((s) => CSV_COLUMNS.map((c) => cell(value(s, c))).join(','));
   return `${CSV_COLUMNS.join(',')}\n${rows.join('\n')}\n`;
 }

@@ -34,6 +34,7 @@ export type { Easing, Timeline, TimelineAction, TimelineKey, TimelineTrack } fro
 export type { TimelineError } from '../core/timeline/timeline-schema';
 export type { ActionUnitListing, PresetListing, SideCode } from '../core/expression/facs';
 export type { HeadPose } from '../core/expression/head-pose';
+export { EMOTIONS, type Emotion, type EmotionVariant } from '../core/expression/emfacs';
 export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 export type { SkinParameters } from '../core/solver/skin-parameters';
 export type {

@@ -1,3 +1,4 @@
+import { EMFACS, emotionVariants, type EmotionVariant } from '../core/expression/emfacs';
 import type { HeadPose } from '../core/expression/head-pose';
 import { checkNumber, refusal } from '../core/check';
 import { isActionUnitId, type ActionUnitListing, type PresetListing } from '../core/expression/facs';
@@ -56,6 +57,26 @@ export class ExpressionController {
    */
   getFACS(): string {
     return facsCode(this.parts.expressed().expressionIntensities());
+  }
+
+  /**
+   * The faces of the EMFACS table (see `setEmotion`) a selector names: an emotion (`"fear"`: its prototypes, then its
+   * major variants), an emotion and a kind (`"fear:prototype"`), or one face (`"fear-prototype-2"`); all of them
+   * without a selector. Each has its name, emotion, kind, FACS code and source. A selector it does not know throws.
+   */
+  listEmotionVariants(selector?: string): EmotionVariant[] {
+    return selector === undefined ? [...EMFACS] : emotionVariants(selector, 'listEmotionVariants');
+  }
+
+  /**
+   * Sets the face to an emotion's face from the EMFACS table, as `setFACS` sets its code: one face by name
+   * (`"fear-prototype-2"`, `"anger-variant-3"`), or an emotion's first prototype (`"fear"`, `"fear:variant"` for its
+   * first variant). A selector it does not know throws, naming it, and changes nothing.
+   */
+  setEmotion(selector: string): void {
+    const [face] = emotionVariants(selector, 'setEmotion');
+    if (!face) throw refusal('setEmotion', '', 'an emotion with faces of that kind', selector);
+    this.setFACS(face.code);
   }
 
   /**
@@ -150,6 +171,8 @@ export const EXPRESSION_METHODS = [
   'setExpression',
   'setFACS',
   'getFACS',
+  'setEmotion',
+  'listEmotionVariants',
   'getHeadPose',
   'getEffectiveActionUnits',
   'listActionUnits',

@@ -1,6 +1,7 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import { gradeOf, type Grade } from '../core/expression/facs';
+import { Throttle } from './throttle';
 import type { FaceChange, FaceHandle } from '../face/face-handle';
 import { note } from './note';
 
@@ -37,6 +38,11 @@ export class ActionUnitsPanel {
   /** Why the code typed last was refused, under the field; empty once one is taken. */
   private readonly codeMessage: HTMLDivElement;
   private readonly unsubscribe: () => void;
+  /** Redraws after expression changes, a few times a second while a timeline plays (each redraw reads the face). */
+  private readonly refresh = new Throttle(
+    () => this.showExpression(),
+    () => this.face.timelineState().playing,
+  );
 
   constructor(
     parent: GUI,
@@ -94,6 +100,7 @@ export class ActionUnitsPanel {
   /** Removes the folder and stops following the face. */
   dispose(): void {
     this.unsubscribe();
+    this.refresh.dispose();
     this.folder.destroy();
   }
 
@@ -104,9 +111,15 @@ export class ActionUnitsPanel {
       for (const c of this.muscleControllers) c.updateDisplay();
       return;
     }
-    if (change !== 'expression') return;
-    this.code.facs = this.face.getFACS();
-    this.codeController.updateDisplay();
+    if (change === 'expression') this.refresh.call();
+  }
+
+  /** Shows the expression: the code (unless it is being typed), the sliders and their grades. */
+  private showExpression(): void {
+    if (!this.codeController.domElement.contains(document.activeElement)) {
+      this.code.facs = this.face.getFACS();
+      this.codeController.updateDisplay();
+    }
     this.codeMessage.textContent = '';
     Object.assign(this.values, this.face.getActionUnits());
     for (const slider of this.sliders) {

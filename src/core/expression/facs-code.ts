@@ -46,8 +46,13 @@ export function parseFACSCode(code: unknown, what = 'setFACS'): FACSTerm[] {
   if (code.trim() === '' || code.trim() === '0') return terms;
   // Units between plus signs (each part may hold several, apart by spaces); an empty part is a stray plus sign.
   let start = 0;
-  for (const part of code.split('+')) {
-    if (part.trim() === '') throw refusal(what, `at ${start + 1} of ${show(code)}`, 'a unit on each side of every plus sign', part);
+  const parts = code.split('+');
+  for (const [i, part] of parts.entries()) {
+    if (part.trim() === '') {
+      // The stray plus sign: the one after an empty part, or before the last (a code ending in a plus).
+      const at = i === parts.length - 1 ? start : start + part.length + 1;
+      throw refusal(what, `at ${at} of ${show(code)}`, 'a unit on each side of every plus sign', part);
+    }
     for (const m of part.matchAll(/\S+/g)) terms.push(readUnit(m[0], `at ${start + m.index + 1} of ${show(code)}`));
     start += part.length + 1;
   }

@@ -56,6 +56,7 @@ export const ACTION_UNITS: readonly ActionUnitInfo[] = Object.freeze(
       [17, 'chin raiser', false],
       [18, 'lip pucker', false],
       [20, 'lip stretcher', true],
+      [22, 'lip funneler', false],
       [23, 'lip tightener', false],
       [24, 'lip pressor', false],
       [25, 'lips part', false],
