@@ -25,6 +25,7 @@ const CONCERNS = [
   ['skin', 'The skin and its solver'],
   ['view', 'View: panels, camera, light, look, pictures'],
   ['timeline', 'Timeline'],
+  ['live', 'Live input: blendshape streams and OpenFace files'],
   ['eyes', 'Eye simulation'],
   ['export', 'Video and glTF'],
   ['head', 'Heads and people'],

@@ -35,6 +35,7 @@ export type { TimelineError } from '../core/timeline/timeline-schema';
 export type { ActionUnitListing, PresetListing, SideCode } from '../core/expression/facs';
 export type { HeadPose } from '../core/expression/head-pose';
 export { EMOTIONS, type Emotion, type EmotionVariant } from '../core/expression/emfacs';
+export { ARKIT_BLENDSHAPES, type ARKitBlendshape } from '../core/expression/arkit';
 export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 export type { SkinParameters } from '../core/solver/skin-parameters';
 export type {

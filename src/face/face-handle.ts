@@ -6,6 +6,7 @@ import { EYES_METHODS, EyesController } from './eyes-controller';
 import type { FaceParts } from './face-parts';
 import type { FaceChangeListener } from './face-ports';
 import { HEAD_METHODS, HeadController } from './head-controller';
+import { LIVE_METHODS, LiveController } from './live-controller';
 import { RIG_METHODS, RigController } from './rig-controller';
 import { SKIN_METHODS, SkinController } from './skin-controller';
 import { TIMELINE_METHODS, TimelineController } from './timeline-controller';
@@ -34,6 +35,7 @@ export interface FaceControllers {
   head: HeadController;
   editor: EditorController;
   rig: RigController;
+  live: LiveController;
 }
 
 /** Makes the controllers of one face over its parts; `ready` is the face's start. */
@@ -51,6 +53,7 @@ export function createControllers(parts: FaceParts, ready: Promise<void>): FaceC
     head: new HeadController(parts, ready, expression),
     editor,
     rig: new RigController(parts, editor.session),
+    live: new LiveController(parts, timeline),
   };
 }
 
@@ -65,6 +68,7 @@ const DELEGATED = {
   head: HEAD_METHODS,
   editor: EDITOR_METHODS,
   rig: RIG_METHODS,
+  live: LIVE_METHODS,
 } as const satisfies { [K in keyof FaceControllers]: readonly (keyof FaceControllers[K])[] };
 
 type Delegated<K extends keyof FaceControllers> = Pick<
@@ -87,7 +91,8 @@ export interface FaceHandle
     Delegated<'export'>,
     Delegated<'head'>,
     Delegated<'editor'>,
-    Delegated<'rig'> {}
+    Delegated<'rig'>,
+    Delegated<'live'> {}
 
 /**
  * A face on the page, as scripts (and the tests) drive it: what `createFace` resolves to, and `window.face` in the

@@ -85,11 +85,12 @@ export class TimelinePanel {
     this.add(this.folder.add(s, 'add').name('add onset/apex/offset action at the time'), 'timeline-add-action');
     this.add(this.folder.add(s, 'clear').name('clear timeline'), 'timeline-clear');
     this.add(this.folder.add(s, 'exportTimeline').name('export timeline'), 'timeline-export');
-    this.add(this.folder.add(s, 'importTimeline').name('import timeline'), 'timeline-import');
+    this.add(this.folder.add(s, 'importTimeline').name('import timeline or OpenFace CSV'), 'timeline-import');
     this.files = new FileImport(this.folder, 'timeline-file', 'timeline-message', { color: '#ff8a80' })
-      .accept('.json,application/json')
+      .accept('.json,.csv,application/json,text/csv')
       .onText(
-        (text, file) => face.setTimeline(text, file.name),
+        // A .csv is an OpenFace file (its Action Unit columns become tracks); anything else a timeline document.
+        (text, file) => (/\.csv$/i.test(file.name) ? face.importOpenFace(text, file.name) : face.setTimeline(text, file.name)),
         (file) => `imported ${file.name}`,
       );
     this.refresh(true);

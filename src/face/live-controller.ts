@@ -1,0 +1,62 @@
+import { ARKIT_BLENDSHAPES, BLENDSHAPE_UNIT_IDS, blendshapeUnits, readBlendshapes, type ARKitBlendshape } from '../core/expression/arkit';
+import { refusal } from '../core/check';
+import { openFaceTimeline } from '../core/timeline/openface';
+import type { Timeline } from '../core/timeline/timeline';
+import type { FaceParts } from './face-parts';
+import type { TimelineController } from './timeline-controller';
+
+/** Driving the face from trackers: ARKit blendshape streams and OpenFace files. */
+export class LiveController {
+  /** The 52 blendshape values last given, in Apple's order. */
+  private readonly values = new Float64Array(ARKIT_BLENDSHAPES.length);
+  /** The Action Unit sides they drive (BLENDSHAPE_UNIT_IDS' order), rewritten for every call. */
+  private readonly units = new Float64Array(BLENDSHAPE_UNIT_IDS.length);
+
+  constructor(
+    private readonly parts: FaceParts,
+    private readonly timeline: TimelineController,
+  ) {}
+
+  /**
+   * Sets ARKit blendshape values (`{ mouthSmileLeft: 0.8, jawOpen: 0.3 }`; any of the 52 names, `Left` the subject's
+   * left), each clamped to 0..1; names not given keep their last values. They drive the Action Units of the README's
+   * blendshape table through the overlay (see `setOverlay`): they add to the sliders and presets without moving them,
+   * and tell no listener, so a tracker may call this every frame. A name that is not one of the 52, or a value that
+   * is not a finite number, throws naming it and changes nothing. Allocates nothing but what the caller passes.
+   */
+  setBlendshapes(values: Partial<Record<ARKitBlendshape, number>>): void {
+    const expression = this.parts.expressed();
+    readBlendshapes(values, this.values, 'setBlendshapes');
+    expression.setOverlay(BLENDSHAPE_UNIT_IDS, blendshapeUnits(this.values, this.units));
+  }
+
+  /** The 52 blendshape values last set (0 for those never given), by name. */
+  getBlendshapes(): Record<ARKitBlendshape, number> {
+    this.parts.alive();
+    return Object.fromEntries(ARKIT_BLENDSHAPES.map((name, i) => [name, this.values[i]])) as Record<ARKitBlendshape, number>;
+  }
+
+  /** Sets every blendshape back to 0, taking their Action Units out of the overlay. */
+  clearBlendshapes(): void {
+    const expression = this.parts.expressed();
+    this.values.fill(0);
+    expression.setOverlay(BLENDSHAPE_UNIT_IDS, blendshapeUnits(this.values, this.units));
+  }
+
+  /**
+   * Loads an OpenFace 2 CSV (FeatureExtraction's per-frame output) as the timeline, paused at its start, and returns
+   * it: a keyframe track per Action Unit the file has and the face too (`AU12_r` over 5, 0 where `AU12_c` says
+   * absent), timed by the `timestamp` column from the first tracked frame. A malformed file throws naming the line
+   * and column (`importOpenFace: line 7, column 12: AU04_r: expected a number, got "x"`; `source`, such as the file's
+   * name, replaces `importOpenFace` there) and changes nothing.
+   */
+  importOpenFace(csv: string, source = 'importOpenFace'): Timeline {
+    if (typeof source !== 'string') throw refusal('importOpenFace', 'source', 'a string', source);
+    const timeline = openFaceTimeline(csv, source);
+    this.timeline.setTimeline(timeline, source);
+    return structuredClone(timeline);
+  }
+}
+
+/** The handle's methods that LiveController answers. */
+export const LIVE_METHODS = ['setBlendshapes', 'getBlendshapes', 'clearBlendshapes', 'importOpenFace'] as const;
