@@ -1,5 +1,6 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
+import { faceMeshFiles } from './scripts/vite-face-mesh';
 
 /**
  * SharedArrayBuffer exists only on cross-origin isolated pages, so both the dev server and `vite preview` send
@@ -20,6 +21,8 @@ export default defineConfig({
       { find: /^softface$/, replacement: path('src/embed/index.ts') },
     ],
   },
+  // The webcam tracker's MediaPipe files, from the site.
+  plugins: [faceMeshFiles()],
   server: { headers: isolationHeaders },
   preview: { headers: isolationHeaders },
   worker: { format: 'es' },

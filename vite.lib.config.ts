@@ -1,5 +1,6 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
+import { faceMeshFiles } from './scripts/vite-face-mesh';
 
 /**
  * The library build (`npm run build:lib`), into `dist-lib/`. Mode `library`: ES modules with three.js left to the
@@ -27,6 +28,8 @@ export default defineConfig(({ mode }) => {
       ],
     },
     plugins: [
+      // The webcam tracker's MediaPipe files beside the modules (the standalone build adds to the library's folder).
+      ...(standalone ? [] : [faceMeshFiles()]),
       {
         // The package's files are named by `new URL(/* @vite-ignore */ './…', import.meta.url)` in
         // package-assets-library.ts: the comment keeps this build from rewriting them (they are copied beside the

@@ -193,6 +193,7 @@ export class EmbeddedFace {
 
   private async build(signal: AbortSignal | undefined): Promise<void> {
     const o = this.options;
+    this.parts.assetBase = o.assetBase;
     const rigLoading = loadRig(o.rig, o.assetBase);
     // Fetched beside the head and the rig; a failure resolves to null, and the view then makes its own.
     const environment = loadEnvironment(assetUrl('environment/room.pmrem', o.assetBase));

@@ -29,6 +29,8 @@ export class FaceParts {
   muscles: FaceMuscles | undefined;
   heads: FaceHeads | undefined;
   shell: FaceShell | undefined;
+  /** The face's `assetBase` option: where the package's files are fetched from (null: where its build put them). */
+  assetBase: string | URL | null = null;
   private disposedNow = false;
   /**
    * Replaced, never changed in place, when a listener comes or goes: `emit` walks the array it started with (a

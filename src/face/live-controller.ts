@@ -3,6 +3,9 @@ import { refusal } from '../core/check';
 import { openFaceTimeline } from '../core/timeline/openface';
 import type { Timeline } from '../core/timeline/timeline';
 import type { FaceParts } from './face-parts';
+import { assetUrl } from './face-assets';
+import type { PackageFile } from './package-assets';
+import type { FaceTracker, TrackingOptions, TrackingState } from './face-tracker';
 import type { TimelineController } from './timeline-controller';
 
 /** Driving the face from trackers: ARKit blendshape streams and OpenFace files. */
@@ -11,6 +14,8 @@ export class LiveController {
   private readonly values = new Float64Array(ARKIT_BLENDSHAPES.length);
   /** The Action Unit sides they drive (BLENDSHAPE_UNIT_IDS' order), rewritten for every call. */
   private readonly units = new Float64Array(BLENDSHAPE_UNIT_IDS.length);
+  /** The webcam tracker while it runs or starts. */
+  private tracker: FaceTracker | null = null;
 
   constructor(
     private readonly parts: FaceParts,
@@ -44,6 +49,57 @@ export class LiveController {
   }
 
   /**
+   * Tracks the viewer's face with MediaPipe Face Mesh and drives the face with it: brows, lids, lip corners, lips and
+   * jaw (AU1, 2, 4, 5, 12, 15, 25, 26, 43 by side) relative to the viewer's neutral face, which the first second of
+   * frames with a face calibrates (`options.calibrationMs`), smoothed (`smoothingMs`), through the overlay.
+   * `options.source` is a camera stream or a playing video; by default the page asks for the camera. The face
+   * mesh's files come from the package (its `mediapipe/face_mesh/` folder, under `assetBase` when given). Rejects,
+   * naming what failed (the camera refused, the files missing), and the face keeps its expression; a frame with no
+   * face keeps it too (`trackingState().message` says so).
+   */
+  async startTracking(options: TrackingOptions = {}): Promise<void> {
+    this.parts.expressed();
+    if (typeof options !== 'object' || options === null) throw refusal('startTracking', '', 'an object of options', options);
+    const { source } = options;
+    if (source !== undefined && !(source instanceof MediaStream) && !(source instanceof HTMLVideoElement)) {
+      throw refusal('startTracking', 'source', 'a MediaStream or an HTMLVideoElement', source);
+    }
+    this.stopTracking();
+    // Loaded on first use: the library's entry stays without it.
+    const { FaceTracker } = await import('./face-tracker');
+    const tracker = new FaceTracker(
+      (ids, values) => this.parts.expression?.setOverlay(ids, values),
+      (name) => assetUrl(`mediapipe/face_mesh/${name}` as PackageFile, this.parts.assetBase),
+      () => !this.parts.disposed,
+      options,
+    );
+    this.tracker = tracker;
+    try {
+      await tracker.start(source);
+    } catch (error) {
+      if (this.tracker === tracker) this.tracker = null;
+      throw error;
+    }
+  }
+
+  /** Stops the webcam tracker (a camera it opened is let go) and takes its Action Units out of the overlay. */
+  stopTracking(): void {
+    this.tracker?.stop();
+    this.tracker = null;
+  }
+
+  /** What the webcam tracker is doing: `{ on, fps, frames, latencyMs, calibrated, face, message }`. */
+  trackingState(): TrackingState {
+    this.parts.alive();
+    return this.tracker?.state() ?? { on: false, fps: 0, frames: 0, latencyMs: 0, calibrated: false, face: false, message: '' };
+  }
+
+  /** The video the webcam tracker reads, for a preview (null while it does not run). */
+  trackingPreview(): HTMLVideoElement | null {
+    return this.tracker?.preview ?? null;
+  }
+
+  /**
    * Loads an OpenFace 2 CSV (FeatureExtraction's per-frame output) as the timeline, paused at its start, and returns
    * it: a keyframe track per Action Unit the file has and the face too (`AU12_r` over 5, 0 where `AU12_c` says
    * absent), timed by the `timestamp` column from the first tracked frame. A malformed file throws naming the line
@@ -59,4 +115,13 @@ export class LiveController {
 }
 
 /** The handle's methods that LiveController answers. */
-export const LIVE_METHODS = ['setBlendshapes', 'getBlendshapes', 'clearBlendshapes', 'importOpenFace'] as const;
+export const LIVE_METHODS = [
+  'setBlendshapes',
+  'getBlendshapes',
+  'clearBlendshapes',
+  'importOpenFace',
+  'startTracking',
+  'stopTracking',
+  'trackingState',
+  'trackingPreview',
+] as const;

@@ -16,6 +16,22 @@ const FILES: Readonly<Record<PackageFile, () => URL>> = {
   'models/identity-source.bin': () => new URL(/* @vite-ignore */ './models/identity-source.bin', import.meta.url),
   'rigs/default.json': () => new URL(/* @vite-ignore */ './rigs/default.json', import.meta.url),
   'environment/room.pmrem': () => new URL(/* @vite-ignore */ './environment/room.pmrem', import.meta.url),
+  'mediapipe/face_mesh/face_mesh.js': () => new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh.js', import.meta.url),
+  'mediapipe/face_mesh/face_mesh.binarypb': () => new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh.binarypb', import.meta.url),
+  'mediapipe/face_mesh/face_mesh_solution_packed_assets_loader.js': () =>
+    new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh_solution_packed_assets_loader.js', import.meta.url),
+  'mediapipe/face_mesh/face_mesh_solution_packed_assets.data': () =>
+    new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh_solution_packed_assets.data', import.meta.url),
+  'mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.js': () =>
+    new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.js', import.meta.url),
+  'mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.wasm': () =>
+    new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.wasm', import.meta.url),
+  'mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.data': () =>
+    new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.data', import.meta.url),
+  'mediapipe/face_mesh/face_mesh_solution_wasm_bin.js': () =>
+    new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh_solution_wasm_bin.js', import.meta.url),
+  'mediapipe/face_mesh/face_mesh_solution_wasm_bin.wasm': () =>
+    new URL(/* @vite-ignore */ './mediapipe/face_mesh/face_mesh_solution_wasm_bin.wasm', import.meta.url),
 };
 
 /** Where the package's file is served from (absolute). */

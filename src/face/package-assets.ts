@@ -13,6 +13,16 @@ const PACKAGE_FILES = [
   'models/identity-source.bin',
   'rigs/default.json',
   'environment/room.pmrem',
+  // MediaPipe Face Mesh (the webcam tracker): written beside the others by the builds (scripts/vite-face-mesh.ts).
+  'mediapipe/face_mesh/face_mesh.js',
+  'mediapipe/face_mesh/face_mesh.binarypb',
+  'mediapipe/face_mesh/face_mesh_solution_packed_assets_loader.js',
+  'mediapipe/face_mesh/face_mesh_solution_packed_assets.data',
+  'mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.js',
+  'mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.wasm',
+  'mediapipe/face_mesh/face_mesh_solution_simd_wasm_bin.data',
+  'mediapipe/face_mesh/face_mesh_solution_wasm_bin.js',
+  'mediapipe/face_mesh/face_mesh_solution_wasm_bin.wasm',
 ] as const;
 export type PackageFile = (typeof PACKAGE_FILES)[number];
 

@@ -10,6 +10,7 @@ import { OutputsPanel, type FrameSource } from './outputs-panel';
 import { PresetsPanel } from './presets-panel';
 import { RenderingPanel } from './rendering-panel';
 import { TimelinePanel } from './timeline-panel';
+import { TrackingPanel } from './tracking-panel';
 import { VideoPanel } from './video-panel';
 import type { Resolution } from '../face/face-options';
 
@@ -39,6 +40,7 @@ export class Panels {
   readonly gui: GUI;
   readonly presets: PresetsPanel;
   readonly timeline: TimelinePanel;
+  readonly tracking: TrackingPanel;
   readonly video: VideoPanel;
   readonly rendering: RenderingPanel;
   readonly light: LightPanel;
@@ -63,6 +65,7 @@ export class Panels {
     this.presets = new PresetsPanel(this.gui, face);
     this.timeline = new TimelinePanel(this.gui, face);
     this.video = new VideoPanel(this.timeline.folder, face);
+    this.tracking = new TrackingPanel(this.gui, face);
     this.rendering = new RenderingPanel(this.gui, face, { resolution: o.resolution, onResolution: o.onResolution });
     this.light = new LightPanel(this.gui, face);
     this.editor = new EditorPanel(this.gui, face, o.container);
@@ -73,6 +76,7 @@ export class Panels {
     this.actionUnits = new ActionUnitsPanel(this.gui, face);
     this.presets.folder.close();
     this.timeline.folder.close();
+    this.tracking.folder.close();
     this.rendering.folder.close();
     this.light.folder.close();
     this.editor.folder.close();
@@ -92,6 +96,7 @@ export class Panels {
     this.light.dispose();
     this.rendering.dispose();
     this.video.dispose();
+    this.tracking.dispose();
     this.timeline.dispose();
     this.presets.dispose();
     this.gui.destroy();

@@ -1,0 +1,210 @@
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { chromium } from '@playwright/test';
+import { unzipSync } from 'fflate';
+import { chromiumPath } from '../scripts/chromium-path.mjs';
+import { openFace } from './face';
+import { control, openFolder } from './panels';
+import { expect, test } from './fixtures';
+
+/**
+ * The webcam tracker without a person: the face records itself playing a known timeline, the frames become a fake
+ * camera file (YUV4MPEG2, which Chromium plays as its camera), and a second browser with that camera tracks it. The
+ * Action Units it recovers follow the timeline's (correlation over the clip, at the best shift between the clip and
+ * the camera's start, which nobody controls).
+ */
+const FPS = 6;
+const SECONDS = 10;
+const WIDTH = 480;
+const HEIGHT = 480;
+/**
+ * One event at a time after two and a half neutral seconds (the camera starts before the tracker, whose first second of frames
+ * with a face is its calibration): brows, smile, jaw, closed eyes.
+ */
+const TIMELINE = {
+  format: 'softface-timeline',
+  version: 1,
+  duration: SECONDS,
+  tracks: {},
+  actions: [
+    { target: 'AU1', start: 2.5, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
+    { target: 'AU2', start: 2.5, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
+    { target: 'AU12', start: 4.3, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
+    { target: 'AU26', start: 6.1, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
+    { target: 'AU43', start: 7.9, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
+  ],
+};
+const UNITS = [
+  ['AU1+AU2', ['AU1L', 'AU1R', 'AU2L', 'AU2R']],
+  ['AU12', ['AU12L', 'AU12R']],
+  ['AU26', ['AU26']],
+  ['AU43', ['AU43L', 'AU43R']],
+] as const;
+
+function correlation(a: number[], b: number[]): number {
+  const n = a.length;
+  const ma = a.reduce((s, x) => s + x, 0) / n;
+  const mb = b.reduce((s, x) => s + x, 0) / n;
+  let ab = 0;
+  let aa = 0;
+  let bb = 0;
+  for (let i = 0; i < n; i++) {
+    ab += (a[i] - ma) * (b[i] - mb);
+    aa += (a[i] - ma) ** 2;
+    bb += (b[i] - mb) ** 2;
+  }
+  return aa > 0 && bb > 0 ? ab / Math.sqrt(aa * bb) : 0;
+}
+
+test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU26 and AU43 correlate with the timeline', async ({
+  page,
+  baseURL,
+}) => {
+  test.setTimeout(300_000);
+  await openFace(page, '/?resolution=low');
+  const frames = FPS * SECONDS;
+  // What each frame of the clip shows: the timeline's values at its time.
+  const expected = await page.evaluate(
+    ({ timeline, frames, fps, units }) => {
+      const face = window.face;
+      face.setTimeline(timeline);
+      const out: number[][] = [];
+      for (let i = 0; i < frames; i++) {
+        face.seek(i / fps);
+        const e = face.getEffectiveActionUnits();
+        out.push(units.map(([, ids]) => ids.reduce((s, id) => s + e[id], 0) / ids.length));
+      }
+      face.seek(0);
+      return out;
+    },
+    { timeline: TIMELINE, frames, fps: FPS, units: UNITS as unknown as [string, string[]][] },
+  );
+  // The clip as the recorder makes it, a zip of PNG frames.
+  const zip = await page.evaluate(
+    async ({ fps, width, height }) => {
+      const blob = await window.face.recordVideo({ fps, width, height, format: 'png-zip' });
+      const bytes = new Uint8Array(await blob.arrayBuffer());
+      let text = '';
+      for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+      return btoa(text);
+    },
+    { fps: FPS, width: WIDTH, height: HEIGHT },
+  );
+  const pngs = Object.entries(unzipSync(Buffer.from(zip, 'base64')))
+    .filter(([name]) => name.endsWith('.png'))
+    .sort(([a], [b]) => a.localeCompare(b));
+  expect(pngs).toHaveLength(frames);
+  // Each frame decoded by the browser and turned into the camera file's YUV 4:2:0 (full range, as C420jpeg says).
+  const dir = mkdtempSync(join(tmpdir(), 'softface-camera-'));
+  const file = join(dir, 'face.y4m');
+  const parts: Buffer[] = [Buffer.from(`YUV4MPEG2 W${WIDTH} H${HEIGHT} F${FPS}:1 Ip A1:1 C420jpeg\n`)];
+  for (const [, png] of pngs) {
+    const yuv = await page.evaluate(async (data) => {
+      const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
+      const c = new OffscreenCanvas(image.width, image.height);
+      const g = c.getContext('2d')!;
+      g.drawImage(image, 0, 0);
+      const { data: rgba, width, height } = g.getImageData(0, 0, image.width, image.height);
+      const out = new Uint8Array(width * height * 1.5);
+      const u0 = width * height;
+      const v0 = u0 + (width * height) / 4;
+      for (let i = 0; i < width * height; i++) out[i] = 0.299 * rgba[4 * i] + 0.587 * rgba[4 * i + 1] + 0.114 * rgba[4 * i + 2];
+      for (let y = 0; y < height; y += 2) {
+        for (let x = 0; x < width; x += 2) {
+          let r = 0;
+          let gr = 0;
+          let b = 0;
+          for (const k of [y * width + x, y * width + x + 1, (y + 1) * width + x, (y + 1) * width + x + 1]) {
+            r += rgba[4 * k] / 4;
+            gr += rgba[4 * k + 1] / 4;
+            b += rgba[4 * k + 2] / 4;
+          }
+          const j = (y / 2) * (width / 2) + x / 2;
+          out[u0 + j] = 128 - 0.168736 * r - 0.331264 * gr + 0.5 * b;
+          out[v0 + j] = 128 + 0.5 * r - 0.418688 * gr - 0.081312 * b;
+        }
+      }
+      let text = '';
+      for (let i = 0; i < out.length; i += 0x8000) text += String.fromCharCode(...out.subarray(i, i + 0x8000));
+      return btoa(text);
+    }, Buffer.from(png).toString('base64'));
+    parts.push(Buffer.from('FRAME\n'), Buffer.from(yuv, 'base64'));
+  }
+  writeFileSync(file, Buffer.concat(parts));
+
+  // A browser whose camera is the clip (looping), and the app tracking it.
+  const browser = await chromium.launch({
+    executablePath: chromiumPath(),
+    args: [
+      '--use-angle=swiftshader',
+      '--enable-unsafe-swiftshader',
+      '--use-fake-ui-for-media-stream',
+      '--use-fake-device-for-media-stream',
+      `--use-file-for-fake-video-capture=${file}`,
+    ],
+  });
+  try {
+    // A small page: in software WebGL every drawn frame of the face takes the tracker's time.
+    const camera = await browser.newPage({ viewport: { width: 360, height: 270 } });
+    await camera.context().grantPermissions(['camera'], { origin: baseURL });
+    await openFace(camera, `${baseURL}/?resolution=low`);
+    const run = await camera.evaluate(async (seconds) => {
+      const face = window.face;
+      await face.startTracking();
+      const start = performance.now();
+      const samples: { t: number; e: Record<string, number> }[] = [];
+      // A loop of the clip and a second more: the face's units after each frame the tracker read.
+      let frames = 0;
+      while (performance.now() - start < seconds * 1000) {
+        await new Promise((r) => requestAnimationFrame(r));
+        const state = face.trackingState();
+        if (state.frames === frames) continue;
+        frames = state.frames;
+        if (state.calibrated) samples.push({ t: performance.now() - start, e: face.getEffectiveActionUnits() });
+      }
+      const state = face.trackingState();
+      face.stopTracking();
+      return { samples, state };
+    }, SECONDS + 1);
+    console.log(`tracking: ${run.samples.length} samples, ${JSON.stringify(run.state)}`);
+    expect(run.samples.length).toBeGreaterThan(20);
+    const tracked = run.samples.map((s) => UNITS.map(([, ids]) => ids.reduce((sum, id) => sum + s.e[id], 0) / ids.length));
+    // What the clip showed at each sample, for each shift of the clip against the camera's start (a quarter frame at a
+    // time, between frames the line between them); the best shift for all units at once.
+    const shown = (t: number, shift: number, u: number): number => {
+      const at = (t / 1000) * FPS + shift;
+      const k = Math.floor(at);
+      const f = at - k;
+      return (1 - f) * expected[k % frames][u] + f * expected[(k + 1) % frames][u];
+    };
+    let best = { shift: 0, mean: -Infinity, r: [] as number[] };
+    for (let shift = 0; shift < frames; shift += 0.25) {
+      const r = UNITS.map((_, u) =>
+        correlation(
+          tracked.map((v) => v[u]),
+          run.samples.map((s) => shown(s.t, shift, u)),
+        ),
+      );
+      const mean = r.reduce((a, b) => a + b, 0) / r.length;
+      if (mean > best.mean) best = { shift, mean, r };
+    }
+    console.log(
+      `correlation at the best shift (${best.shift} frames): ${UNITS.map(([name], u) => `${name} ${best.r[u].toFixed(2)}`).join(', ')}; ` +
+        `latency from camera frame to overlay ${run.state.latencyMs.toFixed(0)} ms`,
+    );
+    for (const [u, [name]] of UNITS.entries()) expect(best.r[u], name).toBeGreaterThanOrEqual(0.8);
+
+    // The Tracking folder starts the same tracker, shows its state and the camera, and stops it.
+    await openFolder(camera, 'Tracking');
+    await control(camera, 'tracking-toggle').locator('button').click();
+    await expect(control(camera, 'tracking-status')).toHaveText(/^(calibrating|tracking) · \d+ frames\/s/, { timeout: 60_000 });
+    await expect(control(camera, 'tracking-preview').locator('video')).toHaveCount(1);
+    await control(camera, 'tracking-toggle').locator('button').click();
+    await expect(control(camera, 'tracking-status')).toHaveText('off');
+    expect(await camera.evaluate(() => window.face.trackingState().on)).toBe(false);
+  } finally {
+    await browser.close();
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
