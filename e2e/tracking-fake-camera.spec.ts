@@ -10,9 +10,11 @@ import { expect, test } from './fixtures';
 
 /**
  * The webcam tracker without a person: the face records itself playing a known timeline, the frames become a fake
- * camera file (YUV4MPEG2, which Chromium plays as its camera), and a second browser with that camera tracks it. The
- * Action Units it recovers follow the timeline's (correlation over the clip, at the best shift between the clip and
- * the camera's start, which nobody controls).
+ * camera file (YUV4MPEG2, which Chromium plays as its camera, looping), and a second browser with that camera tracks
+ * it. Each frame carries its number in a row of black and white squares at its top left, so the test knows which
+ * frame the camera shows: it takes the viewer's neutral face in the clip's neutral lead-in (`calibrateTracking`), and
+ * compares the Action Units the tracker recovers with the timeline's at the frames shown, at the best lag up to a
+ * second (the tracker's latency).
  */
 const FPS = 6;
 const SECONDS = 10;
@@ -35,6 +37,9 @@ const TIMELINE = {
     { target: 'AU43', start: 7.9, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
   ],
 };
+/** The frame number's squares: 8 bits, each MARK pixels wide, along the top left. */
+const MARK = 24;
+const BITS = 8;
 const UNITS = [
   ['AU1+AU2', ['AU1L', 'AU1R', 'AU2L', 'AU2R']],
   ['AU12', ['AU12L', 'AU12R']],
@@ -99,36 +104,50 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
   const dir = mkdtempSync(join(tmpdir(), 'softface-camera-'));
   const file = join(dir, 'face.y4m');
   const parts: Buffer[] = [Buffer.from(`YUV4MPEG2 W${WIDTH} H${HEIGHT} F${FPS}:1 Ip A1:1 C420jpeg\n`)];
-  for (const [, png] of pngs) {
-    const yuv = await page.evaluate(async (data) => {
-      const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
-      const c = new OffscreenCanvas(image.width, image.height);
-      const g = c.getContext('2d')!;
-      g.drawImage(image, 0, 0);
-      const { data: rgba, width, height } = g.getImageData(0, 0, image.width, image.height);
-      const out = new Uint8Array(width * height * 1.5);
-      const u0 = width * height;
-      const v0 = u0 + (width * height) / 4;
-      for (let i = 0; i < width * height; i++) out[i] = 0.299 * rgba[4 * i] + 0.587 * rgba[4 * i + 1] + 0.114 * rgba[4 * i + 2];
-      for (let y = 0; y < height; y += 2) {
-        for (let x = 0; x < width; x += 2) {
-          let r = 0;
-          let gr = 0;
-          let b = 0;
-          for (const k of [y * width + x, y * width + x + 1, (y + 1) * width + x, (y + 1) * width + x + 1]) {
-            r += rgba[4 * k] / 4;
-            gr += rgba[4 * k + 1] / 4;
-            b += rgba[4 * k + 2] / 4;
+  for (const [index, [, png]] of pngs.entries()) {
+    const yuv = await page.evaluate(
+      async ({ data, index, mark, bits }) => {
+        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
+        const c = new OffscreenCanvas(image.width, image.height);
+        const g = c.getContext('2d')!;
+        g.drawImage(image, 0, 0);
+        const { data: rgba, width, height } = g.getImageData(0, 0, image.width, image.height);
+        const out = new Uint8Array(width * height * 1.5);
+        const u0 = width * height;
+        const v0 = u0 + (width * height) / 4;
+        for (let i = 0; i < width * height; i++) out[i] = 0.299 * rgba[4 * i] + 0.587 * rgba[4 * i + 1] + 0.114 * rgba[4 * i + 2];
+        for (let y = 0; y < height; y += 2) {
+          for (let x = 0; x < width; x += 2) {
+            let r = 0;
+            let gr = 0;
+            let b = 0;
+            for (const k of [y * width + x, y * width + x + 1, (y + 1) * width + x, (y + 1) * width + x + 1]) {
+              r += rgba[4 * k] / 4;
+              gr += rgba[4 * k + 1] / 4;
+              b += rgba[4 * k + 2] / 4;
+            }
+            const j = (y / 2) * (width / 2) + x / 2;
+            out[u0 + j] = 128 - 0.168736 * r - 0.331264 * gr + 0.5 * b;
+            out[v0 + j] = 128 + 0.5 * r - 0.418688 * gr - 0.081312 * b;
           }
-          const j = (y / 2) * (width / 2) + x / 2;
-          out[u0 + j] = 128 - 0.168736 * r - 0.331264 * gr + 0.5 * b;
-          out[v0 + j] = 128 + 0.5 * r - 0.418688 * gr - 0.081312 * b;
         }
-      }
-      let text = '';
-      for (let i = 0; i < out.length; i += 0x8000) text += String.fromCharCode(...out.subarray(i, i + 0x8000));
-      return btoa(text);
-    }, Buffer.from(png).toString('base64'));
+        // The frame's number, grey squares (no colour) white for a 1.
+        for (let bit = 0; bit < bits; bit++) {
+          const on = (index >> bit) & 1;
+          for (let y = 0; y < mark; y++) {
+            for (let x = bit * mark; x < (bit + 1) * mark; x++) {
+              out[y * width + x] = on ? 235 : 16;
+              out[u0 + (y >> 1) * (width / 2) + (x >> 1)] = 128;
+              out[v0 + (y >> 1) * (width / 2) + (x >> 1)] = 128;
+            }
+          }
+        }
+        let text = '';
+        for (let i = 0; i < out.length; i += 0x8000) text += String.fromCharCode(...out.subarray(i, i + 0x8000));
+        return btoa(text);
+      },
+      { data: Buffer.from(png).toString('base64'), index, mark: MARK, bits: BITS },
+    );
     parts.push(Buffer.from('FRAME\n'), Buffer.from(yuv, 'base64'));
   }
   writeFileSync(file, Buffer.concat(parts));
@@ -149,48 +168,65 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
     const camera = await browser.newPage({ viewport: { width: 360, height: 270 } });
     await camera.context().grantPermissions(['camera'], { origin: baseURL });
     await openFace(camera, `${baseURL}/?resolution=low`);
-    const run = await camera.evaluate(async (seconds) => {
-      const face = window.face;
-      await face.startTracking();
-      const start = performance.now();
-      const samples: { t: number; e: Record<string, number> }[] = [];
-      // A loop of the clip and a second more: the face's units after each frame the tracker read.
-      let frames = 0;
-      while (performance.now() - start < seconds * 1000) {
-        await new Promise((r) => requestAnimationFrame(r));
+    const run = await camera.evaluate(
+      async ({ seconds, lead, mark, bits }) => {
+        const face = window.face;
+        await face.startTracking();
+        const video = face.trackingPreview()!;
+        const canvas = new OffscreenCanvas(bits * mark, mark);
+        const g = canvas.getContext('2d', { willReadFrequently: true })!;
+        // The number of the frame the camera shows, from its squares.
+        const shown = (): number => {
+          g.drawImage(video, 0, 0, bits * mark, mark, 0, 0, bits * mark, mark);
+          const { data } = g.getImageData(0, 0, bits * mark, mark);
+          let n = 0;
+          for (let bit = 0; bit < bits; bit++) if (data[4 * ((mark >> 1) * bits * mark + bit * mark + (mark >> 1))] > 128) n |= 1 << bit;
+          return n;
+        };
+        const frame = () => new Promise((r) => requestAnimationFrame(r));
+        // The neutral face: taken when the clip starts again, in its lead-in.
+        let last = shown();
+        for (;;) {
+          await frame();
+          const n = shown();
+          if (n < last && n < lead) break;
+          last = n;
+        }
+        face.calibrateTracking();
+        const start = performance.now();
+        const samples: { frame: number; e: Record<string, number> }[] = [];
+        let frames = face.trackingState().frames;
+        while (performance.now() - start < seconds * 1000) {
+          await frame();
+          const state = face.trackingState();
+          if (state.frames === frames) continue;
+          frames = state.frames;
+          if (state.calibrated) samples.push({ frame: shown(), e: face.getEffectiveActionUnits() });
+        }
         const state = face.trackingState();
-        if (state.frames === frames) continue;
-        frames = state.frames;
-        if (state.calibrated) samples.push({ t: performance.now() - start, e: face.getEffectiveActionUnits() });
-      }
-      const state = face.trackingState();
-      face.stopTracking();
-      return { samples, state };
-    }, SECONDS + 1);
+        face.stopTracking();
+        return { samples, state };
+      },
+      { seconds: SECONDS, lead: FPS, mark: MARK, bits: BITS },
+    );
     console.log(`tracking: ${run.samples.length} samples, ${JSON.stringify(run.state)}`);
     expect(run.samples.length).toBeGreaterThan(20);
     const tracked = run.samples.map((s) => UNITS.map(([, ids]) => ids.reduce((sum, id) => sum + s.e[id], 0) / ids.length));
-    // What the clip showed at each sample, for each shift of the clip against the camera's start (a quarter frame at a
-    // time, between frames the line between them); the best shift for all units at once.
-    const shown = (t: number, shift: number, u: number): number => {
-      const at = (t / 1000) * FPS + shift;
-      const k = Math.floor(at);
-      const f = at - k;
-      return (1 - f) * expected[k % frames][u] + f * expected[(k + 1) % frames][u];
-    };
-    let best = { shift: 0, mean: -Infinity, r: [] as number[] };
-    for (let shift = 0; shift < frames; shift += 0.25) {
+    // The timeline at the frame each sample was made from: the frame shown then, less the tracker's lag (the best of
+    // 0 to a second, for all units at once).
+    let best = { lag: 0, mean: -Infinity, r: [] as number[] };
+    for (let lag = 0; lag <= FPS; lag++) {
       const r = UNITS.map((_, u) =>
         correlation(
           tracked.map((v) => v[u]),
-          run.samples.map((s) => shown(s.t, shift, u)),
+          run.samples.map((s) => expected[(s.frame - lag + frames) % frames][u]),
         ),
       );
       const mean = r.reduce((a, b) => a + b, 0) / r.length;
-      if (mean > best.mean) best = { shift, mean, r };
+      if (mean > best.mean) best = { lag, mean, r };
     }
     console.log(
-      `correlation at the best shift (${best.shift} frames): ${UNITS.map(([name], u) => `${name} ${best.r[u].toFixed(2)}`).join(', ')}; ` +
+      `correlation at the best lag (${best.lag} frames): ${UNITS.map(([name], u) => `${name} ${best.r[u].toFixed(2)}`).join(', ')}; ` +
         `latency from camera frame to overlay ${run.state.latencyMs.toFixed(0)} ms`,
     );
     for (const [u, [name]] of UNITS.entries()) expect(best.r[u], name).toBeGreaterThanOrEqual(0.8);

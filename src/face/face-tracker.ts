@@ -154,6 +154,12 @@ export class FaceTracker {
     if (this.alive()) this.overlay(TRACKED_UNIT_IDS, this.zeros);
   }
 
+  /** Forgets the viewer's neutral face: the next `calibrationMs` of frames with a face are taken as it again. */
+  recalibrate(): void {
+    this.units.reset();
+    if (this.running) this.status.message = 'calibrating: keep a neutral face';
+  }
+
   /** What the tracker is doing (a copy). */
   state(): TrackingState {
     const now = performance.now();

@@ -82,6 +82,15 @@ export class LiveController {
     }
   }
 
+  /**
+   * Takes the viewer's neutral face again (keep still and neutral for the calibration time): the tracker's units hold
+   * meanwhile. Throws unless the tracker runs.
+   */
+  calibrateTracking(): void {
+    if (!this.tracker) throw new Error('calibrateTracking: the tracker is not running (startTracking first)');
+    this.tracker.recalibrate();
+  }
+
   /** Stops the webcam tracker (a camera it opened is let go) and takes its Action Units out of the overlay. */
   stopTracking(): void {
     this.tracker?.stop();
@@ -122,6 +131,7 @@ export const LIVE_METHODS = [
   'importOpenFace',
   'startTracking',
   'stopTracking',
+  'calibrateTracking',
   'trackingState',
   'trackingPreview',
 ] as const;

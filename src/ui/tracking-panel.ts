@@ -17,7 +17,13 @@ export class TrackingPanel {
   private readonly status: HTMLDivElement;
   private readonly preview: HTMLDivElement;
   private timer: ReturnType<typeof setInterval> | undefined;
-  private readonly actions = { toggle: () => void this.toggle() };
+  private readonly actions = {
+    toggle: () => void this.toggle(),
+    calibrate: () => {
+      if (this.face.trackingState().on) this.face.calibrateTracking();
+      this.show();
+    },
+  };
 
   constructor(
     parent: GUI,
@@ -25,6 +31,7 @@ export class TrackingPanel {
   ) {
     this.folder = parent.addFolder('Tracking');
     this.button = named(this.folder.add(this.actions, 'toggle').name('start camera tracking'), 'tracking-toggle');
+    named(this.folder.add(this.actions, 'calibrate').name('take my neutral face again'), 'tracking-calibrate');
     this.status = note('tracking-status', { color: '#c8c8c8' });
     this.status.textContent = 'off: the face follows yours after a neutral second';
     this.preview = document.createElement('div');
@@ -32,10 +39,10 @@ export class TrackingPanel {
     this.button.domElement.after(this.status, this.preview);
   }
 
-  /** Stops the tracker it started, its timer, and removes the folder. */
+  /** Stops its timer and the tracker (unless the face went first, which stops it), and removes the folder. */
   dispose(): void {
     this.stopTimer();
-    if (this.face.trackingState().on) this.face.stopTracking();
+    if (!this.face.isDisposed() && this.face.trackingState().on) this.face.stopTracking();
     this.folder.destroy();
   }
 
