@@ -1,7 +1,6 @@
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { chromium } from '@playwright/test';
-import { chromiumPath } from '../scripts/chromium-path.mjs';
+import { launchWithFakeCamera } from './fake-camera';
 import { expect, test } from './fixtures';
 import { failedRequests, serveFiles } from './packed-app';
 
@@ -39,15 +38,7 @@ test('the OpenFace example plays a picked file on the face and names a bad oneâ€
 
 test('the webcam example starts the tracker on a camera and says there is no face in the test pattern', async () => {
   test.setTimeout(120_000);
-  const browser = await chromium.launch({
-    executablePath: chromiumPath(),
-    args: [
-      '--use-angle=swiftshader',
-      '--enable-unsafe-swiftshader',
-      '--use-fake-ui-for-media-stream',
-      '--use-fake-device-for-media-stream',
-    ],
-  });
+  const browser = await launchWithFakeCamera();
   try {
     const page = await browser.newPage({ viewport: { width: 600, height: 600 } });
     const failed = failedRequests(page);

@@ -1,9 +1,8 @@
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { chromium } from '@playwright/test';
 import { unzipSync } from 'fflate';
-import { chromiumPath } from '../scripts/chromium-path.mjs';
+import { launchWithFakeCamera } from './fake-camera';
 import { openFace } from './face';
 import { control, openFolder } from './panels';
 import { expect, test } from './fixtures';
@@ -17,7 +16,7 @@ import { expect, test } from './fixtures';
  * second (the tracker's latency).
  */
 const FPS = 6;
-const SECONDS = 10;
+const SECONDS = 11.5;
 const WIDTH = 480;
 const HEIGHT = 480;
 /**
@@ -30,11 +29,11 @@ const TIMELINE = {
   duration: SECONDS,
   tracks: {},
   actions: [
-    { target: 'AU1', start: 2.5, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
-    { target: 'AU2', start: 2.5, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
-    { target: 'AU12', start: 4.3, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
-    { target: 'AU26', start: 6.1, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
-    { target: 'AU43', start: 7.9, intensity: 1, onset: 0.25, apex: 1, offset: 0.25 },
+    { target: 'AU1', start: 2.5, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
+    { target: 'AU2', start: 2.5, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
+    { target: 'AU12', start: 4.7, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
+    { target: 'AU26', start: 6.9, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
+    { target: 'AU43', start: 9.1, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
   ],
 };
 /** The frame number's squares: 8 bits, each MARK pixels wide, along the top left. */
@@ -153,16 +152,7 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
   writeFileSync(file, Buffer.concat(parts));
 
   // A browser whose camera is the clip (looping), and the app tracking it.
-  const browser = await chromium.launch({
-    executablePath: chromiumPath(),
-    args: [
-      '--use-angle=swiftshader',
-      '--enable-unsafe-swiftshader',
-      '--use-fake-ui-for-media-stream',
-      '--use-fake-device-for-media-stream',
-      `--use-file-for-fake-video-capture=${file}`,
-    ],
-  });
+  const browser = await launchWithFakeCamera(file);
   try {
     // A small page: in software WebGL every drawn frame of the face takes the tracker's time.
     const camera = await browser.newPage({ viewport: { width: 360, height: 270 } });

@@ -183,3 +183,24 @@ function vertexNormals(mesh: PolyMesh): Float64Array {
   }
   return N;
 }
+
+/**
+ * Chains boundary edges into loops: `next` maps each boundary edge's first vertex to its second; each loop starts at
+ * the first of `starts` not yet in a loop and follows `next` until it comes back (or the chain breaks).
+ */
+export function chainLoops(next: ReadonlyMap<number, number>, starts: Iterable<number> = next.keys()): number[][] {
+  const loops: number[][] = [];
+  const seen = new Set<number>();
+  for (const start of starts) {
+    if (seen.has(start)) continue;
+    const loop: number[] = [];
+    let v: number | undefined = start;
+    while (v !== undefined && !seen.has(v)) {
+      seen.add(v);
+      loop.push(v);
+      v = next.get(v);
+    }
+    loops.push(loop);
+  }
+  return loops;
+}

@@ -16,6 +16,7 @@ import {
   restingHeadPose,
   type HeadPose,
 } from '../expression/head-pose';
+import { chainLoops } from '../head/polymesh';
 import type { MuscleInputs } from '../solver/muscle-inputs';
 import type { Vec3 } from './rig-types';
 
@@ -195,18 +196,5 @@ function boundaryLoops(triangles: ArrayLike<number>): number[][] {
       if (!directed.has(b * count + a)) next.set(a, b);
     }
   }
-  const loops: number[][] = [];
-  const seen = new Set<number>();
-  for (const start of next.keys()) {
-    if (seen.has(start)) continue;
-    const loop: number[] = [];
-    let v: number | undefined = start;
-    while (v !== undefined && !seen.has(v)) {
-      seen.add(v);
-      loop.push(v);
-      v = next.get(v);
-    }
-    loops.push(loop);
-  }
-  return loops;
+  return chainLoops(next);
 }

@@ -1,4 +1,4 @@
-import { buildEdges, edgeKey, faceCount, polyMeshFromFaces, vertexCount, type PolyMesh } from '../polymesh';
+import { buildEdges, chainLoops, edgeKey, faceCount, polyMeshFromFaces, vertexCount, type PolyMesh } from '../polymesh';
 
 /** Per-vertex neighbours and incident faces of a polygon mesh. */
 interface Adjacency {
@@ -131,18 +131,8 @@ export function boundaryLoops(mesh: PolyMesh): number[][] {
       if (edges.faces[2 * e + 1] < 0) nextOf.set(mesh.corners[s + i], mesh.corners[s + ((i + 1) % n)]);
     }
   }
-  const loops: number[][] = [];
-  const seen = new Set<number>();
-  for (const start of [...nextOf.keys()].sort((a, b) => a - b)) {
-    if (seen.has(start)) continue;
-    const loop: number[] = [];
-    let v: number | undefined = start;
-    while (v !== undefined && !seen.has(v)) {
-      seen.add(v);
-      loop.push(v);
-      v = nextOf.get(v);
-    }
-    loops.push(loop);
-  }
-  return loops;
+  return chainLoops(
+    nextOf,
+    [...nextOf.keys()].sort((a, b) => a - b),
+  );
 }

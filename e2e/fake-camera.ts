@@ -1,0 +1,19 @@
+import { chromium, type Browser } from '@playwright/test';
+import { chromiumPath } from '../scripts/chromium-path.mjs';
+
+/**
+ * A Chromium of its own whose camera is fake and granted without asking: Chromium's test pattern, or the frames of a
+ * YUV4MPEG2 `file` (looping). Close it when done.
+ */
+export function launchWithFakeCamera(file?: string): Promise<Browser> {
+  return chromium.launch({
+    executablePath: chromiumPath(),
+    args: [
+      '--use-angle=swiftshader',
+      '--enable-unsafe-swiftshader',
+      '--use-fake-ui-for-media-stream',
+      '--use-fake-device-for-media-stream',
+      ...(file ? [`--use-file-for-fake-video-capture=${file}`] : []),
+    ],
+  });
+}
