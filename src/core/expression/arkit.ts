@@ -168,13 +168,19 @@ const UNIT: ReadonlyMap<string, number> = new Map(BLENDSHAPE_UNIT_IDS.map((id, i
 export function readBlendshapes(values: unknown, into: Float64Array, what = 'setBlendshapes'): void {
   if (typeof values !== 'object' || values === null || Array.isArray(values))
     throw refusal(what, '', 'an object of ARKit blendshape names and values 0..1', values);
-  const entries = Object.entries(values as Record<string, unknown>);
-  for (const [name, value] of entries) {
+  // Two passes over the keys (all checked before any is written), with no array of entries: a tracker calls this
+  // every frame.
+  const record = values as Record<string, unknown>;
+  for (const name in record) {
+    if (!Object.hasOwn(record, name)) continue;
+    const value = record[name];
     if (!INDEX.has(name))
       throw new Error(`${what}: expected one of the 52 ARKit blendshape names (eyeBlinkLeft, jawOpen, ...), got ${show(name)}`);
     if (typeof value !== 'number' || !Number.isFinite(value)) throw refusal(what, name, 'a finite number', value);
   }
-  for (const [name, value] of entries) into[INDEX.get(name)!] = Math.min(1, Math.max(0, value as number));
+  for (const name in record) {
+    if (Object.hasOwn(record, name)) into[INDEX.get(name)!] = Math.min(1, Math.max(0, record[name] as number));
+  }
 }
 
 /** Blendshape `name`'s value in `b` (Apple's order). */
