@@ -217,7 +217,7 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
     }
     console.log(
       `correlation at the best lag (${best.lag} frames): ${UNITS.map(([name], u) => `${name} ${best.r[u].toFixed(2)}`).join(', ')}; ` +
-        `latency from camera frame to overlay ${run.state.latencyMs.toFixed(0)} ms`,
+        `latency from camera frame to overlay ${run.state.latencyMs.toFixed(0)} ms (face mesh ${run.state.processMs.toFixed(0)} ms)`,
     );
     for (const [u, [name]] of UNITS.entries()) expect(best.r[u], name).toBeGreaterThanOrEqual(0.8);
 

@@ -97,10 +97,12 @@ export class LiveController {
     this.tracker = null;
   }
 
-  /** What the webcam tracker is doing: `{ on, fps, frames, latencyMs, calibrated, face, message }`. */
+  /** What the webcam tracker is doing: `{ on, fps, frames, latencyMs, processMs, calibrated, face, message }`. */
   trackingState(): TrackingState {
     this.parts.alive();
-    return this.tracker?.state() ?? { on: false, fps: 0, frames: 0, latencyMs: 0, calibrated: false, face: false, message: '' };
+    return (
+      this.tracker?.state() ?? { on: false, fps: 0, frames: 0, latencyMs: 0, processMs: 0, calibrated: false, face: false, message: '' }
+    );
   }
 
   /** The video the webcam tracker reads, for a preview (null while it does not run). */
