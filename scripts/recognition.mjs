@@ -1,6 +1,6 @@
 /**
  * An automatic expression recogniser for the app's renders, shared by `npm run recognize` (scripts/recognize.mjs)
- * and the presets' browser test (e2e/recognition.spec.ts.pending): @vladmandic/face-api's SSD MobileNet v1 finds the
+ * and the presets' browser test (e2e/recognition.spec.ts): @vladmandic/face-api's SSD MobileNet v1 finds the
  * face and FaceExpressionNet reads the detector's crop of it as one of 7 classes (neutral, happy, sad, angry,
  * fearful, disgusted, surprised), in headless Chromium with tfjs's cpu backend.
  *
