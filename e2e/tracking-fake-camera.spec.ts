@@ -12,8 +12,8 @@ import { expect, test } from './fixtures';
  * camera file (YUV4MPEG2, which Chromium plays as its camera, looping), and a second browser with that camera tracks
  * it. Each frame carries its number in a row of black and white squares at its top left, so the test knows which
  * frame the camera shows: it takes the viewer's neutral face in the clip's neutral lead-in (`calibrateTracking`), and
- * compares the Action Units the tracker recovers with the timeline's at the frames shown, at the best lag up to a
- * second (the tracker's latency).
+ * compares the Action Units the tracker recovers with the timeline's at the frames they were read from (matched by
+ * the frame's capture time, `trackingState().capturedAt`), at the best lag up to a second (the tracker's smoothing).
  */
 const FPS = 6;
 const SECONDS = 11.5;
@@ -173,6 +173,15 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
           for (let bit = 0; bit < bits; bit++) if (data[4 * ((mark >> 1) * bits * mark + bit * mark + (mark >> 1))] > 128) n |= 1 << bit;
           return n;
         };
+        // Every frame the video presents, by its capture time: the tracker reads the same frames (its Action Units
+        // carry the capture time of the frame they come from), so each sample is matched with the frame it was made of.
+        const numbers = new Map<number, number>();
+        let watching = true;
+        const watch = (_now: number, meta: VideoFrameCallbackMetadata): void => {
+          if (meta.captureTime !== undefined) numbers.set(meta.captureTime, shown());
+          if (watching) video.requestVideoFrameCallback(watch);
+        };
+        video.requestVideoFrameCallback(watch);
         const frame = () => new Promise((r) => requestAnimationFrame(r));
         // The neutral face: taken when the clip starts again, in its lead-in.
         let last = shown();
@@ -191,8 +200,10 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
           const state = face.trackingState();
           if (state.frames === frames) continue;
           frames = state.frames;
-          if (state.calibrated) samples.push({ frame: shown(), e: face.getEffectiveActionUnits() });
+          const shownThen = numbers.get(state.capturedAt);
+          if (state.calibrated && shownThen !== undefined) samples.push({ frame: shownThen, e: face.getEffectiveActionUnits() });
         }
+        watching = false;
         const state = face.trackingState();
         face.stopTracking();
         return { samples, state };
@@ -202,8 +213,8 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
     console.log(`tracking: ${run.samples.length} samples, ${JSON.stringify(run.state)}`);
     expect(run.samples.length).toBeGreaterThan(20);
     const tracked = run.samples.map((s) => UNITS.map(([, ids]) => ids.reduce((sum, id) => sum + s.e[id], 0) / ids.length));
-    // The timeline at the frame each sample was made from: the frame shown then, less the tracker's lag (the best of
-    // 0 to a second, for all units at once).
+    // The timeline at the frame each sample was made from, less a lag for the tracker's smoothing (the best of 0 to a
+    // second, for all units at once).
     let best = { lag: 0, mean: -Infinity, r: [] as number[] };
     for (let lag = 0; lag <= FPS; lag++) {
       const r = UNITS.map((_, u) =>

@@ -20,6 +20,11 @@ export interface TrackingState {
   frames: number;
   /** From a frame's capture to its Action Units in the overlay, milliseconds (smoothed; 0 before the first). */
   latencyMs: number;
+  /**
+   * When the camera frame the Action Units come from was captured, on the page's clock (`performance.now()`; the
+   * time it was shown where the browser does not say): for matching them with what the camera saw.
+   */
+  capturedAt: number;
   /** The face mesh's own time per frame, from handing it the frame to its landmarks, milliseconds (smoothed). */
   processMs: number;
   /** Whether the viewer's neutral face is known. */
@@ -86,6 +91,7 @@ export class FaceTracker {
     frames: 0,
     latencyMs: 0,
     processMs: 0,
+    capturedAt: 0,
     calibrated: false,
     face: false,
     message: '',
@@ -229,6 +235,7 @@ export class FaceTracker {
     if (!ready) return;
     this.status.message = '';
     this.overlay(TRACKED_UNIT_IDS, this.units.values);
+    this.status.capturedAt = this.frameAt;
     const latency = performance.now() - this.frameAt;
     this.status.latencyMs = this.status.latencyMs === 0 ? latency : 0.8 * this.status.latencyMs + 0.2 * latency;
   }

@@ -97,11 +97,21 @@ export class LiveController {
     this.tracker = null;
   }
 
-  /** What the webcam tracker is doing: `{ on, fps, frames, latencyMs, processMs, calibrated, face, message }`. */
+  /** What the webcam tracker is doing: `{ on, fps, frames, latencyMs, processMs, capturedAt, calibrated, face, message }`. */
   trackingState(): TrackingState {
     this.parts.alive();
     return (
-      this.tracker?.state() ?? { on: false, fps: 0, frames: 0, latencyMs: 0, processMs: 0, calibrated: false, face: false, message: '' }
+      this.tracker?.state() ?? {
+        on: false,
+        fps: 0,
+        frames: 0,
+        latencyMs: 0,
+        processMs: 0,
+        capturedAt: 0,
+        calibrated: false,
+        face: false,
+        message: '',
+      }
     );
   }
 
