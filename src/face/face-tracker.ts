@@ -178,6 +178,7 @@ export class FaceTracker {
     void this.mesh?.close();
     this.mesh = null;
     this.video = null;
+    this.input.image = null;
     if (this.alive()) this.overlay(TRACKED_UNIT_IDS, this.zeros);
   }
 
@@ -197,25 +198,29 @@ export class FaceTracker {
 
   /** Waits for the video's next frame and reads it. */
   private next(): void {
-    const video = this.video;
-    if (!this.running || !video) return;
-    video.requestVideoFrameCallback((now, meta) => {
-      if (!this.running || !this.mesh) return;
-      if (!this.alive()) {
-        this.stop();
-        return;
-      }
-      // A camera frame's capture time where the browser gives it, else when it was shown.
-      this.frameAt = (meta as { captureTime?: number }).captureTime ?? now;
-      this.sentAt = performance.now();
-      this.mesh
-        .send({ image: video })
-        .catch((error: unknown) => {
-          this.status.message = `the face tracker failed: ${(error as Error).message}`;
-        })
-        .finally(() => this.next());
-    });
+    if (this.running && this.video) this.video.requestVideoFrameCallback(this.onFrame);
   }
+
+  // The per-frame callbacks are made once (a camera frame is read 30 times a second); the input record is reused.
+  private readonly input: { image: HTMLVideoElement | null } = { image: null };
+  private readonly onFrame = (now: number, meta: VideoFrameCallbackMetadata): void => {
+    const video = this.video;
+    if (!this.running || !this.mesh || !video) return;
+    if (!this.alive()) {
+      this.stop();
+      return;
+    }
+    // A camera frame's capture time where the browser gives it, else when it was shown.
+    this.frameAt = meta.captureTime ?? now;
+    this.sentAt = performance.now();
+    this.input.image = video;
+    this.mesh.send(this.input as { image: HTMLVideoElement }).then(this.onSent, this.onFailed);
+  };
+  private readonly onSent = (): void => this.next();
+  private readonly onFailed = (error: unknown): void => {
+    this.status.message = `the face tracker failed: ${(error as Error).message}`;
+    this.next();
+  };
 
   private results(results: FaceMeshResults): void {
     if (!this.running || !this.alive()) return;
