@@ -36,8 +36,7 @@ export type { ActionUnitListing, PresetListing, SideCode } from '../core/express
 export type { HeadPose } from '../core/expression/head-pose';
 export { EMOTIONS, type Emotion, type EmotionVariant } from '../core/expression/emfacs';
 export { ARKIT_BLENDSHAPES, type ARKitBlendshape } from '../core/expression/arkit';
-export type { TrackingOptions } from '../face/face-tracker';
-export type { TrackingState } from '../face/tracking-state';
+export type { TrackingOptions, TrackingState } from '../face/face-tracker';
 export { EYE_SIMULATION_DEFAULTS, type EyeSimulationOptions } from '../core/expression/eye-simulation';
 export type { SkinParameters } from '../core/solver/skin-parameters';
 export type {

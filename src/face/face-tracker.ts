@@ -1,5 +1,4 @@
 import { LandmarkUnits, TRACKED_UNIT_IDS, type Landmark } from '../core/expression/landmark-units';
-import { idleTrackingState, type TrackingState } from './tracking-state';
 
 /** Where the tracker's pictures come from, and how it reads them. */
 export interface TrackingOptions {
@@ -9,6 +8,31 @@ export interface TrackingOptions {
   calibrationMs?: number;
   /** Time constant of the smoothing, milliseconds; default 50. */
   smoothingMs?: number;
+}
+
+/** What the tracker is doing (`face.trackingState()`). */
+export interface TrackingState {
+  /** Whether it runs. */
+  on: boolean;
+  /** Frames it read in the last second. */
+  fps: number;
+  /** Frames it read since it started (a reader of its Action Units can tell a new frame by this). */
+  frames: number;
+  /** From a frame's capture to its Action Units in the overlay, milliseconds (smoothed; 0 before the first). */
+  latencyMs: number;
+  /**
+   * When the camera frame the Action Units come from was captured, on the page's clock (`performance.now()`; the
+   * time it was shown where the browser does not say): for matching them with what the camera saw.
+   */
+  capturedAt: number;
+  /** The face mesh's own time per frame, from handing it the frame to its landmarks, milliseconds (smoothed). */
+  processMs: number;
+  /** Whether the viewer's neutral face is known. */
+  calibrated: boolean;
+  /** Whether the last frame had a face in it. */
+  face: boolean;
+  /** What went wrong last, or what to do ("no face in view"); empty when all is well. */
+  message: string;
 }
 
 /** The part of MediaPipe Face Mesh's script API (`window.FaceMesh`) the tracker uses. */
@@ -61,7 +85,17 @@ export class FaceTracker {
   private sentAt = 0;
   private readonly times = new Float64Array(64);
   private timeCount = 0;
-  private readonly status: TrackingState = idleTrackingState();
+  private readonly status: TrackingState = {
+    on: false,
+    fps: 0,
+    frames: 0,
+    latencyMs: 0,
+    processMs: 0,
+    capturedAt: 0,
+    calibrated: false,
+    face: false,
+    message: '',
+  };
   private readonly zeros = new Float64Array(TRACKED_UNIT_IDS.length);
 
   constructor(

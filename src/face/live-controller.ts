@@ -5,8 +5,7 @@ import type { Timeline } from '../core/timeline/timeline';
 import type { FaceParts } from './face-parts';
 import { assetUrl } from './face-assets';
 import type { PackageFile } from './package-assets';
-import type { FaceTracker, TrackingOptions } from './face-tracker';
-import { idleTrackingState, type TrackingState } from './tracking-state';
+import type { FaceTracker, TrackingOptions, TrackingState } from './face-tracker';
 import type { TimelineController } from './timeline-controller';
 
 /** Driving the face from trackers: ARKit blendshape streams and OpenFace files. */
@@ -101,7 +100,19 @@ export class LiveController {
   /** What the webcam tracker is doing: `{ on, fps, frames, latencyMs, processMs, capturedAt, calibrated, face, message }`. */
   trackingState(): TrackingState {
     this.parts.alive();
-    return this.tracker?.state() ?? idleTrackingState();
+    return (
+      this.tracker?.state() ?? {
+        on: false,
+        fps: 0,
+        frames: 0,
+        latencyMs: 0,
+        processMs: 0,
+        capturedAt: 0,
+        calibrated: false,
+        face: false,
+        message: '',
+      }
+    );
   }
 
   /** The video the webcam tracker reads, for a preview (null while it does not run). */
