@@ -85,25 +85,17 @@ export class FaceTracker {
   private sentAt = 0;
   private readonly times = new Float64Array(64);
   private timeCount = 0;
-  private readonly status: TrackingState = {
-    on: false,
-    fps: 0,
-    frames: 0,
-    latencyMs: 0,
-    processMs: 0,
-    capturedAt: 0,
-    calibrated: false,
-    face: false,
-    message: '',
-  };
+  private readonly status: TrackingState;
   private readonly zeros = new Float64Array(TRACKED_UNIT_IDS.length);
 
   constructor(
     private readonly overlay: (ids: readonly string[], values: ArrayLike<number>) => void,
     private readonly fileUrl: (name: string) => string,
     private readonly alive: () => boolean,
+    idle: Readonly<TrackingState>,
     options: TrackingOptions = {},
   ) {
+    this.status = { ...idle };
     this.units = new LandmarkUnits({ calibrationMs: options.calibrationMs, smoothingMs: options.smoothingMs });
   }
 

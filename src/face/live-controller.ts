@@ -8,6 +8,22 @@ import type { PackageFile } from './package-assets';
 import type { FaceTracker, TrackingOptions, TrackingState } from './face-tracker';
 import type { TimelineController } from './timeline-controller';
 
+/**
+ * A tracker's state before it starts: kept here, in the library's entry, and handed to the tracker (which is loaded
+ * only when tracking starts).
+ */
+const IDLE_TRACKING: Readonly<TrackingState> = Object.freeze({
+  on: false,
+  fps: 0,
+  frames: 0,
+  latencyMs: 0,
+  processMs: 0,
+  capturedAt: 0,
+  calibrated: false,
+  face: false,
+  message: '',
+});
+
 /** Driving the face from trackers: ARKit blendshape streams and OpenFace files. */
 export class LiveController {
   /** The 52 blendshape values last given, in Apple's order. */
@@ -71,6 +87,7 @@ export class LiveController {
       (ids, values) => this.parts.expression?.setOverlay(ids, values),
       (name) => assetUrl(`mediapipe/face_mesh/${name}` as PackageFile, this.parts.assetBase),
       () => !this.parts.disposed,
+      IDLE_TRACKING,
       options,
     );
     this.tracker = tracker;
@@ -100,19 +117,7 @@ export class LiveController {
   /** What the webcam tracker is doing: `{ on, fps, frames, latencyMs, processMs, capturedAt, calibrated, face, message }`. */
   trackingState(): TrackingState {
     this.parts.alive();
-    return (
-      this.tracker?.state() ?? {
-        on: false,
-        fps: 0,
-        frames: 0,
-        latencyMs: 0,
-        processMs: 0,
-        capturedAt: 0,
-        calibrated: false,
-        face: false,
-        message: '',
-      }
-    );
+    return this.tracker?.state() ?? { ...IDLE_TRACKING };
   }
 
   /** The video the webcam tracker reads, for a preview (null while it does not run). */
