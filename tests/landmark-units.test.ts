@@ -35,6 +35,9 @@ function neutralFace(): Landmark[] {
   set(14, 320, 289);
   set(1, 320, 250); // nose tip
   set(152, 320, 330); // chin
+  // The face's sides by the cheekbones, 60 / 0.46 px apart (the eye distance in face widths).
+  set(234, 320 - 30 / 0.46, 215);
+  set(454, 320 + 30 / 0.46, 215);
   return points.map(([x, y]) => ({ x: x / 640, y: y / 480 }));
 }
 
@@ -92,6 +95,21 @@ describe('Action Units from tracker landmarks', () => {
     expect(at(u, 'AU25')).toBeCloseTo(1, 6);
     expect(at(u, 'AU43L')).toBeCloseTo(0.5, 6);
     expect(at(u, 'AU43R')).toBeLessThan(1e-9);
+  });
+
+  it('read no smile when closed lids move the eye corners apart, as the refined face mesh does', () => {
+    const closed = run(
+      moved(neutralFace(), {
+        33: [-4, 0],
+        133: [2, 0],
+        362: [-2, 0],
+        263: [4, 0],
+        ...Object.fromEntries([160, 159, 158, 387, 386, 385].map((i) => [i, [0, 9] as [number, number]])),
+      }),
+    );
+    expect(at(closed, 'AU43L')).toBeCloseTo(0.9, 6);
+    expect(at(closed, 'AU43R')).toBeCloseTo(0.9, 6);
+    for (const id of ['AU12L', 'AU12R', 'AU15L', 'AU15R', 'AU1L', 'AU4L']) expect(at(closed, id), id).toBeLessThan(1e-9);
   });
 
   it('do not change with the face’s place, size or tilt in the picture', () => {
