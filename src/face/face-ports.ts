@@ -9,6 +9,7 @@ import type { Timeline } from '../core/timeline/timeline';
 import type { RenderTiming } from '../render/render-timing';
 import type { MaterialDescription } from '../render/materials';
 import type { HairSnapshot } from '../render/hair-view';
+import type { FrameHook } from '../render/head-view';
 import type { HeadWriteOptions, JawPose, MorphClip, MorphShape } from '../render/gltf-export';
 import type { AppearanceOptions, CameraOptions, LightOptions, RenderOptions } from '../render/view-options';
 import type { SkinSimulationStats } from '../sim/main/skin-simulation';
@@ -176,4 +177,8 @@ export interface FaceView {
   snapshot(): Promise<Blob>;
   measureRender(frames?: number): RenderTiming;
   describeMaterials(): MaterialDescription[];
+  /** Runs `hook` before each frame is drawn; 'hold' from it defers the drawing (see HeadView.onFrame). */
+  onFrame(hook: FrameHook): () => void;
+  /** Runs `hook` after each drawn frame. */
+  onRender(hook: () => void): () => void;
 }

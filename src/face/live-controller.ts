@@ -32,6 +32,8 @@ export class LiveController {
   private readonly units = new Float64Array(BLENDSHAPE_UNIT_IDS.length);
   /** The webcam tracker while it runs or starts. */
   private tracker: FaceTracker | null = null;
+  /** Takes the tracker's hook out of the view's frames. */
+  private unhook: (() => void) | null = null;
 
   constructor(
     private readonly parts: FaceParts,
@@ -97,6 +99,16 @@ export class LiveController {
       if (this.tracker === tracker) this.tracker = null;
       throw error;
     }
+    // The camera's frames go first: the face is drawn once the face mesh has answered (see holdsDrawing).
+    if (this.tracker === tracker) {
+      const view = this.parts.shown();
+      const unhookFrame = view.onFrame((now) => (tracker.holdsDrawing(now) ? 'hold' : undefined));
+      const unhookRender = view.onRender(() => tracker.drawn(performance.now()));
+      this.unhook = () => {
+        unhookFrame();
+        unhookRender();
+      };
+    }
   }
 
   /**
@@ -110,6 +122,8 @@ export class LiveController {
 
   /** Stops the webcam tracker (a camera it opened is let go) and takes its Action Units out of the overlay. */
   stopTracking(): void {
+    this.unhook?.();
+    this.unhook = null;
     this.tracker?.stop();
     this.tracker = null;
   }
