@@ -30,7 +30,7 @@ test('a non-finite input throws a clear error and the skin keeps its last good s
   expect(errors.infiniteWeight).toMatch(/weight must be a finite number from 0 to 1, got Infinity/);
   expect(errors.nanParameter).toBe('skin parameters: positionStiffness: expected a number from 0 to 1, got NaN');
   expect(errors.unknownParameter).toMatch(
-    /^skin parameters: expected one of the options positionIterations, .*, foldMomentum, got "stiffness"$/,
+    /^skin parameters: expected one of the options positionIterations, .*, foldMomentum, pretension, got "stiffness"$/,
   );
 
   const after = await page.evaluate(async () => {

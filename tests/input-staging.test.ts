@@ -31,7 +31,8 @@ describe('InputStaging.setParameters', () => {
     expect(() => s.setParameters({ momentum: 0.95 })).toThrow('skin parameters: momentum: expected a number from 0 to 0.9, got 0.95');
     expect(() => s.setParameters({ stiffness: 1 } as never)).toThrow(
       'skin parameters: expected one of the options positionIterations, lengthIterations, positionStiffness, lengthStiffness, ' +
-        'muscleStiffness, wrinkleSpacing, inwardResistance, bulge, sleepTolerance, momentum, startMomentum, foldMomentum, got "stiffness"',
+        'muscleStiffness, wrinkleSpacing, inwardResistance, bulge, sleepTolerance, momentum, startMomentum, foldMomentum, ' +
+        'pretension, got "stiffness"',
     );
     expect(() => s.setParameters(null as never)).toThrow('skin parameters: expected an object of options, got null');
     expect(s.parameters()).toEqual(SKIN_DEFAULTS);

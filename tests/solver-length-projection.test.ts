@@ -55,4 +55,36 @@ describe('length projection', () => {
     }
     expect(worstLengthError(s.buffers.positions)).toBeLessThan(1e-3);
   });
+
+  it('with pretension, leaves edges shortened within the band as they are and brings shorter ones back to it', () => {
+    const p = 0.15;
+    const ratios = (x: Float32Array): number[] =>
+      Array.from(topology.restLength, (r, e) => {
+        const a = 3 * topology.edges[2 * e];
+        const b = 3 * topology.edges[2 * e + 1];
+        return Math.hypot(x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]) / r;
+      });
+    // Shortened by a half of the band: nothing to correct.
+    const within = new SkinSolver(topology, { activeRegion: false });
+    within.setParameters({ ...FREE, pretension: p });
+    const x = within.buffers.positions;
+    for (let i = 0; i < x.length; i++) x[i] *= 1 - p / 2;
+    const before = x.slice();
+    within.wake();
+    within.step();
+    expect(Math.max(...Array.from(x, (v, i) => Math.abs(v - before[i])))).toBeLessThan(1e-9);
+    // Compressed to six tenths: each edge comes back into the band, none past its rest length.
+    const under = new SkinSolver(topology, { activeRegion: false });
+    under.setParameters({ ...FREE, pretension: p });
+    const random = mulberry32(13);
+    const y = under.buffers.positions;
+    for (let i = 0; i < y.length; i++) y[i] = 0.6 * y[i] + (i % 3 === 2 ? (random() - 0.5) * 0.0001 : 0);
+    for (let f = 0; f < FRAMES; f++) {
+      under.wake();
+      under.step();
+    }
+    const after = ratios(y);
+    expect(Math.min(...after)).toBeGreaterThan(1 - p - 1e-3);
+    expect(Math.max(...after)).toBeLessThan(1 + 1e-3);
+  });
 });

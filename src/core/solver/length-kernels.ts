@@ -11,8 +11,17 @@ import type { SkinTopology } from './topology';
  * under a muscle, where a compressed edge also nudges its ends out along their rest normals. With a `board`, two
  * threads share the pass: this one projects half `half` (0 or 1) of each colour, and the two meet after each colour;
  * without, this thread projects every edge. Within a colour no two edges share a vertex, so the result is the same.
+ * An edge between `1 - pretension` times its rest length and its rest length is left as it is (see
+ * SkinParameters.pretension): shorter, it is pushed back to the lower end of that band.
  */
-export function projectLengths(a: PartArrays, stiffness: number, bulge: number, board: Int32Array | null, half: number): void {
+export function projectLengths(
+  a: PartArrays,
+  stiffness: number,
+  bulge: number,
+  pretension: number,
+  board: Int32Array | null,
+  half: number,
+): void {
   const { ends, rest, runs } = a.edges;
   const x = a.positions;
   for (let c = 0; 2 * c + 2 < runs.length; c++) {
@@ -31,8 +40,8 @@ export function projectLengths(a: PartArrays, stiffness: number, bulge: number, 
         h0 = h;
       }
     }
-    projectFreeEdges(x, ends, rest, stiffness, f0, f1);
-    projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, h0, h1);
+    projectFreeEdges(x, ends, rest, stiffness, 1 - pretension, f0, f1);
+    projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, 1 - pretension, h0, h1);
     if (board) meet(board);
   }
 }
@@ -44,9 +53,20 @@ export function projectLengths(a: PartArrays, stiffness: number, bulge: number, 
  * (within 0.5 % of it from 0.6 to 1.5 times the rest length, zero at the same length, no pole: rest lengths are
  * positive, as zero-area triangles are dropped). The loop is bound by the divider, which roots and divisions share;
  * cruder forms cost less but push compressed edges apart too little (docs/solver-notes.md, "Length projection").
+ * The length aimed at is the edge's own within the band from `slack` times the rest length to the rest length (see
+ * projectLengths), the band's nearer end outside it: a clamp of |d|², no branch.
  */
-function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
+function projectFreeEdges(
+  x: Float32Array,
+  ends: Uint32Array,
+  rest: Float32Array,
+  stiffness: number,
+  slack: number,
+  e0: number,
+  e1: number,
+): void {
   const s2 = 2 * stiffness; // half of it, times the approximant's 4
+  const slack2 = slack * slack;
   // The record size read once into a local: an imported binding in the loop's test slowed the partner thread's
   // copy of this loop threefold under Node's module loader.
   const r = EDGE_RECORD;
@@ -65,7 +85,8 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
     const dz = bz - az;
     const d2 = dx * dx + dy * dy + dz * dz;
     const r0 = rest[j + 2];
-    const r2 = r0 * r0;
+    const rest2 = r0 * r0;
+    const r2 = Math.min(Math.max(d2, slack2 * rest2), rest2);
     const k = (s2 * (d2 * d2 - r2 * r2)) / (5 * d2 * d2 + 10 * d2 * r2 + r2 * r2);
     x[ia] = ax + k * dx;
     x[ia + 1] = ay + k * dy;
@@ -77,9 +98,9 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
 }
 
 /**
- * Length projections of held edges `e0..e1`: as projectFreeEdges, with the exact length error, and a compressed edge
- * pushes each end along its bulge direction (`directions`) by `bulge` times its compression times the edge's muscle
- * weight. (The compression would need a second division without the root, which saves nothing.)
+ * Length projections of held edges `e0..e1`: as projectFreeEdges, with the exact length error, and an edge compressed
+ * past its slack band pushes each end along its bulge direction (`directions`) by `bulge` times that compression times
+ * the edge's muscle weight. (The compression would need a second division without the root, which saves nothing.)
  */
 function projectHeldEdges(
   x: Float32Array,
@@ -88,6 +109,7 @@ function projectHeldEdges(
   directions: Float32Array,
   stiffness: number,
   bulge: number,
+  slack: number,
   e0: number,
   e1: number,
 ): void {
@@ -108,11 +130,16 @@ function projectHeldEdges(
     const dz = bz - az;
     const len = Math.sqrt(dx * dx + dy * dy + dz * dz);
     if (len === 0) continue;
-    const error = len - rest[j + 2];
+    const r0 = rest[j + 2];
+    // Stretched past the rest length, or compressed past the band's lower end (the other is 0); without branches that
+    // half the edges take (compressed or stretched at random): (|e| + e) / 2 is max(0, e), (e - |e|) / 2 min(0, e).
+    const over = len - r0;
+    const under = len - slack * r0;
+    const short = (under - Math.abs(under)) * 0.5;
+    const error = (over + Math.abs(over)) * 0.5 + short;
     const k = (s * error) / len;
-    // bulge * weight * max(0, -error), without a branch that half the edges take (compressed or stretched at random):
-    // (|error| - error) / 2 is exactly -error or 0.
-    const push = bulge * rest[j + 3] * ((Math.abs(error) - error) * 0.5);
+    // bulge * weight * the compression past the band.
+    const push = -bulge * rest[j + 3] * short;
     x[ia] = ax + k * dx + push * directions[ia];
     x[ia + 1] = ay + k * dy + push * directions[ia + 1];
     x[ia + 2] = az + k * dz + push * directions[ia + 2];

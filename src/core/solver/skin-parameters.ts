@@ -50,6 +50,12 @@ export interface SkinParameters {
    * FOLD_CHOICE_MOMENTUM (docs/solver-notes.md, "Fold momentum").
    */
   foldMomentum: number;
+  /**
+   * Share of its rest length an edge may lose before it resists: the tension skin carries in the body, which a
+   * compression first releases before the skin goes slack and folds. Young skin carries more (it retracts more when
+   * cut free) and folds less; 0 folds at the first compression. Stretching is resisted from the rest length as ever.
+   */
+  pretension: number;
 }
 
 export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
@@ -65,6 +71,7 @@ export const SKIN_DEFAULTS: Readonly<SkinParameters> = {
   momentum: 0.5,
   startMomentum: 0.7,
   foldMomentum: 0.85,
+  pretension: 0,
 };
 
 /**
@@ -84,6 +91,7 @@ export const SKIN_RANGES: Readonly<Record<keyof SkinParameters, Range>> = Object
   momentum: [0, 0.9],
   startMomentum: [0, 0.9],
   foldMomentum: [0, 0.9],
+  pretension: [0, 0.5],
 });
 
 /** The parameters that count passes, and so must be whole. */

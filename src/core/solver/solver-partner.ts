@@ -53,7 +53,7 @@ export function runShare(
   const thread = side === PARTNER ? 1 : 0;
   switch (job) {
     case JOB_LENGTHS:
-      for (let pass = 0; pass < count; pass++) projectLengths(arrays, a, b, words, thread);
+      for (let pass = 0; pass < count; pass++) projectLengths(arrays, a, b, c, words, thread);
       return 0;
     case JOB_POSITIONS:
       projectPositions(arrays, a, b, c, from, to);

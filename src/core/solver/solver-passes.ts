@@ -67,7 +67,7 @@ export class FramePasses {
    * partner if there is one (one job for all the passes).
    */
   projectLengths(passes: number, p: SkinParameters): void {
-    this.share(JOB_LENGTHS, passes, p.lengthStiffness, p.bulge);
+    this.share(JOB_LENGTHS, passes, p.lengthStiffness, p.bulge, p.pretension);
   }
 
   /**

@@ -46,6 +46,7 @@ const PARAMETER_INDEX: Readonly<Record<keyof SkinParameters, number>> = {
   momentum: 9,
   foldMomentum: 10,
   startMomentum: 11,
+  pretension: 12,
 };
 const PARAMETER_NAMES = Object.keys(PARAMETER_INDEX) as (keyof SkinParameters)[];
 export const PARAMETER_COUNT = PARAMETER_NAMES.length;
