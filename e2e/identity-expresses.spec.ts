@@ -8,8 +8,12 @@ import { expect, test } from './fixtures';
  * head does: AU12 lifts its lip corners and AU1 its inner brows by amounts within 30 % of the default head's, relative
  * to the size of the face (its height from the brows to the chin), and up. Each head is measured at its own landmarks
  * (`describeHead().landmarks`: found on the default head, carried over to a person's by the same warp as the rig): the
- * skin vertices nearest the mouth corners, the inner brows (the brow landmarks 40 % of the way to the midline) and the chin.
+ * skin vertices nearest the mouth corners and the chin, and the skin around the inner brows (the brow landmarks 40 % of
+ * the way to the midline).
  */
+
+/** How far around an inner brow's point its skin is taken (m): about a brow's height, over the low head's spacing. */
+const BROW_RADIUS = 0.006;
 
 /**
  * How far a pair of points moves under an Action Unit (the mean), over the face's height (brows to chin), and the
@@ -17,7 +21,7 @@ import { expect, test } from './fixtures';
  */
 async function lift(page: Page, id: string, points: 'mouth' | 'brows'): Promise<{ amount: number; up: number }> {
   return page.evaluate(
-    async ({ id, points }) => {
+    async ({ id, points, radius }) => {
       const face = window.face;
       const l = face.describeHead().landmarks;
       const { rest } = face.getSkin();
@@ -30,8 +34,22 @@ async function lift(page: Page, id: string, points: 'mouth' | 'brows'): Promise<
         }
         return best;
       };
+      // A mouth corner is one vertex; an inner brow is a patch of skin: the vertices within BROW_RADIUS of the point,
+      // each weighted by how near it is (on the low head one vertex stands for 4 to 5 mm, and which one is nearest a
+      // point moves with the head's shape).
+      const around = (p: readonly number[]): [number, number][] => {
+        const out: [number, number][] = [];
+        for (let v = 0; v < rest.length / 3; v++) {
+          const d = Math.hypot(rest[3 * v] - p[0], rest[3 * v + 1] - p[1], rest[3 * v + 2] - p[2]);
+          if (d < radius) out.push([v, 1 - d / radius]);
+        }
+        return out.length > 0 ? out : [[nearest(p), 1]];
+      };
       const inner = (p: readonly number[]): number[] => [0.6 * p[0], p[1], p[2]];
-      const pair = points === 'mouth' ? [l['mouth-l'], l['mouth-r']].map(nearest) : [inner(l['brow-l']), inner(l['brow-r'])].map(nearest);
+      const pair =
+        points === 'mouth'
+          ? [l['mouth-l'], l['mouth-r']].map((p) => [[nearest(p), 1]] as [number, number][])
+          : [inner(l['brow-l']), inner(l['brow-r'])].map(around);
       const chin = nearest(l.chin);
       // From the head's rest shape: the unit at full intensity is its muscles fully contracted, an old face's resting
       // pull (src/core/head/identity-skin.ts) included.
@@ -40,15 +58,23 @@ async function lift(page: Page, id: string, points: 'mouth' | 'brows'): Promise<
       face.setActionUnit(id, 1);
       await face.settle(120_000);
       const { positions } = face.getSkin();
-      // How far each point moves (FACS's AU12 pulls the corners up and out, AU1 the inner brows up and in).
-      const moved = pair.map((v) =>
-        Math.hypot(positions[3 * v] - neutral[3 * v], positions[3 * v + 1] - neutral[3 * v + 1], positions[3 * v + 2] - neutral[3 * v + 2]),
-      );
+      // Each point's move: the weighted mean of its vertices' (FACS's AU12 pulls the corners up and out, AU1 the inner
+      // brows up and in).
+      const moves = pair.map((patch) => {
+        const m = [0, 0, 0];
+        let total = 0;
+        for (const [v, w] of patch) {
+          for (let k = 0; k < 3; k++) m[k] += w * (positions[3 * v + k] - neutral[3 * v + k]);
+          total += w;
+        }
+        return m.map((x) => x / total);
+      });
+      const moved = moves.map((m) => Math.hypot(m[0], m[1], m[2]));
       const browHeight = (l['brow-l'][1] + l['brow-r'][1]) / 2;
-      const up = pair.reduce((sum, v) => sum + (positions[3 * v + 1] - neutral[3 * v + 1]) / 2, 0);
+      const up = (moves[0][1] + moves[1][1]) / 2;
       return { amount: (moved[0] + moved[1]) / 2 / Math.abs(browHeight - rest[3 * chin + 1]), up };
     },
-    { id, points },
+    { id, points, radius: BROW_RADIUS },
   );
 }
 

@@ -429,7 +429,11 @@ export class EmbeddedFace {
     // The skin's age-given parameters over what was carried; back to the defaults after a person's head.
     if (aged) simulation.setParameters(aged.parameters);
     else if (this.agedSkinShown)
-      simulation.setParameters({ wrinkleSpacing: SKIN_DEFAULTS.wrinkleSpacing, positionStiffness: SKIN_DEFAULTS.positionStiffness });
+      simulation.setParameters({
+        wrinkleSpacing: SKIN_DEFAULTS.wrinkleSpacing,
+        positionStiffness: SKIN_DEFAULTS.positionStiffness,
+        pretension: SKIN_DEFAULTS.pretension,
+      });
     this.agedSkinShown = aged !== undefined;
     if (aged) expression.setResting(aged.tone);
     this.parts.emit('head');
