@@ -40,7 +40,8 @@ export function projectLengths(
         h0 = h;
       }
     }
-    projectFreeEdges(x, ends, rest, stiffness, 1 - pretension, f0, f1);
+    if (pretension > 0) projectSlackFreeEdges(x, ends, rest, stiffness, 1 - pretension, f0, f1);
+    else projectFreeEdges(x, ends, rest, stiffness, f0, f1);
     projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, 1 - pretension, h0, h1);
     if (board) meet(board);
   }
@@ -53,10 +54,45 @@ export function projectLengths(
  * (within 0.5 % of it from 0.6 to 1.5 times the rest length, zero at the same length, no pole: rest lengths are
  * positive, as zero-area triangles are dropped). The loop is bound by the divider, which roots and divisions share;
  * cruder forms cost less but push compressed edges apart too little (docs/solver-notes.md, "Length projection").
- * The length aimed at is the edge's own within the band from `slack` times the rest length to the rest length (see
- * projectLengths), the band's nearer end outside it: a clamp of |d|², no branch.
  */
-function projectFreeEdges(
+function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array, stiffness: number, e0: number, e1: number): void {
+  const s2 = 2 * stiffness; // half of it, times the approximant's 4
+  // The record size read once into a local: an imported binding in the loop's test slowed the partner thread's
+  // copy of this loop threefold under Node's module loader.
+  const r = EDGE_RECORD;
+  const j1 = r * e1;
+  for (let j = r * e0; j < j1; j += r) {
+    const ia = ends[j];
+    const ib = ends[j + 1];
+    const ax = x[ia],
+      ay = x[ia + 1],
+      az = x[ia + 2];
+    const bx = x[ib],
+      by = x[ib + 1],
+      bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const d2 = dx * dx + dy * dy + dz * dz;
+    const r0 = rest[j + 2];
+    const r2 = r0 * r0;
+    const k = (s2 * (d2 * d2 - r2 * r2)) / (5 * d2 * d2 + 10 * d2 * r2 + r2 * r2);
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+  }
+}
+
+/**
+ * projectFreeEdges for a skin with pretension: the length aimed at is the edge's own within the band from `slack`
+ * times the rest length to the rest length (see projectLengths), the band's nearer end outside it, a clamp of |d|².
+ * A loop of its own: the clamp lengthens the path to the divider, and made every free edge 60 % slower (11 to 18 ns an
+ * edge in Node) where there is no band.
+ */
+function projectSlackFreeEdges(
   x: Float32Array,
   ends: Uint32Array,
   rest: Float32Array,
@@ -65,11 +101,9 @@ function projectFreeEdges(
   e0: number,
   e1: number,
 ): void {
-  const s2 = 2 * stiffness; // half of it, times the approximant's 4
+  const s2 = 2 * stiffness;
   const slack2 = slack * slack;
-  // The record size read once into a local: an imported binding in the loop's test slowed the partner thread's
-  // copy of this loop threefold under Node's module loader.
-  const r = EDGE_RECORD;
+  const r = EDGE_RECORD; // read once, as in projectFreeEdges
   const j1 = r * e1;
   for (let j = r * e0; j < j1; j += r) {
     const ia = ends[j];
