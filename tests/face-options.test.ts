@@ -13,6 +13,7 @@ describe('createFace options', () => {
       light: { keyAzimuth: 90 },
       motionResolution: 1,
       slowDrawMs: 0,
+      antialias: 'still',
       resolutionUnused: undefined,
     });
     expect(o).toMatchObject({
@@ -24,6 +25,7 @@ describe('createFace options', () => {
       light: { keyAzimuth: 90 },
       motionResolution: 1,
       slowDrawMs: 0,
+      antialias: 'still',
       eyeSimulation: false,
     });
   });
@@ -52,7 +54,8 @@ describe('createFace options', () => {
       [
         { resolutoin: 'low' },
         'createFace: expected one of the options resolution, rig, model, identity, solver, workers, panels, expression, facs, ' +
-          'eyeSimulation, light, appearance, background, motionResolution, slowDrawMs, assetBase, onResolution, autosave, ' +
+          'eyeSimulation, light, appearance, background, motionResolution, slowDrawMs, antialias, assetBase, onResolution, ' +
+          'autosave, ' +
           'got "resolutoin"',
       ],
       [{ autosave: 1 }, 'createFace: autosave: expected true, false or a key, got 1'],
@@ -67,6 +70,7 @@ describe('createFace options', () => {
       [{ motionResolution: '0.5' }, 'createFace: motionResolution: expected a number from 0.25 to 1, got "0.5"'],
       [{ slowDrawMs: -1 }, 'createFace: slowDrawMs: expected a finite number of ms, at least 0, got -1'],
       [{ slowDrawMs: Number.POSITIVE_INFINITY }, 'createFace: slowDrawMs: expected a finite number of ms, at least 0, got Infinity'],
+      [{ antialias: true }, 'createFace: antialias: expected one of auto, always, still, got true'],
       [{ autosave: ' ' }, 'createFace: autosave: expected true, false or a key, got " "'],
     ];
     for (const [options, message] of cases) expect(() => checkFaceOptions(options), JSON.stringify(options)).toThrow(message);

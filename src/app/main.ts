@@ -1,4 +1,13 @@
-import { createFace, decodeIdentity, encodeExpression, RESOLUTIONS, type FaceOptions, type Resolution } from '../embed/index';
+import {
+  ANTIALIAS_CHOICES,
+  createFace,
+  decodeIdentity,
+  encodeExpression,
+  RESOLUTIONS,
+  type Antialias,
+  type FaceOptions,
+  type Resolution,
+} from '../embed/index';
 import { HashSync } from './hash-sync';
 import { requestedSolver, requestedWorkers } from './solver-choice';
 
@@ -9,6 +18,12 @@ const SOLVER_STATUS_MS = 500;
 function requestedResolution(): Resolution {
   const r = new URLSearchParams(location.search).get('resolution');
   return RESOLUTIONS.includes(r as Resolution) ? (r as Resolution) : 'medium';
+}
+
+/** `?antialias=auto|always|still` picks how the face is antialiased (FaceOptions.antialias); auto is the default. */
+function requestedAntialias(): Antialias {
+  const a = new URLSearchParams(location.search).get('antialias');
+  return ANTIALIAS_CHOICES.includes(a as Antialias) ? (a as Antialias) : 'auto';
 }
 
 /** Keeps the expression (and a short timeline) in the URL hash once the face is ready. */
@@ -39,6 +54,7 @@ try {
     resolution,
     solver,
     workers: requestedWorkers(location.search),
+    antialias: requestedAntialias(),
     panels: true,
     assetBase: import.meta.env.BASE_URL,
     onResolution: switchResolution,

@@ -60,7 +60,9 @@ export { identityText, STOCK_IDENTITIES, type Ancestry, type Identity, type Name
 export type { RenderTiming } from '../render/render-timing';
 export type { HairPartSnapshot, HairSnapshot } from '../render/hair-view';
 export {
+  ANTIALIAS_CHOICES,
   APPEARANCE_DEFAULTS,
+  type Antialias,
   type AppearanceOptions,
   type CameraOptions,
   type LightOptions,

@@ -98,6 +98,7 @@ export class EmbeddedFace {
       background: viewBackground(options.background),
       motionResolution: options.motionResolution,
       slowDrawMs: options.slowDrawMs,
+      antialias: options.antialias,
     });
     Object.assign(this.view.renderer.domElement.style, { display: 'block', width: '100%', height: '100%' });
     this.parts.view = this.view;

@@ -100,6 +100,16 @@ export const RENDER_DEFAULTS: Readonly<Required<RenderOptions>> = Object.freeze(
 /** A background colour (sRGB hex), or `transparent` to show the page behind the canvas. */
 export type ViewBackground = number | 'transparent';
 
+/**
+ * How the view antialiases: `always` multisamples the canvas; `still` draws a moving face without multisampling and
+ * draws a face at rest, `savePNG` pictures and video frames multisampled offscreen (the same picture); `auto` is
+ * `still` where WebGL runs in software (where multisampling more than doubles a draw) and `always` elsewhere.
+ */
+export type Antialias = 'auto' | 'always' | 'still';
+
+/** The `Antialias` choices, in the order messages list them. */
+export const ANTIALIAS_CHOICES: readonly Antialias[] = ['auto', 'always', 'still'];
+
 /** Options of the view. */
 export interface HeadViewOptions {
   background: ViewBackground;
@@ -118,6 +128,8 @@ export interface HeadViewOptions {
    * or a GPU that cannot fill the canvas at 20 frames a second.
    */
   slowDrawMs: number;
+  /** How the view antialiases (see Antialias). */
+  antialias: Antialias;
 }
 
 /** The view's defaults. */
@@ -127,4 +139,5 @@ export const HEAD_VIEW_DEFAULTS: Readonly<Required<HeadViewOptions>> = Object.fr
   maxPixelRatio: 2,
   motionResolution: 0.5,
   slowDrawMs: 50,
+  antialias: 'auto',
 });
