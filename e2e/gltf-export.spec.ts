@@ -80,16 +80,22 @@ async function largestError(
   for (let v = 0; v < solved.rest.length / 3; v++)
     simOf.set(`${solved.rest[3 * v]},${solved.rest[3 * v + 1]},${solved.rest[3 * v + 2]}`, v);
   let worst = 0;
+  // Checked once for all (an expect per vertex took seconds): every render vertex sits on a simulation vertex at rest.
+  const apart: number[] = [];
   for (let i = 0; i < render.base.length / 3; i++) {
     const v = simOf.get(`${render.base[3 * i]},${render.base[3 * i + 1]},${render.base[3 * i + 2]}`);
-    expect(v, `render vertex ${i} sits on a simulation vertex at rest`).toBeDefined();
+    if (v === undefined) {
+      apart.push(i);
+      continue;
+    }
     const d = Math.hypot(
-      render.shape[3 * i] - solved.positions[3 * v!],
-      render.shape[3 * i + 1] - solved.positions[3 * v! + 1],
-      render.shape[3 * i + 2] - solved.positions[3 * v! + 2],
+      render.shape[3 * i] - solved.positions[3 * v],
+      render.shape[3 * i + 1] - solved.positions[3 * v + 1],
+      render.shape[3 * i + 2] - solved.positions[3 * v + 2],
     );
     worst = Math.max(worst, d);
   }
+  expect(apart, 'render vertices on no simulation vertex at rest').toEqual([]);
   return worst;
 }
 
@@ -128,13 +134,17 @@ test('exportGLTF writes the settled Action Unit and preset as named morph target
       onProgress: (p) => progress.push(`${p.done}/${p.total} ${p.target}`),
     });
     const after = { actionUnits: face.getActionUnits(), presets: face.listPresets(), timeline: face.timelineState() };
-    return { bytes: Array.from(new Uint8Array(await blob.arrayBuffer())), type: blob.type, progress, before, after };
+    // As base64: an array of numbers megabytes long takes Playwright seconds to pass back.
+    const bytes = new Uint8Array(await blob.arrayBuffer());
+    let text = '';
+    for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return { base64: btoa(text), type: blob.type, progress, before, after };
   }, TIMELINE);
   expect(run.type).toBe('model/gltf-binary');
   expect(run.progress).toEqual(['0/2 AU12', '1/2 surprise', '2/2 null']);
   expect(run.after).toEqual(run.before);
 
-  const gltf = await parseGLB(Uint8Array.from(run.bytes));
+  const gltf = await parseGLB(Uint8Array.from(Buffer.from(run.base64, 'base64')));
   const skin = meshNamed(gltf, 'skin');
   expect(skin.morphTargetDictionary).toEqual({ AU12: 0, surprise: 1 });
   expect(skin.geometry.getAttribute('uv')).toBeDefined();
