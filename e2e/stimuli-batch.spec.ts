@@ -87,6 +87,21 @@ test('a 6-stimulus batch writes its pictures, an EMFACS face, its clip and its m
   expect(differs.intensity).toBeGreaterThan(0.2);
   expect(differs.camera).toBeGreaterThan(2);
 
+  // The stimuli after the first were rendered on the page it opened: each is the picture it gives alone, on a new page.
+  const alone = join(dir, 'alone');
+  const aloneList = join(dir, 'alone.json');
+  writeFileSync(
+    aloneList,
+    JSON.stringify({
+      format: 'softface-stimuli',
+      version: 1,
+      defaults: { resolution: 'low', width: 200, height: 150 },
+      stimuli: [{ name: 'smile', expression: { AU12: 1 }, camera: [{ yaw: 40, distance: 0.7 }] }],
+    }),
+  );
+  expect(await stimuli(aloneList, alone)).toContain('wrote smile_i1_l0_c0_low.png');
+  expect(readFileSync(join(alone, 'smile_i1_l0_c0_low.png')).equals(picture(files[3]))).toBe(true);
+
   // Run again: every file is there, so nothing is rendered and nothing is touched.
   const all = [...files, 'brows_i1_l0_c0_low.webm', 'emfacs_surprise-prototype-1_i1_l0_c0_low.png'];
   const times = all.map((f) => statSync(join(out, f)).mtimeMs);
