@@ -46,10 +46,10 @@ const WARM_UP_CONTRACTION = 0.6;
 const WARM_UP_FRAMES = 4;
 /**
  * Seeded random contraction sets (each muscle off or at a random contraction) the warm-up then runs the rig for, so
- * that its compiled code has seen every branch (muscles off, fading in, skin slid out of its zones); the timings that
- * chose 30 are in docs/page-notes.md.
+ * that its compiled code has seen every branch (muscles off, fading in, skin slid out of its zones); past 5 the first
+ * input applies no faster, and each set costs 12 to 30 ms of the worker's time at every page load (docs/page-notes.md).
  */
-const WARM_UP_RIG_SETS = 30;
+const WARM_UP_RIG_SETS = 6;
 
 /**
  * Owns a SkinSolver wherever it runs (worker or main thread): applies published input batches between frames, steps,
