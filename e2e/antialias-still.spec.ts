@@ -58,6 +58,7 @@ test('antialias "still" draws a moving face without multisampling, and a face at
       return {
         multisampled: { always: multisampled('always'), still: multisampled('still'), auto: multisampled('auto') },
         atRest,
+        quality: canvas('still').dataset.quality,
         png,
       };
     },
@@ -67,5 +68,7 @@ test('antialias "still" draws a moving face without multisampling, and a face at
   // Headless Chromium's WebGL is SwiftShader: `auto` picks `still` there.
   expect(result.multisampled).toEqual({ always: true, still: false, auto: false });
   expect(result.atRest).toBeLessThanOrEqual(DIFFERING);
+  // The canvas says it shows the finished picture.
+  expect(result.quality).toBe('full');
   expect(result.png).toBeLessThanOrEqual(DIFFERING);
 });

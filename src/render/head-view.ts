@@ -430,10 +430,15 @@ export class HeadView {
     if (still && !this.multisampled) {
       this.renderStill();
       this.rough = false;
-      return;
+    } else {
+      this.renderer.render(this.scene, this.camera);
+      this.rough = !this.multisampled;
     }
-    this.renderer.render(this.scene, this.camera);
-    this.rough = !this.multisampled;
+    // What the canvas shows, for a page or a test that waits for the finished picture: `full` (full resolution,
+    // antialiased) or `motion` (drawn lower while the face moves). Written only when it changes.
+    const quality = this.reduced || this.rough ? 'motion' : 'full';
+    const canvas = this.renderer.domElement;
+    if (canvas.dataset.quality !== quality) canvas.dataset.quality = quality;
   }
 
   /**
