@@ -17,6 +17,14 @@ async function stimuli(list: string, out: string): Promise<string> {
   return stdout;
 }
 
+/** Writes a stimulus list of these entries, each of the low head at 200 x 150 unless it says otherwise. */
+function writeList(path: string, stimuli: object[]): void {
+  writeFileSync(
+    path,
+    JSON.stringify({ format: 'softface-stimuli', version: 1, defaults: { resolution: 'low', width: 200, height: 150 }, stimuli }),
+  );
+}
+
 /** Width and height from a PNG's header. */
 function pngSize(file: string): [number, number] {
   const b = readFileSync(file);
@@ -30,28 +38,20 @@ test('a 6-stimulus batch writes its pictures, an EMFACS face, its clip and its m
   const dir = mkdtempSync(join(tmpdir(), 'softface-stimuli-'));
   const list = join(dir, 'list.json');
   const out = join(dir, 'out');
-  writeFileSync(
-    list,
-    JSON.stringify({
-      format: 'softface-stimuli',
-      version: 1,
-      defaults: { resolution: 'low', width: 200, height: 150 },
-      stimuli: [
-        { name: 'smile', expression: { AU12: 1 }, intensity: [0.3, 1], camera: [{}, { yaw: 40, distance: 0.7 }] },
-        {
-          name: 'brows',
-          timeline: {
-            format: 'softface-timeline',
-            version: 1,
-            tracks: {},
-            actions: [{ target: 'AU1', start: 0, intensity: 1, onset: 0.3, apex: 0.2, offset: 0.3 }],
-          },
-          fps: 5,
-        },
-        { name: 'emfacs', emotion: 'surprise-prototype-1' },
-      ],
-    }),
-  );
+  writeList(list, [
+    { name: 'smile', expression: { AU12: 1 }, intensity: [0.3, 1], camera: [{}, { yaw: 40, distance: 0.7 }] },
+    {
+      name: 'brows',
+      timeline: {
+        format: 'softface-timeline',
+        version: 1,
+        tracks: {},
+        actions: [{ target: 'AU1', start: 0, intensity: 1, onset: 0.3, apex: 0.2, offset: 0.3 }],
+      },
+      fps: 5,
+    },
+    { name: 'emfacs', emotion: 'surprise-prototype-1' },
+  ]);
   const first = await stimuli(list, out);
   const files = ['smile_i0.3_l0_c0_low.png', 'smile_i0.3_l0_c1_low.png', 'smile_i1_l0_c0_low.png', 'smile_i1_l0_c1_low.png'];
   for (const f of files) expect(first).toContain(`wrote ${f}`);
@@ -90,15 +90,7 @@ test('a 6-stimulus batch writes its pictures, an EMFACS face, its clip and its m
   // The stimuli after the first were rendered on the page it opened: each is the picture it gives alone, on a new page.
   const alone = join(dir, 'alone');
   const aloneList = join(dir, 'alone.json');
-  writeFileSync(
-    aloneList,
-    JSON.stringify({
-      format: 'softface-stimuli',
-      version: 1,
-      defaults: { resolution: 'low', width: 200, height: 150 },
-      stimuli: [{ name: 'smile', expression: { AU12: 1 }, camera: [{ yaw: 40, distance: 0.7 }] }],
-    }),
-  );
+  writeList(aloneList, [{ name: 'smile', expression: { AU12: 1 }, camera: [{ yaw: 40, distance: 0.7 }] }]);
   expect(await stimuli(aloneList, alone)).toContain('wrote smile_i1_l0_c0_low.png');
   expect(readFileSync(join(alone, 'smile_i1_l0_c0_low.png')).equals(picture(files[3]))).toBe(true);
 
