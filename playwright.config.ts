@@ -42,7 +42,7 @@ export default defineConfig({
   projects: [
     { name: 'parallel', testIgnore: ALONE },
     // The tests whose numbers a second browser beside them would change: `npm run test:e2e` runs them after the
-    // others, by themselves (the webcam tracker's latency, printed: a median of 33 to 36 ms alone, about 290 ms
+    // others, by themselves (the webcam tracker's latency, printed: a median of 32 to 36 ms alone, about 290 ms
     // beside a busy core).
     { name: 'alone', testMatch: ALONE },
   ],
