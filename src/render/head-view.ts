@@ -4,22 +4,14 @@ import {
   Color,
   Mesh,
   MeshPhysicalMaterial,
-  NoBlending,
-  PMREMGenerator,
   type PerspectiveCamera,
   Scene,
   SRGBColorSpace,
-  ShaderMaterial,
   type Texture,
-  Vector2,
-  WebGLRenderTarget,
   WebGLRenderer,
   type Material,
 } from 'three';
-import { FullScreenQuad } from 'three/addons/postprocessing/Pass.js';
-import { CopyShader } from 'three/addons/shaders/CopyShader.js';
 import type { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import type { HeadModel } from './head-model';
 import { timeRenders, type RenderTiming } from './render-timing';
 import { ViewCamera } from './view-camera';
@@ -42,6 +34,7 @@ import {
 import { checkOptions } from '../core/check';
 import { disposeTree } from './dispose-tree';
 import { softwareWebGL } from './software-webgl';
+import { PictureDrawer } from './picture-drawer';
 
 /**
  * Work done at each animation frame while the view is in view; `now` is the frame's timestamp in ms. It returns true
@@ -116,13 +109,8 @@ export class HeadView {
   private readonly viewObserver: IntersectionObserver;
   /** Set while a capture holds the canvas at its own size: the render loop and resizes wait. */
   private capturing = false;
-  /** Whether the canvas multisamples (HeadViewOptions.antialias); if not, stills are drawn through `still`. */
-  private readonly multisampled: boolean;
-  /** Whether the picture on the canvas was drawn without the antialiasing a still gets. */
-  private rough = false;
-  /** The offscreen multisampled target a still is drawn into, and the copy to the canvas (made at the first still). */
-  private still: { target: WebGLRenderTarget; copy: FullScreenQuad } | null = null;
-  private readonly stillSize = new Vector2();
+  /** Draws each picture, antialiased as HeadViewOptions.antialias says. */
+  private readonly pictures: PictureDrawer;
 
   constructor(
     private readonly container: HTMLElement,
@@ -131,8 +119,9 @@ export class HeadView {
     const o = { ...HEAD_VIEW_DEFAULTS, ...options };
     // With an alpha channel the background can turn transparent later without a new context; an opaque background
     // fills every pixel, so it looks the same as without one.
-    this.multisampled = o.antialias === 'always' || (o.antialias === 'auto' && !softwareWebGL());
-    this.renderer = new WebGLRenderer({ antialias: this.multisampled, preserveDrawingBuffer: true, alpha: true });
+    const multisampled = o.antialias === 'always' || (o.antialias === 'auto' && !softwareWebGL());
+    this.renderer = new WebGLRenderer({ antialias: multisampled, preserveDrawingBuffer: true, alpha: true });
+    this.pictures = new PictureDrawer(this.renderer, multisampled);
     this.pixelRatio = Math.min(window.devicePixelRatio, o.maxPixelRatio);
     this.motionResolution = Math.min(1, Math.max(0.25, o.motionResolution));
     this.drawState = {
@@ -258,7 +247,7 @@ export class HeadView {
     for (let i = 0; i < this.frameHooks.length; i++) this.frameHooks[i](now);
     this.controls.update();
     this.setReduced(false);
-    this.renderFrame(true);
+    this.drawPicture(true);
     // Read in the same task as the render, so the picture is there even without a preserved drawing buffer.
     return new Promise((resolve, reject) => {
       this.renderer.domElement.toBlob(
@@ -299,7 +288,7 @@ export class HeadView {
     return {
       canvas: renderer.domElement,
       render: () => {
-        if (!done) this.renderFrame(true);
+        if (!done) this.drawPicture(true);
       },
       dispose: () => {
         if (done) return;
@@ -338,7 +327,7 @@ export class HeadView {
       // Filled in place: the loop allocates nothing.
       const state = this.drawState;
       state.changed = changed;
-      state.reduced = this.reduced || this.rough;
+      state.reduced = this.reduced || this.pictures.rough;
       state.sinceChangeMs = now - this.changedAt;
       state.fullDrawMs = this.fullDrawMs;
       const draw = motionDraw(state);
@@ -346,7 +335,7 @@ export class HeadView {
       if (this.drawFrames > 0) this.drawFrames--;
       this.setReduced(draw === 'reduced');
       // Nothing new: the motion has ended, and this is its still.
-      this.renderFrame(!changed);
+      this.drawPicture(!changed);
       this.drawnAt = now;
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
     };
@@ -366,7 +355,7 @@ export class HeadView {
   /** Renders `frames` frames back to back and times them (a benchmark: it blocks the page; see timeRenders). */
   measureRender(frames = 100): RenderTiming {
     this.setReduced(false);
-    this.renderFrame();
+    this.drawPicture(false);
     return timeRenders(this.renderer, this.scene, this.camera, this.head?.hair, frames);
   }
 
@@ -387,9 +376,7 @@ export class HeadView {
     this.view.dispose();
     disposeTree(this.scene);
     this.scene.environment?.dispose();
-    this.still?.target.dispose();
-    this.still?.copy.dispose();
-    (this.still?.copy.material as Material | undefined)?.dispose();
+    this.pictures.dispose();
     this.renderer.dispose();
     // After dispose, which removed the renderer's context-lost listener: this loss is expected and logs nothing.
     this.renderer.forceContextLoss();
@@ -406,67 +393,16 @@ export class HeadView {
     this.invalidate();
   }
 
+  /** Draws the scene to the canvas: a `still` (a face at rest, a picture, a video frame) is always antialiased. */
+  private drawPicture(still: boolean): void {
+    this.pictures.draw(this.scene, this.camera, still, this.reduced, this.head !== undefined);
+  }
+
   /** Sets the canvas to the motion's lower resolution or back to full (a new size clears it; the caller draws). */
   private setReduced(reduced: boolean): void {
     if (reduced === this.reduced) return;
     this.reduced = reduced;
     this.renderer.setPixelRatio(reduced ? this.pixelRatio * this.motionResolution : this.pixelRatio);
-  }
-
-  /**
-   * Renders the scene, making its environment map first if a head is shown and it has none yet. A `still` (a face at
-   * rest, a picture, a video frame) is antialiased even where the canvas does not multisample.
-   */
-  private renderFrame(still = false): void {
-    if (!this.scene.environment && this.head) {
-      // Made on the first frame with a head, not with the view: a face that is never in view never pays for it (in
-      // software WebGL it is seconds of GPU work, which a lost context waits for).
-      const pmrem = new PMREMGenerator(this.renderer);
-      const room = new RoomEnvironment();
-      this.scene.environment = pmrem.fromScene(room, 0.04).texture;
-      room.dispose();
-      pmrem.dispose();
-    }
-    if (still && !this.multisampled) {
-      this.renderStill();
-      this.rough = false;
-    } else {
-      this.renderer.render(this.scene, this.camera);
-      this.rough = !this.multisampled;
-    }
-    // What the canvas shows, for a page or a test that waits for the finished picture: `full` (full resolution,
-    // antialiased) or `motion` (drawn lower while the face moves). Written only when it changes.
-    const quality = this.reduced || this.rough ? 'motion' : 'full';
-    const canvas = this.renderer.domElement;
-    if (canvas.dataset.quality !== quality) canvas.dataset.quality = quality;
-  }
-
-  /**
-   * Draws the scene into a multisampled target the canvas's size and copies it to the canvas. The target is shaded as
-   * the canvas is: three.js shades a render target linear and without tone mapping unless it is marked as WebXR's
-   * (the flag WebXRManager sets on its own targets), and its 8-bit storage holds the shaders' sRGB output as the
-   * canvas does; the copy writes its pixels unchanged, alpha included, so the still is the picture a multisampled
-   * canvas would show.
-   */
-  private renderStill(): void {
-    const renderer = this.renderer;
-    const { x: width, y: height } = renderer.getDrawingBufferSize(this.stillSize);
-    if (!this.still) {
-      const target = new WebGLRenderTarget(width, height, { samples: 4, colorSpace: SRGBColorSpace });
-      target.texture.internalFormat = 'RGBA8';
-      (target as WebGLRenderTarget & { isXRRenderTarget: boolean }).isXRRenderTarget = true;
-      const copy = new FullScreenQuad(
-        new ShaderMaterial({ ...CopyShader, uniforms: { tDiffuse: { value: target.texture }, opacity: { value: 1 } } }),
-      );
-      (copy.material as ShaderMaterial).blending = NoBlending;
-      this.still = { target, copy };
-    }
-    const { target, copy } = this.still;
-    if (target.width !== width || target.height !== height) target.setSize(width, height);
-    renderer.setRenderTarget(target);
-    renderer.render(this.scene, this.camera);
-    renderer.setRenderTarget(null);
-    copy.render(renderer);
   }
 
   /** Points the camera at the middle of `bounds` from the front (+z), far enough to see it whole; the key light follows. */
