@@ -10,6 +10,8 @@ export const PLAIN_PORT = ISOLATED_PORT + 1;
 
 /** Tests that run by themselves after the others (see `projects`). */
 const ALONE = ['**/tracking-fake-camera.spec.ts'];
+/** What the tests that run alone need made first: the fake camera's clip (e2e/tracking-clip.ts). */
+const CLIP = ['**/tracking-clip.setup.ts'];
 
 export default defineConfig({
   testDir: 'e2e',
@@ -40,11 +42,14 @@ export default defineConfig({
     },
   },
   projects: [
-    { name: 'parallel', testIgnore: ALONE },
+    // Recording the fake camera's clip needs no quiet machine: `npm run test:e2e` runs it beside the others (listed
+    // first, so that it starts first and leaves no tail).
+    { name: 'clip', testMatch: CLIP },
+    { name: 'parallel', testIgnore: [...ALONE, ...CLIP] },
     // The tests whose numbers a second browser beside them would change: `npm run test:e2e` runs them after the
     // others, by themselves (the webcam tracker's latency, printed: a median of 32 to 36 ms alone, about 290 ms
-    // beside a busy core).
-    { name: 'alone', testMatch: ALONE },
+    // beside a busy core), with --no-deps, as the clip was made then; run on their own, they make the clip first.
+    { name: 'alone', testMatch: ALONE, dependencies: ['clip'] },
   ],
   webServer: [
     {

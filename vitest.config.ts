@@ -13,6 +13,7 @@ const SLOW_FIRST = [
   'tests/expressions-settle-presets.test.ts', // 21
   'tests/rig-fuzz.test.ts', // 16
   'tests/expressions-round-trip-mixtures.test.ts', // 15
+  'tests/identity-lifts.test.ts', // 15
   'tests/facs-cues.test.ts', // 11
   'tests/identity-ageing.test.ts', // 10
 ];

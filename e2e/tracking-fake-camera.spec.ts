@@ -1,54 +1,17 @@
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { unzipSync } from 'fflate';
 import { launchWithFakeCamera } from './fake-camera';
 import { openFace } from './face';
 import { control, openFolder } from './panels';
 import { expect, test } from './fixtures';
+import { FPS, LEAD, MARK, BITS, SECONDS, UNITS, readTrackingClip } from './tracking-clip';
 
 /**
- * The webcam tracker without a person: the face records itself playing a known timeline, the frames become a fake
- * camera file (YUV4MPEG2, which Chromium plays as its camera, looping), and a second browser with that camera tracks
- * it. Each frame carries its number in a row of black and white squares at its top left, so the test knows which
- * frame the camera shows: it takes the viewer's neutral face in the clip's neutral lead-in (`calibrateTracking`), and
- * compares the Action Units the tracker recovers with the timeline's at the frames they were read from (matched by
- * the frame's capture time, `trackingState().capturedAt`), at each unit's best lag up to a second.
+ * The webcam tracker without a person: a browser whose camera plays the clip of the face itself playing a known
+ * timeline (e2e/tracking-clip.ts, recorded by the `clip` project before this test) tracks it. Each frame carries its
+ * number in a row of black and white squares at its top left, so the test knows which frame the camera shows: it
+ * takes the viewer's neutral face in the clip's neutral lead-in (`calibrateTracking`), and compares the Action Units
+ * the tracker recovers with the timeline's at the frames they were read from (matched by the frame's capture time,
+ * `trackingState().capturedAt`), at each unit's best lag up to a second.
  */
-const FPS = 6;
-/**
- * The clip's neutral lead-in, seconds. The camera starts with the tracker, which is ready 2 to 3 s later: a lead-in
- * that long still has the calibration's second (and a frame or two of latency) left, so the test need not wait for
- * the clip to come round again.
- */
-const LEAD = 5;
-const SECONDS = LEAD + 9;
-const WIDTH = 480;
-const HEIGHT = 480;
-/** One event at a time after the neutral lead-in: brows, smile, jaw, closed eyes. */
-const TIMELINE = {
-  format: 'softface-timeline',
-  version: 1,
-  duration: SECONDS,
-  tracks: {},
-  actions: [
-    { target: 'AU1', start: LEAD, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
-    { target: 'AU2', start: LEAD, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
-    { target: 'AU12', start: LEAD + 2.2, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
-    { target: 'AU26', start: LEAD + 4.4, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
-    { target: 'AU43', start: LEAD + 6.6, intensity: 1, onset: 0.25, apex: 1.5, offset: 0.25 },
-  ],
-};
-/** The frame number's squares: 8 bits, each MARK pixels wide, along the top left. */
-const MARK = 24;
-const BITS = 8;
-const UNITS = [
-  ['AU1+AU2', ['AU1L', 'AU1R', 'AU2L', 'AU2R']],
-  ['AU12', ['AU12L', 'AU12R']],
-  ['AU26', ['AU26']],
-  ['AU43', ['AU43L', 'AU43R']],
-] as const;
-
 function correlation(a: number[], b: number[]): number {
   const n = a.length;
   const ma = a.reduce((s, x) => s + x, 0) / n;
@@ -75,91 +38,9 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
   baseURL,
 }) => {
   test.setTimeout(300_000);
-  await openFace(page, '/?resolution=low');
+  const { file, expected } = readTrackingClip();
   const frames = FPS * SECONDS;
-  // What each frame of the clip shows: the timeline's values at its time.
-  const expected = await page.evaluate(
-    ({ timeline, frames, fps, units }) => {
-      const face = window.face;
-      face.setTimeline(timeline);
-      const out: number[][] = [];
-      for (let i = 0; i < frames; i++) {
-        face.seek(i / fps);
-        const e = face.getEffectiveActionUnits();
-        out.push(units.map(([, ids]) => ids.reduce((s, id) => s + e[id], 0) / ids.length));
-      }
-      face.seek(0);
-      return out;
-    },
-    { timeline: TIMELINE, frames, fps: FPS, units: UNITS as unknown as [string, string[]][] },
-  );
-  // The clip as the recorder makes it, a zip of PNG frames.
-  const zip = await page.evaluate(
-    async ({ fps, width, height }) => {
-      const blob = await window.face.recordVideo({ fps, width, height, format: 'png-zip' });
-      const bytes = new Uint8Array(await blob.arrayBuffer());
-      let text = '';
-      for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-      return btoa(text);
-    },
-    { fps: FPS, width: WIDTH, height: HEIGHT },
-  );
-  const pngs = Object.entries(unzipSync(Buffer.from(zip, 'base64')))
-    .filter(([name]) => name.endsWith('.png'))
-    .sort(([a], [b]) => a.localeCompare(b));
-  expect(pngs).toHaveLength(frames);
-  // Each frame decoded by the browser and turned into the camera file's YUV 4:2:0 (full range, as C420jpeg says).
-  const dir = mkdtempSync(join(tmpdir(), 'softface-camera-'));
-  const file = join(dir, 'face.y4m');
-  const parts: Buffer[] = [Buffer.from(`YUV4MPEG2 W${WIDTH} H${HEIGHT} F${FPS}:1 Ip A1:1 C420jpeg\n`)];
-  for (const [index, [, png]] of pngs.entries()) {
-    const yuv = await page.evaluate(
-      async ({ data, index, mark, bits }) => {
-        const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${data}`)).blob());
-        const c = new OffscreenCanvas(image.width, image.height);
-        const g = c.getContext('2d')!;
-        g.drawImage(image, 0, 0);
-        const { data: rgba, width, height } = g.getImageData(0, 0, image.width, image.height);
-        const out = new Uint8Array(width * height * 1.5);
-        const u0 = width * height;
-        const v0 = u0 + (width * height) / 4;
-        for (let i = 0; i < width * height; i++) out[i] = 0.299 * rgba[4 * i] + 0.587 * rgba[4 * i + 1] + 0.114 * rgba[4 * i + 2];
-        for (let y = 0; y < height; y += 2) {
-          for (let x = 0; x < width; x += 2) {
-            let r = 0;
-            let gr = 0;
-            let b = 0;
-            for (const k of [y * width + x, y * width + x + 1, (y + 1) * width + x, (y + 1) * width + x + 1]) {
-              r += rgba[4 * k] / 4;
-              gr += rgba[4 * k + 1] / 4;
-              b += rgba[4 * k + 2] / 4;
-            }
-            const j = (y / 2) * (width / 2) + x / 2;
-            out[u0 + j] = 128 - 0.168736 * r - 0.331264 * gr + 0.5 * b;
-            out[v0 + j] = 128 + 0.5 * r - 0.418688 * gr - 0.081312 * b;
-          }
-        }
-        // The frame's number, grey squares (no colour) white for a 1.
-        for (let bit = 0; bit < bits; bit++) {
-          const on = (index >> bit) & 1;
-          for (let y = 0; y < mark; y++) {
-            for (let x = bit * mark; x < (bit + 1) * mark; x++) {
-              out[y * width + x] = on ? 235 : 16;
-              out[u0 + (y >> 1) * (width / 2) + (x >> 1)] = 128;
-              out[v0 + (y >> 1) * (width / 2) + (x >> 1)] = 128;
-            }
-          }
-        }
-        let text = '';
-        for (let i = 0; i < out.length; i += 0x8000) text += String.fromCharCode(...out.subarray(i, i + 0x8000));
-        return btoa(text);
-      },
-      { data: Buffer.from(png).toString('base64'), index, mark: MARK, bits: BITS },
-    );
-    parts.push(Buffer.from('FRAME\n'), Buffer.from(yuv, 'base64'));
-  }
-  writeFileSync(file, Buffer.concat(parts));
-  // The recording's page is done with: closed, so that nothing of it runs beside the tracker.
+  // The page every test gets is not used: closed, so that nothing of it runs beside the tracker.
   await page.close();
 
   // A browser whose camera is the clip (looping), and the app tracking it.
@@ -255,6 +136,5 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
     expect(await camera.evaluate(() => window.face.trackingState().on)).toBe(false);
   } finally {
     await browser.close();
-    rmSync(dir, { recursive: true, force: true });
   }
 });
