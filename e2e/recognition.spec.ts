@@ -25,9 +25,8 @@ test.use({ viewport: { width: SIZE, height: SIZE } });
  */
 test('neutral and the prototypes read as meant to an automatic recogniser, front view', async ({ page, browser }) => {
   test.setTimeout(300_000);
-  // tfjs's webgl backend: the probabilities of the cpu backend `npm run recognize` uses by default (the same to two
-  // places for all seven faces), in three quarters of the time.
-  const recognizer = await startRecognizer(browser, { backend: 'webgl' });
+  // tfjs's wasm backend, as `npm run recognize` uses it.
+  const recognizer = await startRecognizer(browser);
   try {
     await openFace(page, '/?resolution=medium');
     await page.addStyleTag({ content: HIDE_PANELS_CSS });

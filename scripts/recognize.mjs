@@ -13,7 +13,7 @@
  * Options:
  *   --markdown            print the Markdown table too
  *   --detector ssd|tiny   the face detector (default ssd; see recognition.mjs)
- *   --backend cpu|webgl   tfjs's backend (default cpu)
+ *   --backend wasm|cpu|webgl   tfjs's backend (default wasm)
  *   --crop aligned|box    what FaceExpressionNet reads: the detector's box (default) or the cut around the 68 landmarks
  *   --images DIR          also write each render to DIR/<preset>_<view>.png
  *   --sheet FILE          also write a sheet (JPEG, or PNG if FILE ends in .png) of neutral and the seven prototypes from the front, each
