@@ -47,7 +47,7 @@ export default defineConfig({
     { name: 'clip', testMatch: CLIP },
     { name: 'parallel', testIgnore: [...ALONE, ...CLIP] },
     // The tests whose numbers a second browser beside them would change: `npm run test:e2e` runs them after the
-    // others, by themselves (the webcam tracker's latency, printed: a median of 32 to 36 ms alone, about 290 ms
+    // others, by themselves (the webcam tracker's latency, printed: a median of 32 to 45 ms alone, about 290 ms
     // beside a busy core), with --no-deps, as the clip was made then; run on their own, they make the clip first.
     { name: 'alone', testMatch: ALONE, dependencies: ['clip'] },
   ],
