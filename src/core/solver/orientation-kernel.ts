@@ -128,6 +128,30 @@ export function projectOrientationPart(a: PartArrays, part: number, mode: number
   return corrected;
 }
 
+/**
+ * Whether a listed triangle is turned over (its area along its rest normal below zero). The passes keep every triangle
+ * above its bound, but in a frame where they run out a sliver can still be over; the solver does not sleep on one.
+ */
+export function anyTurnedOver(a: PartArrays): boolean {
+  const x = a.positions;
+  const T = a.triangles.corners;
+  const F = a.triangles.frames;
+  const parts = a.triangles.parts;
+  for (let t = parts[0], end = parts[parts.length - 1]; t < end; t++) {
+    const ia = T[3 * t];
+    const ib = T[3 * t + 1];
+    const ic = T[3 * t + 2];
+    const ux = x[ib] - x[ia];
+    const uy = x[ib + 1] - x[ia + 1];
+    const uz = x[ib + 2] - x[ia + 2];
+    const vx = x[ic] - x[ia];
+    const vy = x[ic + 1] - x[ia + 1];
+    const vz = x[ic + 2] - x[ia + 2];
+    if (F[4 * t] * (uy * vz - uz * vy) + F[4 * t + 1] * (uz * vx - ux * vz) + F[4 * t + 2] * (ux * vy - uy * vx) < 0) return true;
+  }
+  return false;
+}
+
 /** An orientation pass that checks every listed triangle and adds those near their bound to the watched ones. */
 export const ORIENT_FULL = 0;
 /** A pass that follows another with nothing else in between: it checks only triangles with a corner moved since. */

@@ -4,7 +4,7 @@
  */
 import type { ActiveRegion } from './active-region';
 import { PART_EVEN, PART_EVEN_SEAM, PART_ODD, PART_ODD_SEAM, PARTS } from './constraint-lists';
-import { projectOrientationPart } from './orientation-kernel';
+import { anyTurnedOver, projectOrientationPart } from './orientation-kernel';
 import type { PartArrays } from './part-arrays';
 import {
   JOB_BENDING,
@@ -77,6 +77,11 @@ export class FramePasses {
   projectOrientation(mode: number, floor = 1): boolean {
     const blocks = this.orientationPair(PART_EVEN, PART_ODD, mode, floor);
     return this.orientationPair(PART_EVEN_SEAM, PART_ODD_SEAM, mode, floor) || blocks;
+  }
+
+  /** Whether a listed triangle is turned over now (see anyTurnedOver); read on this thread between passes. */
+  turnedOver(): boolean {
+    return anyTurnedOver(this.parts);
   }
 
   private orientationPair(mine: number, theirs: number, mode: number, floor: number): boolean {

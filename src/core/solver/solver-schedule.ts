@@ -29,6 +29,12 @@ export const LATE_SLOWING = 0.98;
 
 /** Frames over which the skin's ways are weighed against the window before (see Relaxation.breakLoops). */
 export const LOOP_WINDOW = 32;
+/**
+ * A vertex's move per frame, relative to the mesh size, below which breakLoops counts it as coming to rest (not
+ * stalled): the sleep tolerance the loop handling was measured with, kept apart from `sleepTolerance` so that a looser
+ * sleep only stops sooner and moves no skin differently on the way (docs/solver-notes.md, "Sleep tolerance").
+ */
+export const LOOP_MOVE = 2e-6;
 /** Skin whose longest way in a window is more than this share of the last window's has stalled. */
 export const STALL = 0.9;
 /** In stalled skin, the vertices that went more than this share of the longest way are slowed, with their neighbours. */

@@ -36,6 +36,7 @@ import { FramePasses } from './solver-passes';
 import {
   FOLD_CHOICE_FRAMES,
   FOLD_CHOICE_MOMENTUM,
+  LATE_MOTION,
   LOOP_WINDOW,
   ORIENTATION_PASSES,
   ORIENTATION_SHOWN_FLOOR,
@@ -376,7 +377,7 @@ export class SkinSolver {
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.passes.recordSteps(this.region.count);
     if (this.relaxation.motionFrames % LOOP_WINDOW === 0)
-      this.relaxation.breakLoops(this.region.vertices, this.region.count, this.topology, this.params.sleepTolerance);
+      this.relaxation.breakLoops(this.region.vertices, this.region.count, this.topology);
     this.frames++;
     this.restRegionRing();
     const beforeNormals = now();
@@ -386,7 +387,10 @@ export class SkinSolver {
     time.total = end - start;
     const changed = this.inputsChanged;
     this.inputsChanged = false;
-    if (!changed && this.lastMove <= p.sleepTolerance * this.topology.size) this.asleep = true;
+    // Still skin sleeps, but not with a triangle turned over, which the next frames' passes untangle (unless the
+    // safety net is stopping the motion anyway).
+    if (!changed && this.lastMove <= p.sleepTolerance * this.topology.size)
+      this.asleep = this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
     return true;
   }
 
