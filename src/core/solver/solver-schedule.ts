@@ -35,6 +35,13 @@ export const LOOP_WINDOW = 32;
  * sleep only stops sooner and moves no skin differently on the way (docs/solver-notes.md, "Sleep tolerance").
  */
 export const LOOP_MOVE = 2e-6;
+/**
+ * Skin with a triangle turned over sleeps only once no vertex moves more than this in a frame (relative to the mesh
+ * size), however loose `sleepTolerance` is: such a fold is often still untangling (the old African woman's AU46
+ * at 1e-5 slept with four over that untangled 270 frames later), and where it never untangles (the high head's
+ * densest fans) this is where the solver stopped before (docs/solver-notes.md, "Sleep tolerance").
+ */
+export const TANGLED_SLEEP = 2e-6;
 /** Skin whose longest way in a window is more than this share of the last window's has stalled. */
 export const STALL = 0.9;
 /** In stalled skin, the vertices that went more than this share of the longest way are slowed, with their neighbours. */

@@ -42,6 +42,7 @@ import {
   ORIENTATION_SHOWN_FLOOR,
   ORIENTATION_SHOWN_PASSES,
   START_MOMENTUM_FRAMES,
+  TANGLED_SLEEP,
 } from './solver-schedule';
 import type { SkinTopology } from './topology';
 
@@ -387,10 +388,11 @@ export class SkinSolver {
     time.total = end - start;
     const changed = this.inputsChanged;
     this.inputsChanged = false;
-    // Still skin sleeps, but not with a triangle turned over, which the next frames' passes untangle (unless the
-    // safety net is stopping the motion anyway).
-    if (!changed && this.lastMove <= p.sleepTolerance * this.topology.size)
-      this.asleep = this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
+    // Still skin sleeps; with a triangle turned over, which the next frames' passes may yet untangle, only once as
+    // still as TANGLED_SLEEP (or stopped by the safety net).
+    const size = this.topology.size;
+    if (!changed && this.lastMove <= p.sleepTolerance * size)
+      this.asleep = this.lastMove <= TANGLED_SLEEP * size || this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
     return true;
   }
 
