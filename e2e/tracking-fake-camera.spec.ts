@@ -125,6 +125,14 @@ test('the tracker follows a recorded face from a fake camera: AU1+AU2, AU12, AU2
         `(face mesh ${run.state.processMs.toFixed(0)} ms)`,
     );
     for (const [u, [name]] of UNITS.entries()) expect(best[u].r, name).toBeGreaterThanOrEqual(0.8);
+    // What the tracker reads in units the clip never moves (cross-talk: an opening jaw read as lip corners down, say),
+    // printed for the record: the largest of each over the clip, where above 0.05.
+    // (AU25, the lips parting, comes with the jaw's drop.)
+    const moved = new Set<string>([...UNITS.flatMap(([, ids]) => ids), 'AU25']);
+    const stray = new Map<string, number>();
+    for (const s of run.samples)
+      for (const [id, v] of Object.entries(s.e)) if (!moved.has(id) && v > 0.05 && v > (stray.get(id) ?? 0)) stray.set(id, v);
+    console.log(`units the clip never moves, largest read: ${[...stray].map(([id, v]) => `${id} ${v.toFixed(2)}`).join(', ') || 'none'}`);
 
     // The Tracking folder starts the same tracker, shows its state and the camera, and stops it.
     await openFolder(camera, 'Tracking');
