@@ -88,13 +88,24 @@ describe('Action Units from tracker landmarks', () => {
   });
 
   it('read the smile, the jaw, the lips and closed eyes', () => {
-    const u = run(moved(neutralFace(), { 291: [3, -6], 61: [-3, -3], 152: [0, 9], 14: [0, 4.8], 385: [0, 5], 386: [0, 5], 387: [0, 5] }));
+    // The lower lip 4.8 px down takes the corners' reference (a third of the way down the lips' gap) 1.6 px down.
+    const u = run(
+      moved(neutralFace(), { 291: [3, -4.4], 61: [-3, -1.4], 152: [0, 9], 14: [0, 4.8], 385: [0, 5], 386: [0, 5], 387: [0, 5] }),
+    );
     expect(at(u, 'AU12L')).toBeCloseTo(1, 6);
     expect(at(u, 'AU12R')).toBeCloseTo(0.5, 6);
     expect(at(u, 'AU26')).toBeCloseTo(0.5, 6);
     expect(at(u, 'AU25')).toBeCloseTo(1, 6);
     expect(at(u, 'AU43L')).toBeCloseTo(0.5, 6);
     expect(at(u, 'AU43R')).toBeLessThan(1e-9);
+  });
+
+  it('read no lip corner pulled down when the jaw drops and the corners follow a third of the lower lip', () => {
+    // The jaw at E (0.3 eye distances, 18 px): the lower lip and chin 18 px down, the corners 6. Under the nose, as the
+    // corners were measured before, that read as AU15 at E.
+    const u = run(moved(neutralFace(), { 152: [0, 18], 14: [0, 18], 61: [0, 6], 291: [0, 6] }));
+    expect(at(u, 'AU26')).toBeCloseTo(1, 6);
+    for (const id of ['AU15L', 'AU15R', 'AU12L', 'AU12R']) expect(at(u, id), id).toBeLessThan(1e-9);
   });
 
   it('read no smile when closed lids move the eye corners apart, as the refined face mesh does', () => {

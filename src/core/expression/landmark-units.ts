@@ -4,8 +4,8 @@
  * distances, so that the face's size, place and tilt in the picture drop out), taken relative to the viewer's neutral
  * face (their mean over a calibration
  * time at the start), each scaled by how far it moves when the unit is at its E grade, clamped and smoothed. The
- * distances: each brow's inner and outer part above the eye, each lid's opening (at three places), each mouth corner's height under the
- * nose, the lips' inner gap and the nose-to-chin distance. Pure: no DOM, no three.js.
+ * distances: each brow's inner and outer part above the eye, each lid's opening (at three places), each mouth corner's height over the
+ * lips' gap, the lips' inner gap and the nose-to-chin distance. Pure: no DOM, no three.js.
  */
 
 /** A tracker's landmark: `x` and `y` as fractions of the picture's width and height (MediaPipe's NormalizedLandmark). */
@@ -49,6 +49,12 @@ const P = Object.freeze({
   rightFaceSide: 234,
   leftFaceSide: 454,
 });
+
+/**
+ * How far the mouth corners follow the lower lip's inner edge when the jaw drops: a third (the default head's AU26
+ * seen by the face mesh: the corners 0.09 to 0.11 eye distances down, the lower lip 0.28 to 0.31, the upper lip 0.02).
+ */
+const CORNER_GAP_SHARE = 1 / 3;
 
 /** The most landmark index read: a tracker must give at least this many points plus one. */
 const LANDMARKS_NEEDED = 454 + 1;
@@ -209,8 +215,12 @@ export class LandmarkUnits {
         this.gap(l, P.rightUpperLidInner, P.rightLowerLidInner) +
         this.gap(l, P.rightUpperLidOuter, P.rightLowerLidOuter)) /
       3;
-    m[CORNER_L] = this.up(l, P.leftMouthCorner) - this.up(l, P.noseTip);
-    m[CORNER_R] = this.up(l, P.rightMouthCorner) - this.up(l, P.noseTip);
+    // Each corner over the lips' gap a third of the way down (CORNER_GAP_SHARE), not under the nose: a dropping jaw
+    // takes the corners down too, which under the nose read as the corners pulled down (AU15 at E with AU26).
+    const upper = this.up(l, P.upperLipInner);
+    const mouth = upper + CORNER_GAP_SHARE * (this.up(l, P.lowerLipInner) - upper);
+    m[CORNER_L] = this.up(l, P.leftMouthCorner) - mouth;
+    m[CORNER_R] = this.up(l, P.rightMouthCorner) - mouth;
     m[LIP_GAP] = this.gap(l, P.upperLipInner, P.lowerLipInner);
     m[JAW] = this.up(l, P.noseTip) - this.up(l, P.chin);
   }
