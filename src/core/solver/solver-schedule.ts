@@ -37,9 +37,9 @@ export const LOOP_WINDOW = 32;
 export const LOOP_MOVE = 2e-6;
 /**
  * Skin with a triangle turned over sleeps only once no vertex moves more than this in a frame (relative to the mesh
- * size), however loose `sleepTolerance` is: such a fold is often still untangling (the old African woman's AU46
- * at 1e-5 slept with four over that untangled 270 frames later), and where it never untangles (the high head's
- * densest fans) this is where the solver stopped before (docs/solver-notes.md, "Sleep tolerance").
+ * size), however loose `sleepTolerance` is: such a fold is often still untangling (at 1e-5 the old African woman's
+ * AU46 slept with four turned over, which untangle some 270 frames later), and where it never untangles (the high
+ * head's densest fans) this is where the solver stopped before (docs/solver-notes.md, "Sleep tolerance").
  */
 export const TANGLED_SLEEP = 2e-6;
 /** Skin whose longest way in a window is more than this share of the last window's has stalled. */
