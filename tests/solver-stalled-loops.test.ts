@@ -1,15 +1,15 @@
 import { describe, expect, it } from 'vitest';
-import { LATE_MOTION, LOOP_MOVE } from '../src/core/solver/solver-schedule';
+import { LATE_MOTION, STILL_MOVE } from '../src/core/solver/solver-schedule';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 // Skin that goes round instead of converging (see SkinSolver.breakLoops): the anger preset once did until the
 // late-motion safety net without the stall test; it converges now, and a glare (AU4 at E with AU7 and AU23 at 0.8,
 // AU5 at 0.5) is the case instead: a fold at the brow's head goes round for a hundred frames (105 to within 2 %).
 // The default sleep tolerance stops it at about 95 frames, before the loop shows; at the tolerance the loop handling
-// works to (LOOP_MOVE) it goes round until the handling slows it.
+// works to (STILL_MOVE) it goes round until the handling slows it.
 describe('skin that stalls instead of converging', () => {
   it('comes to rest well before the safety net, near where it was going round', async () => {
-    const sim = await loadHeadSimulation('medium', { sleepTolerance: LOOP_MOVE });
+    const sim = await loadHeadSimulation('medium', { sleepTolerance: STILL_MOVE });
     for (const [id, value] of [
       ['AU4', 1],
       ['AU5', 0.5],

@@ -15,7 +15,7 @@
  * shrinks each frame.
  */
 import { allocate, type Memory } from './memory';
-import { LATE_MOTION, LATE_SLOWING, LOOP_LEAST_SHARE, LOOP_MOVE, LOOP_SLOWING, LOOP_WINDOW, STALL, STALL_PART } from './solver-schedule';
+import { LATE_MOTION, LATE_SLOWING, LOOP_LEAST_SHARE, LOOP_SLOWING, LOOP_WINDOW, STALL, STALL_PART, STILL_MOVE } from './solver-schedule';
 import type { SkinTopology } from './topology';
 
 /** A SkinSolver's relaxation shares, turn marks and ways per vertex, and the age of its motion. */
@@ -76,8 +76,8 @@ export class Relaxation {
     const share = this.share;
     let longest = 0;
     for (let k = 0; k < count; k++) if (path[V[k]] > longest) longest = path[V[k]];
-    // Skin going less than LOOP_MOVE a frame is about to come to rest.
-    const least = LOOP_WINDOW * LOOP_MOVE * topology.size;
+    // Skin going less than STILL_MOVE a frame is about to come to rest.
+    const least = LOOP_WINDOW * STILL_MOVE * topology.size;
     const stalled = this.motionFrames > LOOP_WINDOW && longest > least && longest > STALL * this.lastLongest;
     this.lastLongest = longest;
     const far = Math.max(least, STALL_PART * longest);

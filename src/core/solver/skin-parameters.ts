@@ -29,7 +29,7 @@ export interface SkinParameters {
   bulge: number;
   /**
    * The solver sleeps once no vertex moves more than this in a frame, relative to the mesh size (skin with a triangle
-   * turned over: once as still as TANGLED_SLEEP). The default stops within a twentieth of a millimetre of where a
+   * turned over: once as still as STILL_MOVE). The default stops within a twentieth of a millimetre of where a
    * fifth of it would, in about three quarters of the frames (docs/solver-notes.md, "Sleep tolerance").
    */
   sleepTolerance: number;

@@ -30,18 +30,14 @@ export const LATE_SLOWING = 0.98;
 /** Frames over which the skin's ways are weighed against the window before (see Relaxation.breakLoops). */
 export const LOOP_WINDOW = 32;
 /**
- * A vertex's move per frame, relative to the mesh size, below which breakLoops counts it as coming to rest (not
- * stalled): the sleep tolerance the loop handling was measured with, kept apart from `sleepTolerance` so that a looser
- * sleep only stops sooner and moves no skin differently on the way (docs/solver-notes.md, "Sleep tolerance").
+ * The stillness the solver was tuned at: no vertex moving more than this in a frame, relative to the mesh size (the
+ * sleep tolerance before 1e-5). Two things keep it however loose `sleepTolerance` is (docs/solver-notes.md, "Sleep
+ * tolerance"): breakLoops counts skin slower than this as coming to rest, not stalled, so that a looser sleep only
+ * stops sooner and moves no skin differently on the way; and skin with a triangle turned over sleeps only this still,
+ * as such a fold is often still untangling (at 1e-5 the old African woman's AU46 slept with four turned over, which
+ * untangle some 270 frames later), and where it never does (the high head's densest fans) the solver stops where it did.
  */
-export const LOOP_MOVE = 2e-6;
-/**
- * Skin with a triangle turned over sleeps only once no vertex moves more than this in a frame (relative to the mesh
- * size), however loose `sleepTolerance` is: such a fold is often still untangling (at 1e-5 the old African woman's
- * AU46 slept with four turned over, which untangle some 270 frames later), and where it never untangles (the high
- * head's densest fans) this is where the solver stopped before (docs/solver-notes.md, "Sleep tolerance").
- */
-export const TANGLED_SLEEP = 2e-6;
+export const STILL_MOVE = 2e-6;
 /** Skin whose longest way in a window is more than this share of the last window's has stalled. */
 export const STALL = 0.9;
 /** In stalled skin, the vertices that went more than this share of the longest way are slowed, with their neighbours. */

@@ -42,7 +42,7 @@ import {
   ORIENTATION_SHOWN_FLOOR,
   ORIENTATION_SHOWN_PASSES,
   START_MOMENTUM_FRAMES,
-  TANGLED_SLEEP,
+  STILL_MOVE,
 } from './solver-schedule';
 import type { SkinTopology } from './topology';
 
@@ -389,10 +389,10 @@ export class SkinSolver {
     const changed = this.inputsChanged;
     this.inputsChanged = false;
     // Still skin sleeps; with a triangle turned over, which the next frames' passes may yet untangle, only once as
-    // still as TANGLED_SLEEP (or stopped by the safety net).
+    // still as STILL_MOVE (or stopped by the safety net).
     const size = this.topology.size;
     if (!changed && this.lastMove <= p.sleepTolerance * size)
-      this.asleep = this.lastMove <= TANGLED_SLEEP * size || this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
+      this.asleep = this.lastMove <= STILL_MOVE * size || this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
     return true;
   }
 
