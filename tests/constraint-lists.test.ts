@@ -56,9 +56,9 @@ describe('constraint lists', () => {
   });
 
   /** The topology's edge index of each listed edge, in list order. */
-  function listedEdges(included: Uint8Array | null) {
+  function listedEdges(included: Uint8Array | null, unfolded: Float32Array = t.restLength) {
     const lists = createEdgeLists(t);
-    const count = fillEdgeLists(lists, t, weights, included);
+    const count = fillEdgeLists(lists, t, weights, included, unfolded);
     const byEnds = new Map<string, number>();
     for (let e = 0; e < t.restLength.length; e++) byEnds.set(`${t.edges[2 * e]},${t.edges[2 * e + 1]}`, e);
     const order: number[] = [];
@@ -75,15 +75,15 @@ describe('constraint lists', () => {
     const { lists, count, order } = listedEdges(null);
     expect(count).toBe(t.restLength.length);
     expect(new Set(order).size).toBe(count);
-    expect(lists.runs[2 * colours]).toBe(count);
+    expect(lists.runs[3 * colours]).toBe(count);
     let heldEdges = 0;
     for (let c = 0; c < colours; c++) {
-      for (let k = lists.runs[2 * c]; k < lists.runs[2 * c + 2]; k++) {
+      for (let k = lists.runs[3 * c]; k < lists.runs[3 * c + 2]; k++) {
         const e = order[k];
         const [a, b] = [t.edges[2 * e], t.edges[2 * e + 1]];
         expect(colourOf(e)).toBe(c);
         const held = Math.max(weights[a], weights[b]);
-        expect(held > 0).toBe(k >= lists.runs[2 * c + 1]);
+        expect(held > 0).toBe(k >= lists.runs[3 * c + 1]);
         expect(lists.rest[EDGE_RECORD * k + 2]).toBe(t.restLength[e]);
         // A held edge carries its larger muscle weight, which scales its bulge.
         if (held > 0) {
@@ -94,6 +94,40 @@ describe('constraint lists', () => {
     }
     expect(heldEdges).toBeGreaterThan(0);
     expect(heldEdges).toBeLessThan(count);
+  });
+
+  it('list the unfolding edges last in their colour, held or not, with their unfolded length, and each in order', () => {
+    // Edges whose lower end lies in the patch's upper half unfold to 1.5 times their length (held ones among them).
+    const unfolded = t.restLength.slice();
+    for (let e = 0; e < unfolded.length; e++)
+      if (Math.min(t.rest[3 * t.edges[2 * e] + 1], t.rest[3 * t.edges[2 * e + 1] + 1]) > 0) unfolded[e] *= 1.5;
+    const { lists, count, order } = listedEdges(null, unfolded);
+    const plain = listedEdges(null).order;
+    expect(count).toBe(t.restLength.length);
+    expect(new Set(order).size).toBe(count);
+    let unfolding = 0;
+    let heldUnfolding = 0;
+    for (let c = 0; c < colours; c++) {
+      const listed = order.slice(lists.runs[3 * c], lists.runs[3 * c + 3]);
+      for (let k = lists.runs[3 * c]; k < lists.runs[3 * c + 3]; k++) {
+        const e = order[k];
+        const grows = unfolded[e] > t.restLength[e];
+        expect(grows).toBe(k >= lists.runs[3 * c + 2]);
+        expect(lists.rest[EDGE_RECORD * k + 2]).toBe(t.restLength[e]);
+        if (grows) {
+          unfolding++;
+          if (Math.max(weights[t.edges[2 * e]], weights[t.edges[2 * e + 1]]) > 0) heldUnfolding++;
+          expect(lists.rest[EDGE_RECORD * k + 3]).toBe(unfolded[e]);
+        }
+      }
+      // Within each kind, the colour's own order: free, held and unfolding, each as the plain list has them.
+      const kinds = (e: number) =>
+        unfolded[e] > t.restLength[e] ? 2 : Math.max(weights[t.edges[2 * e]], weights[t.edges[2 * e + 1]]) > 0 ? 1 : 0;
+      const inColour = plain.filter((e) => colourOf(e) === c);
+      expect(listed).toEqual([0, 1, 2].flatMap((kind) => inColour.filter((e) => kinds(e) === kind).sort((p, q) => p - q)));
+    }
+    expect(unfolding).toBeGreaterThan(0);
+    expect(heldUnfolding).toBeGreaterThan(0);
   });
 
   it('list only the edges and triangles with an included vertex, in the same order, the triangles part by part', () => {

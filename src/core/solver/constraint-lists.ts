@@ -25,21 +25,34 @@ export const PARTS = 4;
 /**
  * The length constraints, colour by colour as the topology orders them. Within a colour no two edges share a vertex,
  * so their order within the colour does not change the result: each colour lists first the edges no muscle holds (a
- * plain length projection), then the held ones (which also bulge when compressed), so that neither loop branches on
- * the muscle weight.
+ * plain length projection), then the held ones (which also bulge when compressed), then the unfolding ones (free
+ * edges that stretch without resistance up to their unfolded length, see SolverBuffers.unfoldedLengths), so that no
+ * loop branches on the edge's kind.
  *
  * Each listed edge is one record of four 32-bit words, so that the loop reads one aligned stream: listed edge e has its
  * ends' xyz offsets (3 * vertex) at `ends[4e]` and `ends[4e + 1]`, its rest length at `rest[4e + 2]` and, if held, the
- * larger muscle weight of its ends at `rest[4e + 3]` (two views of one buffer). The weight, with each vertex's bulge
- * direction (see PartArrays.bulgeDirections), replaces six floats an edge of precomputed pushes, whose reading bound
- * the held edges' loop (15.6 against 21.3 ns an edge in a loop test on the high head's smile).
+ * larger muscle weight of its ends at `rest[4e + 3]`, if unfolding, its unfolded length there (two views of one
+ * buffer). The weight, with each vertex's bulge direction (see PartArrays.bulgeDirections), replaces six floats an
+ * edge of precomputed pushes, whose reading bound the held edges' loop (15.6 against 21.3 ns an edge in a loop test on
+ * the high head's smile).
  */
 export interface EdgeLists {
   ends: Uint32Array;
   rest: Float32Array;
-  /** Colour c's free edges are `runs[2c]..runs[2c+1]`, its held edges `runs[2c+1]..runs[2c+2]`. */
+  /**
+   * Colour c's free edges are `runs[3c]..runs[3c+1]`, its held edges `runs[3c+1]..runs[3c+2]`, its unfolding edges
+   * `runs[3c+2]..runs[3c+3]`.
+   */
   runs: Uint32Array;
+  /**
+   * Scratch while filling: the held edges of a colour from its start, the unfolding ones from its end (in the lists'
+   * memory, so that posting the lists to a partner thread copies nothing).
+   */
+  readonly sorting: Uint32Array;
 }
+
+/** Edge kinds per colour in EdgeLists.runs: free, held, unfolding. */
+export const EDGE_KINDS = 3;
 
 /** Words per listed edge (see EdgeLists). */
 export const EDGE_RECORD = 4;
@@ -49,7 +62,12 @@ export function createEdgeLists(topology: SkinTopology, memory: Memory = 'local'
   const m = topology.restLength.length;
   const colours = topology.colourStart.length - 1;
   const records = allocate(Uint32Array, EDGE_RECORD * m, memory);
-  return { ends: records, rest: new Float32Array(records.buffer), runs: allocate(Uint32Array, 2 * colours + 1, memory) };
+  return {
+    ends: records,
+    rest: new Float32Array(records.buffer),
+    runs: allocate(Uint32Array, EDGE_KINDS * colours + 1, memory),
+    sorting: allocate(Uint32Array, m, memory),
+  };
 }
 
 /**
@@ -96,36 +114,63 @@ function partOf(lo: number, hi: number, blocks: Uint32Array): number {
 }
 
 /**
- * Lists the edges with at least one end `included` (every edge when `included` is null), colour by colour, free edges
- * before held ones. `weights` are the muscle weights along the surface. Returns the number of listed edges.
+ * Lists the edges with at least one end `included` (every edge when `included` is null), colour by colour: free edges,
+ * held ones, unfolding ones. `weights` are the muscle weights along the surface; `unfolded` the length each edge may
+ * reach before it resists stretching (the rest lengths by default: none unfolds). An unfolding edge unfolds even where
+ * a muscle holds it (a closing lid's turn stretches the skin at its border most). Returns the number of listed edges.
  */
-export function fillEdgeLists(into: EdgeLists, topology: SkinTopology, weights: Float32Array, included: Uint8Array | null): number {
+export function fillEdgeLists(
+  into: EdgeLists,
+  topology: SkinTopology,
+  weights: Float32Array,
+  included: Uint8Array | null,
+  unfolded: Float32Array = topology.restLength,
+): number {
   const E = topology.edges;
   const L = topology.restLength;
   const colourStart = topology.colourStart;
   const colours = colourStart.length - 1;
+  const sorting = into.sorting;
+  const end = sorting.length;
   let o = 0;
+  // One walk over each colour: free edges are listed at once, held and unfolding ones set aside and listed after.
   for (let c = 0; c < colours; c++) {
-    into.runs[2 * c] = o;
-    for (let pass = 0; pass < 2; pass++) {
-      if (pass === 1) into.runs[2 * c + 1] = o;
-      for (let e = colourStart[c]; e < colourStart[c + 1]; e++) {
-        const a = E[2 * e];
-        const b = E[2 * e + 1];
-        if (included !== null && included[a] === 0 && included[b] === 0) continue;
-        const held = weights[a] > weights[b] ? weights[a] : weights[b];
-        if (held > 0 !== (pass === 1)) continue;
-        const r = EDGE_RECORD * o;
-        into.ends[r] = 3 * a;
-        into.ends[r + 1] = 3 * b;
-        into.rest[r + 2] = L[e];
-        into.rest[r + 3] = held;
-        o++;
-      }
+    into.runs[EDGE_KINDS * c] = o;
+    let held = 0;
+    let unfolding = 0;
+    for (let e = colourStart[c]; e < colourStart[c + 1]; e++) {
+      const a = E[2 * e];
+      const b = E[2 * e + 1];
+      if (included !== null && included[a] === 0 && included[b] === 0) continue;
+      if (unfolded[e] > L[e]) sorting[end - ++unfolding] = e;
+      else if (weights[a] > 0 || weights[b] > 0) sorting[held++] = e;
+      else o = listEdge(into, o, a, b, L[e], 0);
+    }
+    into.runs[EDGE_KINDS * c + 1] = o;
+    for (let k = 0; k < held; k++) {
+      const e = sorting[k];
+      const a = E[2 * e];
+      const b = E[2 * e + 1];
+      o = listEdge(into, o, a, b, L[e], weights[a] > weights[b] ? weights[a] : weights[b]);
+    }
+    into.runs[EDGE_KINDS * c + 2] = o;
+    for (let k = 1; k <= unfolding; k++) {
+      const e = sorting[end - k];
+      o = listEdge(into, o, E[2 * e], E[2 * e + 1], L[e], unfolded[e]);
     }
   }
-  into.runs[2 * colours] = o;
+  into.runs[EDGE_KINDS * colours] = o;
   return o;
+}
+
+/** Writes edge record `o` (see EdgeLists) and returns the next record's index. */
+function listEdge(into: EdgeLists, o: number, a: number, b: number, rest: number, fourth: number): number {
+  const r = EDGE_RECORD * o;
+  into.ends[r] = 3 * a;
+  into.ends[r + 1] = 3 * b;
+  into.rest[r + 2] = rest;
+  into.rest[r + 3] = fourth;
+  return o + 1;
 }
 
 /** Triangles for the orientation constraints, part by part, in mesh order within a part. */

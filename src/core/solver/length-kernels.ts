@@ -1,5 +1,5 @@
 /** Length constraints (thesis 4.3.3) as part loops (see solver-kernels.ts): free edges and edges a muscle holds. */
-import { EDGE_RECORD } from './constraint-lists';
+import { EDGE_KINDS, EDGE_RECORD } from './constraint-lists';
 import { allocate, type Memory } from './memory';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
@@ -24,25 +24,32 @@ export function projectLengths(
 ): void {
   const { ends, rest, runs } = a.edges;
   const x = a.positions;
-  for (let c = 0; 2 * c + 2 < runs.length; c++) {
-    let f0 = runs[2 * c];
-    let f1 = runs[2 * c + 1];
+  const K = EDGE_KINDS;
+  for (let c = 0; K * c + K < runs.length; c++) {
+    let f0 = runs[K * c];
+    let f1 = runs[K * c + 1];
     let h0 = f1;
-    let h1 = runs[2 * c + 2];
+    let h1 = runs[K * c + 2];
+    let u0 = h1;
+    let u1 = runs[K * c + 3];
     if (board) {
       const f = (f0 + f1) >> 1;
       const h = (h0 + h1) >> 1;
+      const u = (u0 + u1) >> 1;
       if (half === 0) {
         f1 = f;
         h1 = h;
+        u1 = u;
       } else {
         f0 = f;
         h0 = h;
+        u0 = u;
       }
     }
     if (pretension > 0) projectSlackFreeEdges(x, ends, rest, stiffness, 1 - pretension, f0, f1);
     else projectFreeEdges(x, ends, rest, stiffness, f0, f1);
     projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, 1 - pretension, h0, h1);
+    if (u1 > u0) projectUnfoldingEdges(x, ends, rest, stiffness, 1 - pretension, u0, u1);
     if (board) meet(board);
   }
 }
@@ -121,6 +128,50 @@ function projectSlackFreeEdges(
     const r0 = rest[j + 2];
     const rest2 = r0 * r0;
     const r2 = Math.min(Math.max(d2, slack2 * rest2), rest2);
+    const k = (s2 * (d2 * d2 - r2 * r2)) / (5 * d2 * d2 + 10 * d2 * r2 + r2 * r2);
+    x[ia] = ax + k * dx;
+    x[ia + 1] = ay + k * dy;
+    x[ia + 2] = az + k * dz;
+    x[ib] = bx - k * dx;
+    x[ib + 1] = by - k * dy;
+    x[ib + 2] = bz - k * dz;
+  }
+}
+
+/**
+ * projectSlackFreeEdges for unfolding edges (see EdgeLists): the length aimed at is the edge's own within the band from
+ * `slack` times the rest length to its unfolded length, stored in the record's fourth word. Folded skin that opens
+ * (the upper lid's, as the lid closes) lengthens without pulling on the skin beyond it, and resists only once open.
+ */
+function projectUnfoldingEdges(
+  x: Float32Array,
+  ends: Uint32Array,
+  rest: Float32Array,
+  stiffness: number,
+  slack: number,
+  e0: number,
+  e1: number,
+): void {
+  const s2 = 2 * stiffness;
+  const slack2 = slack * slack;
+  const r = EDGE_RECORD; // read once, as in projectFreeEdges
+  const j1 = r * e1;
+  for (let j = r * e0; j < j1; j += r) {
+    const ia = ends[j];
+    const ib = ends[j + 1];
+    const ax = x[ia],
+      ay = x[ia + 1],
+      az = x[ia + 2];
+    const bx = x[ib],
+      by = x[ib + 1],
+      bz = x[ib + 2];
+    const dx = bx - ax;
+    const dy = by - ay;
+    const dz = bz - az;
+    const d2 = dx * dx + dy * dy + dz * dz;
+    const r0 = rest[j + 2];
+    const open = rest[j + 3];
+    const r2 = Math.min(Math.max(d2, slack2 * r0 * r0), open * open);
     const k = (s2 * (d2 * d2 - r2 * r2)) / (5 * d2 * d2 + 10 * d2 * r2 + r2 * r2);
     x[ia] = ax + k * dx;
     x[ia + 1] = ay + k * dy;

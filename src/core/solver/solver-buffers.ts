@@ -18,6 +18,11 @@ export interface SolverBuffers {
    * bodily and set it as high as the surface weight.
    */
   normalWeights: Float32Array;
+  /**
+   * Length each edge (topology order) may reach before it resists stretching: its rest length, or more where folded
+   * skin unfolds (above a closing lid, see LidSlack). Read when the muscle inputs change.
+   */
+  unfoldedLengths: Float32Array;
 }
 
 /** Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). */
@@ -34,6 +39,7 @@ export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'lo
     targets: copy(topology.rest),
     weights: allocate(Float32Array, n, memory),
     normalWeights: allocate(Float32Array, n, memory),
+    unfoldedLengths: copy(topology.restLength),
   };
 }
 

@@ -235,6 +235,7 @@ export class SkinSolver {
   /** Releases every muscle constraint. */
   clearMuscleTargets(): void {
     clearMuscleInputs(this.buffers, this.topology.rest);
+    this.buffers.unfoldedLengths.set(this.topology.restLength);
     this.updateMuscles();
   }
 
@@ -250,7 +251,14 @@ export class SkinSolver {
     // Of the lists, only the edges' depend on the weights (held edges apart, with their weight): while a slider moves
     // the region mostly stays as it is, and the other lists with it.
     if (this.region.revision !== this.listedRevision) this.refreshLists();
-    else fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, this.region.enabled ? this.region.inside : null);
+    else
+      fillEdgeLists(
+        this.edgeLists,
+        this.topology,
+        this.buffers.weights,
+        this.region.enabled ? this.region.inside : null,
+        this.buffers.unfoldedLengths,
+      );
     this.inputsChanged = true;
     this.restartMotion();
   }
@@ -421,7 +429,7 @@ export class SkinSolver {
   /** Rebuilds the constraint lists for the current region and muscle weights. */
   private refreshLists(): void {
     const included = this.region.enabled ? this.region.inside : null;
-    fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, included);
+    fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, included, this.buffers.unfoldedLengths);
     this.listBending();
     // The watched flags follow their triangles to their new places.
     const places = this.parts.listedTriangle;

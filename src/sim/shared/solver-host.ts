@@ -1,6 +1,7 @@
 import type { Collider } from '../../core/solver/colliders';
 import type { RigEdit } from './protocol';
 import { JawFollower } from '../../core/rig/jaw-follower';
+import { LidSlack } from '../../core/rig/lid-slack';
 import { MuscleRig } from '../../core/rig/muscles';
 import { NeckCarry } from '../../core/rig/neck-carry';
 import { isRestingPose, restingHeadPose } from '../../core/expression/head-pose';
@@ -60,6 +61,8 @@ export class SolverHost {
   readonly solver: SkinSolver;
   /** Turns contractions into the solver's muscle targets and weights; absent without muscles. */
   private rig: MuscleRig | undefined;
+  /** Lengthens the skin above a closing lid (see LidSlack); absent without muscles. */
+  private slack: LidSlack | undefined;
   /** The neck's pull under a turned head (AU51 to AU58); null for a skin without a neck cut. */
   readonly neck: NeckCarry | null;
   /** The head pose last applied. */
@@ -89,6 +92,7 @@ export class SolverHost {
       memory: input.memory,
     });
     this.rig = input.muscles.length > 0 ? new MuscleRig(this.topology.rest, input.muscles) : undefined;
+    this.slack = this.rig ? new LidSlack(this.topology, input.muscles) : undefined;
     this.neck = NeckCarry.create(this.topology.rest, this.topology.triangles);
     this.colliders = input.colliders;
     this.activeRegion = input.activeRegion;
@@ -140,10 +144,12 @@ export class SolverHost {
       if (!this.rig) throw new Error('editRig: the rig has no muscles to replace');
       const before = this.rig.muscles[edit.index];
       this.rig.setMuscle(edit.index, edit.muscle);
+      if (before?.type === 'lid' || edit.muscle.type === 'lid') this.newSlack(this.rig.muscles);
       if (before?.type === 'jaw' || edit.muscle.type === 'jaw') this.newJaw(this.rig.muscles);
       if (this.contractions) this.computeMuscles();
     } else {
       this.rig = edit.muscles.length > 0 ? new MuscleRig(this.topology.rest, edit.muscles) : undefined;
+      this.newSlack(edit.muscles);
       this.newJaw(edit.muscles);
       this.contractions = null;
       if (!this.rig) {
@@ -171,7 +177,9 @@ export class SolverHost {
     const rig = this.rig;
     if (!rig) return;
     const buffers = createSolverBuffers(this.topology);
-    rig.compute(new Float32Array(rig.muscles.length).fill(WARM_UP_CONTRACTION), buffers);
+    const warm = new Float32Array(rig.muscles.length).fill(WARM_UP_CONTRACTION);
+    rig.compute(warm, buffers);
+    this.slack?.compute(warm, buffers.unfoldedLengths);
     yield;
     const colliders = structuredClone(this.colliders);
     const solver = new SkinSolver(this.topology, {
@@ -239,8 +247,15 @@ export class SolverHost {
     if (!this.rig || !this.contractions) return;
     this.jaw?.update(this.contractions);
     this.rig.compute(this.contractions, this.solver.buffers);
+    this.slack?.compute(this.contractions, this.solver.buffers.unfoldedLengths);
     if (this.neck && !isRestingPose(this.headPose)) this.neck.apply(this.headPose, this.solver.buffers);
     this.solver.updateMuscles();
+  }
+
+  /** A new slack for new lids; the skin's own rest lengths until contractions come. */
+  private newSlack(muscles: readonly Muscle[]): void {
+    this.slack = muscles.length > 0 ? new LidSlack(this.topology, muscles) : undefined;
+    this.solver.buffers.unfoldedLengths.set(this.topology.restLength);
   }
 
   /** Puts the teeth back where the model placed them and lets the rig's jaw (if any) turn them from there. */
