@@ -65,7 +65,7 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
 
   // FACS gives AU43 (and the blink, AU45, the same turn of the lid) no brow movement. The lid's turn once stretched the
   // skin above it 30 to 80 % and drew the brows down 6.0 mm at their head, 4.2 at their tail (1.8 and 2.7 at the FACS
-  // landmarks); its skin now unfolds instead (LidSlack): 0.8, 0.0, 0.0 and 0.0 mm.
+  // landmarks); its skin now unfolds instead (LidSlack): 0.6, 0.0, 0.0 and 0.0 mm.
   it('AU43 closes the eyes without drawing the brows down', () => {
     const x = settle('AU43');
     for (const name of ['browHead', 'browTail', 'innerBrow', 'outerBrow'] as const)
