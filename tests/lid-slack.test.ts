@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { LID_SLACK, LidSlack } from '../src/core/rig/lid-slack';
+import { LID_FIRM, LID_SLACK, LidSlack } from '../src/core/rig/lid-slack';
 import type { LidMuscle, Muscle } from '../src/core/rig/rig-types';
 import { SkinSolver } from '../src/core/solver/solver';
 import { buildTopology } from '../src/core/solver/topology';
@@ -96,6 +96,25 @@ describe('the upper lid unfolds as it closes (LidSlack)', () => {
       s.step();
     }
     expect(length()).toBeLessThan(1.02 * s.buffers.unfoldedLengths[e0]);
+  });
+
+  it('unfolds nothing while the lid is turned no more than LID_FIRM, and where two lids overlap takes the longer', () => {
+    const firm = topology.restLength.slice().fill(1);
+    new LidSlack(topology, [lid]).compute([LID_FIRM], firm);
+    let changed = 0;
+    for (let e = 0; e < firm.length; e++) if (firm[e] !== 1 && firm[e] !== topology.restLength[e]) changed++;
+    expect(changed).toBe(0);
+    // A second lid over the same skin, open: the first one's unfolding stands, in either order.
+    const alone = topology.restLength.slice();
+    new LidSlack(topology, [lid]).compute([1], alone);
+    for (const order of [
+      [lid, { ...lid, name: 'other' }],
+      [{ ...lid, name: 'other' }, lid],
+    ]) {
+      const both = topology.restLength.slice();
+      new LidSlack(topology, order).compute(order[0] === lid ? [1, 0] : [0, 1], both);
+      expect(Array.from(both)).toEqual(Array.from(alone));
+    }
   });
 
   it('takes no edge of an opening lid or of another muscle type', () => {

@@ -6,9 +6,9 @@
  * constraints, so the turn stretched it 30 to 80 % and pulled the brows 4 to 7 mm down with every blink. A real upper
  * lid carries its slack folded under the brow, which comes out as the lid closes. Here a closing lid muscle (positive
  * `maxAngle`) lets the edges above its centre stretch freely, up to `LID_SLACK` more of the part of each edge that runs
- * across its hinge (along the hinge the lid does not pull), in proportion to its contraction; past that, and under
- * compression, they resist as any edge (see SolverBuffers.unfoldedLengths). An open lid (contraction 0) leaves every
- * edge as it was, so the face comes home exactly.
+ * across its hinge (along the hinge the lid does not pull), in proportion to its closing past LID_FIRM; past that,
+ * and under compression, they resist as any edge (see SolverBuffers.unfoldedLengths). An open lid (contraction 0)
+ * leaves every edge as it was, so the face comes home exactly.
  */
 import { eulerMatrix } from '../math3';
 import type { Muscle } from './rig-types';
@@ -19,6 +19,12 @@ export const LID_SLACK = 2;
 const LID_SLACK_REACH = 4;
 /** How far to each side its slack reaches, in the ellipsoid's widths (radii[0]): past the lid's corners. */
 const LID_SLACK_WIDTH = 1.3;
+/**
+ * The contraction up to which nothing unfolds: a lid turned a little (AU4's fold of skin pushed over the lid, 8 %, or
+ * a lid following the gaze down a few degrees) presses the skin above it together rather than stretching it; from
+ * there the fold opens in proportion to the rest of the closing.
+ */
+export const LID_FIRM = 0.1;
 /** Share of the reach over which the slack is whole; it fades (cosine) to none at the reach. */
 const WHOLE = 0.6;
 
@@ -95,17 +101,19 @@ export class LidSlack {
     return this.edges.length;
   }
 
-  /** Writes the unfolded lengths of its edges at these muscle contractions into `unfoldedLengths` (one per edge). */
+  /**
+   * Writes the unfolded lengths of its edges at these muscle contractions into `unfoldedLengths` (one per edge); an
+   * edge in the zones of two lids takes the longer.
+   */
   compute(contractions: ArrayLike<number>, unfoldedLengths: Float32Array): void {
+    for (let i = 0; i < this.edges.length; i++) unfoldedLengths[this.edges[i]] = this.restLength[this.edges[i]];
     for (let i = 0; i < this.edges.length; i++) {
+      const closing = (Math.min(contractions[this.muscle[i]], 1) - LID_FIRM) / (1 - LID_FIRM);
+      if (!(closing > 0)) continue;
       const e = this.edges[i];
-      const c = contractions[this.muscle[i]];
-      if (!(c > 0)) {
-        unfoldedLengths[e] = this.restLength[e];
-        continue;
-      }
-      const across = this.across[i] * (1 + LID_SLACK * this.share[i] * Math.min(c, 1));
-      unfoldedLengths[e] = Math.sqrt(this.along[i] * this.along[i] + across * across);
+      const across = this.across[i] * (1 + LID_SLACK * this.share[i] * closing);
+      const unfolded = Math.sqrt(this.along[i] * this.along[i] + across * across);
+      if (unfolded > unfoldedLengths[e]) unfoldedLengths[e] = unfolded;
     }
   }
 }
