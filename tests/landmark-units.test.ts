@@ -100,6 +100,32 @@ describe('Action Units from tracker landmarks', () => {
     expect(at(u, 'AU43R')).toBeLessThan(1e-9);
   });
 
+  it('read no brow movement when the eyes close and the face mesh drops the eye corners', () => {
+    // As the face mesh saw the default head's closed eyes under still brows (in eye distances): the outer corners
+    // 0.17 down, the inner 0.075, the nose tip 0.034, the brows 0.05 to 0.07 (the whole fit moves a little). Over the
+    // eye corners alone that read as AU1+AU2 0.4.
+    const px = (d: number): [number, number] => [0, 60 * d];
+    const u = run(
+      moved(neutralFace(), {
+        33: px(0.17),
+        263: px(0.17),
+        133: px(0.075),
+        362: px(0.075),
+        1: px(0.034),
+        107: px(0.05),
+        55: px(0.05),
+        336: px(0.05),
+        285: px(0.05),
+        70: px(0.07),
+        46: px(0.07),
+        300: px(0.07),
+        276: px(0.07),
+      }),
+    );
+    for (const id of ['AU1L', 'AU1R', 'AU2L', 'AU2R']) expect(at(u, id), id).toBeLessThan(0.05);
+    for (const id of ['AU4L', 'AU4R']) expect(at(u, id), id).toBeLessThan(0.25);
+  });
+
   it('read no lip corner pulled down when the jaw drops and the corners follow a third of the lower lip', () => {
     // The jaw at E (0.3 eye distances, 18 px): the lower lip and chin 18 px down, the corners 6. Under the nose, as the
     // corners were measured before, that read as AU15 at E.

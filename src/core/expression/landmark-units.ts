@@ -200,10 +200,16 @@ export class LandmarkUnits {
     this.upX = (ly - ry) / across;
     this.upY = -(lx - rx) / across;
     const m = this.measures;
-    m[BROW_INNER_L] = this.up2(l, P.leftBrowInnerTop, P.leftBrowInnerBottom) - this.up(l, P.leftEyeInner);
-    m[BROW_INNER_R] = this.up2(l, P.rightBrowInnerTop, P.rightBrowInnerBottom) - this.up(l, P.rightEyeInner);
-    m[BROW_OUTER_L] = this.up2(l, P.leftBrowOuterTop, P.leftBrowOuterBottom) - this.up(l, P.leftEyeOuter);
-    m[BROW_OUTER_R] = this.up2(l, P.rightBrowOuterTop, P.rightBrowOuterBottom) - this.up(l, P.rightEyeOuter);
+    // The brows' height over the inner eye corner and the nose tip together: the face mesh drops the eye corners as
+    // the eyes close (on the default head, with the brows still, the outer corner 0.17 eye distances and the inner one
+    // 0.075, the nose tip 0.034, the brows 0.05 to 0.07), so over the corners alone closing the eyes read as raised
+    // brows (AU1+AU2 0.4); over both, a brow raise reads as before and closed eyes as a still brow.
+    const left = this.up2(l, P.leftEyeInner, P.noseTip);
+    const right = this.up2(l, P.rightEyeInner, P.noseTip);
+    m[BROW_INNER_L] = this.up2(l, P.leftBrowInnerTop, P.leftBrowInnerBottom) - left;
+    m[BROW_INNER_R] = this.up2(l, P.rightBrowInnerTop, P.rightBrowInnerBottom) - right;
+    m[BROW_OUTER_L] = this.up2(l, P.leftBrowOuterTop, P.leftBrowOuterBottom) - left;
+    m[BROW_OUTER_R] = this.up2(l, P.rightBrowOuterTop, P.rightBrowOuterBottom) - right;
     // Each lid's opening at three places across the eye, averaged: one pair of points is noisy.
     m[LID_L] =
       (this.gap(l, P.leftUpperLid, P.leftLowerLid) +
