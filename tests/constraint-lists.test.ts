@@ -114,6 +114,9 @@ describe('constraint lists', () => {
         const grows = unfolded[e] > t.restLength[e];
         expect(grows).toBe(k >= lists.runs[3 * c + 2]);
         expect(lists.rest[EDGE_RECORD * k + 2]).toBe(t.restLength[e]);
+        const heldEdge = Math.max(weights[t.edges[2 * e]], weights[t.edges[2 * e + 1]]) > 0;
+        // A free edge takes up to its rest length without resisting.
+        if (!grows && !heldEdge) expect(lists.rest[EDGE_RECORD * k + 3]).toBe(t.restLength[e]);
         if (grows) {
           unfolding++;
           if (Math.max(weights[t.edges[2 * e]], weights[t.edges[2 * e + 1]]) > 0) heldUnfolding++;

@@ -30,11 +30,11 @@ export const PARTS = 4;
  * loop branches on the edge's kind.
  *
  * Each listed edge is one record of four 32-bit words, so that the loop reads one aligned stream: listed edge e has its
- * ends' xyz offsets (3 * vertex) at `ends[4e]` and `ends[4e + 1]`, its rest length at `rest[4e + 2]` and, if held, the
- * larger muscle weight of its ends at `rest[4e + 3]`, if unfolding, its unfolded length there (two views of one
- * buffer). The weight, with each vertex's bulge direction (see PartArrays.bulgeDirections), replaces six floats an
- * edge of precomputed pushes, whose reading bound the held edges' loop (15.6 against 21.3 ns an edge in a loop test on
- * the high head's smile).
+ * ends' xyz offsets (3 * vertex) at `ends[4e]` and `ends[4e + 1]`, its rest length at `rest[4e + 2]` and at
+ * `rest[4e + 3]` the longest length it takes without resisting (its rest length if free, its unfolded length if
+ * unfolding) or, if held, the larger muscle weight of its ends (two views of one buffer). The weight, with each
+ * vertex's bulge direction (see PartArrays.bulgeDirections), replaces six floats an edge of precomputed pushes, whose
+ * reading bound the held edges' loop (15.6 against 21.3 ns an edge in a loop test on the high head's smile).
  */
 export interface EdgeLists {
   ends: Uint32Array;
@@ -144,7 +144,7 @@ export function fillEdgeLists(
       if (included !== null && included[a] === 0 && included[b] === 0) continue;
       if (unfolded[e] > L[e]) sorting[end - ++unfolding] = e;
       else if (weights[a] > 0 || weights[b] > 0) sorting[held++] = e;
-      else o = listEdge(into, o, a, b, L[e], 0);
+      else o = listEdge(into, o, a, b, L[e], L[e]);
     }
     into.runs[EDGE_KINDS * c + 1] = o;
     for (let k = 0; k < held; k++) {

@@ -46,10 +46,10 @@ export function projectLengths(
         u0 = u;
       }
     }
-    if (pretension > 0) projectSlackFreeEdges(x, ends, rest, stiffness, 1 - pretension, f0, f1);
+    if (pretension > 0) projectBandEdges(x, ends, rest, stiffness, 1 - pretension, f0, f1);
     else projectFreeEdges(x, ends, rest, stiffness, f0, f1);
     projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, 1 - pretension, h0, h1);
-    if (u1 > u0) projectUnfoldingEdges(x, ends, rest, stiffness, 1 - pretension, u0, u1);
+    if (u1 > u0) projectBandEdges(x, ends, rest, stiffness, 1 - pretension, u0, u1);
     if (board) meet(board);
   }
 }
@@ -94,56 +94,14 @@ function projectFreeEdges(x: Float32Array, ends: Uint32Array, rest: Float32Array
 }
 
 /**
- * projectFreeEdges for a skin with pretension: the length aimed at is the edge's own within the band from `slack`
- * times the rest length to the rest length (see projectLengths), the band's nearer end outside it, a clamp of |d|².
- * A loop of its own: the clamp lengthens the path to the divider, and made every free edge 60 % slower (11 to 18 ns an
- * edge in Node) where there is no band.
+ * projectFreeEdges with a band (a skin with pretension, or unfolding edges): the length aimed at is the edge's own
+ * within the band from `slack` times its rest length to the length in its record's fourth word (its rest length for a
+ * free edge, its unfolded length for an unfolding one, see EdgeLists), the band's nearer end outside it, a clamp of
+ * |d|². Folded skin that opens (the upper lid's, as the lid closes) so lengthens without pulling on the skin beyond
+ * it. A loop of its own: the clamp lengthens the path to the divider, and made every free edge 60 % slower (11 to 18
+ * ns an edge in Node) where there is no band.
  */
-function projectSlackFreeEdges(
-  x: Float32Array,
-  ends: Uint32Array,
-  rest: Float32Array,
-  stiffness: number,
-  slack: number,
-  e0: number,
-  e1: number,
-): void {
-  const s2 = 2 * stiffness;
-  const slack2 = slack * slack;
-  const r = EDGE_RECORD; // read once, as in projectFreeEdges
-  const j1 = r * e1;
-  for (let j = r * e0; j < j1; j += r) {
-    const ia = ends[j];
-    const ib = ends[j + 1];
-    const ax = x[ia],
-      ay = x[ia + 1],
-      az = x[ia + 2];
-    const bx = x[ib],
-      by = x[ib + 1],
-      bz = x[ib + 2];
-    const dx = bx - ax;
-    const dy = by - ay;
-    const dz = bz - az;
-    const d2 = dx * dx + dy * dy + dz * dz;
-    const r0 = rest[j + 2];
-    const rest2 = r0 * r0;
-    const r2 = Math.min(Math.max(d2, slack2 * rest2), rest2);
-    const k = (s2 * (d2 * d2 - r2 * r2)) / (5 * d2 * d2 + 10 * d2 * r2 + r2 * r2);
-    x[ia] = ax + k * dx;
-    x[ia + 1] = ay + k * dy;
-    x[ia + 2] = az + k * dz;
-    x[ib] = bx - k * dx;
-    x[ib + 1] = by - k * dy;
-    x[ib + 2] = bz - k * dz;
-  }
-}
-
-/**
- * projectSlackFreeEdges for unfolding edges (see EdgeLists): the length aimed at is the edge's own within the band from
- * `slack` times the rest length to its unfolded length, stored in the record's fourth word. Folded skin that opens
- * (the upper lid's, as the lid closes) lengthens without pulling on the skin beyond it, and resists only once open.
- */
-function projectUnfoldingEdges(
+function projectBandEdges(
   x: Float32Array,
   ends: Uint32Array,
   rest: Float32Array,
