@@ -48,7 +48,7 @@ export function anchorFrame(
   let nx = w0 * normals[i0] + w1 * normals[i1] + w2 * normals[i2];
   let ny = w0 * normals[i0 + 1] + w1 * normals[i1 + 1] + w2 * normals[i2 + 1];
   let nz = w0 * normals[i0 + 2] + w1 * normals[i1 + 2] + w2 * normals[i2 + 2];
-  let n = Math.hypot(nx, ny, nz);
+  let n = Math.sqrt(nx * nx + ny * ny + nz * nz);
   if (!(n > 1e-12)) {
     // No usable vertex normals (a sliver, or zero normals): the triangle's own.
     const ax = positions[i1] - positions[i0],
@@ -60,7 +60,7 @@ export function anchorFrame(
     nx = ay * bz - az * by;
     ny = az * bx - ax * bz;
     nz = ax * by - ay * bx;
-    n = Math.hypot(nx, ny, nz) || 1;
+    n = Math.sqrt(nx * nx + ny * ny + nz * nz) || 1;
   }
   nx /= n;
   ny /= n;
@@ -72,7 +72,7 @@ export function anchorFrame(
   tx -= along * nx;
   ty -= along * ny;
   tz -= along * nz;
-  let t = Math.hypot(tx, ty, tz);
+  let t = Math.sqrt(tx * tx + ty * ty + tz * tz);
   if (!(t > 1e-12)) {
     // An edge along the normal: any direction across it will do, as long as it is the same at rest and now.
     tx = Math.abs(nx) < 0.9 ? 1 : 0;
@@ -82,7 +82,7 @@ export function anchorFrame(
     tx -= d * nx;
     ty -= d * ny;
     tz -= d * nz;
-    t = Math.hypot(tx, ty, tz);
+    t = Math.sqrt(tx * tx + ty * ty + tz * tz);
   }
   tx /= t;
   ty /= t;
