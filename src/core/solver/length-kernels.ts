@@ -1,4 +1,4 @@
-/** Length constraints (thesis 4.3.3) as part loops (see solver-kernels.ts): free edges and edges a muscle holds. */
+/** Length constraints (thesis 4.3.3) as part loops (see solver-kernels.ts): free edges, edges a muscle holds and unfolding edges. */
 import { EDGE_KINDS, EDGE_RECORD } from './constraint-lists';
 import { allocate, type Memory } from './memory';
 import type { PartArrays } from './part-arrays';

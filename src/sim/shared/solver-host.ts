@@ -61,7 +61,7 @@ export class SolverHost {
   readonly solver: SkinSolver;
   /** Turns contractions into the solver's muscle targets and weights; absent without muscles. */
   private rig: MuscleRig | undefined;
-  /** Lengthens the skin above a closing lid (see LidSlack); absent without muscles. */
+  /** Unfolds the skin above a closing lid (see LidSlack); absent without muscles. */
   private slack: LidSlack | undefined;
   /** The neck's pull under a turned head (AU51 to AU58); null for a skin without a neck cut. */
   readonly neck: NeckCarry | null;
