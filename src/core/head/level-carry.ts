@@ -4,7 +4,7 @@
  * level gives, subdivided, the finer level's coarse shape (its folds apart) at a quarter of the cost. The stencils act
  * on any shape, not only the rest shape: subdivision is linear in the positions. Pure: no three.js, no DOM.
  */
-import { buildEdges, faceCount, polyMeshFromFaces, type PolyMesh } from './polymesh';
+import { buildEdges, faceCount, polyMeshFromFaces, vertexCount, type PolyMesh } from './polymesh';
 
 /** How near (metres) a subdivided coarse vertex must come to a fine vertex at rest to be taken as that vertex. */
 const MATCH = 1e-5;
@@ -43,7 +43,7 @@ interface Stencils {
  * points, face points) and with its rules: the crease rules on the boundary, a corner or a pinch kept where it is.
  */
 function subdivisionStencils(mesh: PolyMesh): Stencils {
-  const V = mesh.positions.length / 3;
+  const V = vertexCount(mesh);
   const F = faceCount(mesh);
   const edges = buildEdges(mesh);
   const E = edges.vertices.length / 2;
