@@ -87,6 +87,9 @@ try {
       { item, timeout: SETTLE_MS },
     );
     await page.waitForTimeout(200); // let the renderer show the newest frame
+    // A face that has just stopped is drawn at full resolution a moment later (data-quality, see picture-drawer.ts);
+    // a tile shot before that showed the moving face's lower-resolution, jagged draw.
+    await page.waitForSelector('canvas[data-quality="full"]', { timeout: 10_000 });
     const png = await page.screenshot({ clip: { x: region.x, y: region.y, width: region.width, height: region.height } });
     const label = person ? (item === 'neutral' ? person : item) : item;
     tiles.push({ label: settled ? label : `${label} (not settled)`, data: png.toString('base64') });
