@@ -1,5 +1,6 @@
 /**
- * Contact sheet of every Action Unit and preset at full intensity: `npm run gallery [-- low|medium|high] [options]`.
+ * Contact sheet of every Action Unit and preset at full intensity: `npm run gallery [-- low|medium|high] [options]`;
+ * resolutions joined by commas (`medium,high`) give a row of the same expressions per head.
  * Builds the app, serves it, sets each expression through `window.face`, waits for the skin to settle and writes
  * docs/images/gallery.jpg (tiles labelled with the expression; "not settled" if it did not within the time limit).
  *
@@ -22,7 +23,8 @@ const option = (name, fallback) => {
   const i = args.indexOf(`--${name}`);
   return i >= 0 && i + 1 < args.length ? args[i + 1] : fallback;
 };
-const resolution = args[0] && !args[0].startsWith('--') ? args[0] : 'medium';
+const resolutions = (args[0] && !args[0].startsWith('--') ? args[0] : 'medium').split(',');
+const resolution = resolutions.join(' and ');
 const only = option('only', '').split(',').filter(Boolean);
 const out = option('out', 'docs/images/gallery.jpg');
 const columns = Number(option('columns', '6'));
@@ -51,49 +53,53 @@ const server = spawn('npx', ['vite', 'preview', '--host', '127.0.0.1', '--port',
 const browser = await launchBrowser();
 try {
   const page = await browser.newPage({ viewport: { width: 640, height: 640 }, deviceScaleFactor: region.scale });
-  // Tried again while the server starts.
-  await openApp(page, `http://127.0.0.1:${PORT}/?resolution=${resolution}`, { timeout: 120_000, retries: 51, retryMs: 200 });
-  // The page's panel column (280 px on the right) would cover part of the face in this 640 px window.
-  await page.addStyleTag({ content: '.softface-panels, #status { display: none !important; }' });
-  // With --identities an item is `<identity>|<expression>`.
-  const items = args.includes('--identities')
-    ? (await page.evaluate(() => window.face.listIdentities().map((i) => i.name))).flatMap((n) => [`${n}|neutral`, `${n}|happiness`])
-    : only.length > 0
-      ? only
-      : await page.evaluate(() => [
-          'neutral',
-          ...window.face.listActionUnits().map((au) => au.id),
-          ...window.face.listPresets().map((p) => p.name),
-        ]);
   const tiles = [];
-  for (const entry of items) {
-    const [person, item] = entry.includes('|') ? entry.split('|') : [null, entry];
-    if (person) await page.evaluate((person) => window.face.setIdentity(person), person);
-    const settled = await page.evaluate(
-      async ({ item, timeout }) => {
-        const face = window.face;
-        face.reset();
-        for (const part of item.split('+')) {
-          if (part.startsWith('AU')) face.setActionUnit(part, 1);
-          else if (part !== 'neutral') face.applyPreset(part, 1);
-        }
-        try {
-          await face.settle(timeout);
-          return true;
-        } catch {
-          return false;
-        }
-      },
-      { item, timeout: SETTLE_MS },
-    );
-    await page.waitForTimeout(200); // let the renderer show the newest frame
-    // A face that has just stopped is drawn at full resolution a moment later (data-quality, see picture-drawer.ts);
-    // a tile shot before that showed the moving face's lower-resolution, jagged draw.
-    await page.waitForSelector('canvas[data-quality="full"]', { timeout: 10_000 });
-    const png = await page.screenshot({ clip: { x: region.x, y: region.y, width: region.width, height: region.height } });
-    const label = person ? (item === 'neutral' ? person : item) : item;
-    tiles.push({ label: settled ? label : `${label} (not settled)`, data: png.toString('base64') });
-    console.log(`${entry}: ${settled ? 'settled' : 'not settled'}`);
+  let items = null;
+  for (const head of resolutions) {
+    // Tried again while the server starts.
+    await openApp(page, `http://127.0.0.1:${PORT}/?resolution=${head}`, { timeout: 120_000, retries: 51, retryMs: 200 });
+    // The page's panel column (280 px on the right) would cover part of the face in this 640 px window.
+    await page.addStyleTag({ content: '.softface-panels, #status { display: none !important; }' });
+    // With --identities an item is `<identity>|<expression>`.
+    items ??= args.includes('--identities')
+      ? (await page.evaluate(() => window.face.listIdentities().map((i) => i.name))).flatMap((n) => [`${n}|neutral`, `${n}|happiness`])
+      : only.length > 0
+        ? only
+        : await page.evaluate(() => [
+            'neutral',
+            ...window.face.listActionUnits().map((au) => au.id),
+            ...window.face.listPresets().map((p) => p.name),
+          ]);
+    for (const entry of items) {
+      const [person, item] = entry.includes('|') ? entry.split('|') : [null, entry];
+      if (person) await page.evaluate((person) => window.face.setIdentity(person), person);
+      const settled = await page.evaluate(
+        async ({ item, timeout }) => {
+          const face = window.face;
+          face.reset();
+          for (const part of item.split('+')) {
+            if (part.startsWith('AU')) face.setActionUnit(part, 1);
+            else if (part !== 'neutral') face.applyPreset(part, 1);
+          }
+          try {
+            await face.settle(timeout);
+            return true;
+          } catch {
+            return false;
+          }
+        },
+        { item, timeout: SETTLE_MS },
+      );
+      await page.waitForTimeout(200); // let the renderer show the newest frame
+      // A face that has just stopped is drawn at full resolution a moment later (data-quality, see picture-drawer.ts);
+      // a tile shot before that showed the moving face's lower-resolution, jagged draw.
+      await page.waitForSelector('canvas[data-quality="full"]', { timeout: 10_000 });
+      const png = await page.screenshot({ clip: { x: region.x, y: region.y, width: region.width, height: region.height } });
+      const named = person ? (item === 'neutral' ? person : item) : item;
+      const label = resolutions.length > 1 ? `${named}, ${head} head` : named;
+      tiles.push({ label: settled ? label : `${label} (not settled)`, data: png.toString('base64') });
+      console.log(`${entry}: ${settled ? 'settled' : 'not settled'}`);
+    }
   }
   const sheet = await page.evaluate(
     async ({ tiles, tile, columns }) => {
@@ -117,7 +123,7 @@ try {
       }
       return canvas.toDataURL('image/jpeg', 0.85).split(',')[1];
     },
-    { tiles, tile: TILE, columns: Math.min(columns, tiles.length) },
+    { tiles, tile: TILE, columns: resolutions.length > 1 ? items.length : Math.min(columns, tiles.length) },
   );
   mkdirSync(dirname(out), { recursive: true });
   writeFileSync(out, Buffer.from(sheet, 'base64'));
