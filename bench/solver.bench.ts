@@ -131,6 +131,8 @@ for (const { name, frames } of RESOLUTIONS) {
 
 /** The rig rows: an Action Unit or a preset at full intensity, from rest, on a head resolution. */
 const RIG_CASES: { resolution: Resolution; expression: string; workers: 1 | 2; maxFrames: number }[] = [
+  { resolution: 'low', expression: 'happiness', workers: 1, maxFrames: 1500 },
+  { resolution: 'low', expression: 'happiness', workers: 2, maxFrames: 1500 },
   { resolution: 'medium', expression: 'AU12', workers: 1, maxFrames: 1500 },
   { resolution: 'medium', expression: 'AU12', workers: 2, maxFrames: 1500 },
   { resolution: 'medium', expression: 'happiness', workers: 1, maxFrames: 1500 },
