@@ -34,6 +34,7 @@ function neutralFace(): Landmark[] {
   set(13, 320, 287); // inner lips
   set(14, 320, 289);
   set(1, 320, 250); // nose tip
+  set(10, 320, 130); // the forehead's top
   set(152, 320, 330); // chin
   // The face's sides by the cheekbones, 60 / 0.46 px apart (the eye distance in face widths).
   set(234, 320 - 30 / 0.46, 215);
@@ -102,8 +103,8 @@ describe('Action Units from tracker landmarks', () => {
 
   it('read no brow movement when the eyes close and the face mesh drops the eye corners', () => {
     // As the face mesh saw the default head's closed eyes under still brows (in eye distances): the outer corners
-    // 0.17 down, the inner 0.075, the nose tip 0.034, the brows 0.05 to 0.07 (the whole fit moves a little). Over the
-    // eye corners alone that read as AU1+AU2 0.4.
+    // 0.17 down, the inner 0.075, the nose tip 0.037, the forehead's top 0.026, the brows 0.05 to 0.07 (the whole fit
+    // moves). Over the eye corners alone that read as AU1+AU2 0.4.
     const px = (d: number): [number, number] => [0, 60 * d];
     const u = run(
       moved(neutralFace(), {
@@ -111,7 +112,8 @@ describe('Action Units from tracker landmarks', () => {
         263: px(0.17),
         133: px(0.075),
         362: px(0.075),
-        1: px(0.034),
+        1: px(0.037),
+        10: px(0.026),
         107: px(0.05),
         55: px(0.05),
         336: px(0.05),
@@ -124,6 +126,30 @@ describe('Action Units from tracker landmarks', () => {
     );
     for (const id of ['AU1L', 'AU1R', 'AU2L', 'AU2R']) expect(at(u, id), id).toBeLessThan(0.05);
     for (const id of ['AU4L', 'AU4R']) expect(at(u, id), id).toBeLessThan(0.25);
+  });
+
+  it('read no brow movement under a smile that takes the nose tip down', () => {
+    // As the face mesh saw the default head's smile (AU12) under still brows (eye distances down): the nose tip
+    // 0.053, the inner eye corners 0.03, the brows 0.02, the forehead's top 0.017. Over the eye corners and the nose
+    // tip that read as AU1+AU2 0.2.
+    const px = (d: number): [number, number] => [0, 60 * d];
+    const u = run(
+      moved(neutralFace(), {
+        1: px(0.053),
+        133: px(0.03),
+        362: px(0.03),
+        10: px(0.017),
+        107: px(0.02),
+        55: px(0.02),
+        336: px(0.02),
+        285: px(0.02),
+        70: px(0.02),
+        46: px(0.02),
+        300: px(0.02),
+        276: px(0.02),
+      }),
+    );
+    for (const id of ['AU1L', 'AU1R', 'AU2L', 'AU2R', 'AU4L', 'AU4R']) expect(at(u, id), id).toBeLessThan(0.1);
   });
 
   it('read no lip corner pulled down when the jaw drops and the corners follow a third of the lower lip', () => {

@@ -45,6 +45,7 @@ const P = Object.freeze({
   upperLipInner: 13,
   lowerLipInner: 14,
   noseTip: 1,
+  foreheadTop: 10,
   chin: 152,
   rightFaceSide: 234,
   leftFaceSide: 454,
@@ -200,12 +201,15 @@ export class LandmarkUnits {
     this.upX = (ly - ry) / across;
     this.upY = -(lx - rx) / across;
     const m = this.measures;
-    // The brows' height over the inner eye corner and the nose tip together: the face mesh drops the eye corners as
-    // the eyes close (on the default head, with the brows still, the outer corner 0.17 eye distances and the inner one
-    // 0.075, the nose tip 0.034, the brows 0.05 to 0.07), so over the corners alone closing the eyes read as raised
-    // brows (AU1+AU2 0.4); over both, a brow raise reads as before and closed eyes as a still brow.
-    const left = this.up2(l, P.leftEyeInner, P.noseTip);
-    const right = this.up2(l, P.rightEyeInner, P.noseTip);
+    // The brows' height over the inner eye corner and the forehead's top together. The face mesh moves its whole fit
+    // with what it sees, so no single point stands still: as the eyes close it drops the eye corners (on the default
+    // head, with the brows still, the inner ones 0.055 to 0.075 eye distances, the brows 0.045 to 0.065, the forehead's
+    // top 0.026), under a smile the nose tip (0.053, the eye corners 0.03, the brows 0.02, the forehead's top 0.017),
+    // and as the brows rise it lifts the forehead's top by 0.021 and the eye corners by up to 0.015 (the brows 0.047).
+    // Over the eye corners alone closed eyes read as AU1+AU2 0.4; over the corners and the nose tip a smile read as
+    // 0.2 and a brow raise as 0.3; over the corners and the forehead's top each reads within 0.006 of still brows.
+    const left = this.up2(l, P.leftEyeInner, P.foreheadTop);
+    const right = this.up2(l, P.rightEyeInner, P.foreheadTop);
     m[BROW_INNER_L] = this.up2(l, P.leftBrowInnerTop, P.leftBrowInnerBottom) - left;
     m[BROW_INNER_R] = this.up2(l, P.rightBrowInnerTop, P.rightBrowInnerBottom) - right;
     m[BROW_OUTER_L] = this.up2(l, P.leftBrowOuterTop, P.leftBrowOuterBottom) - left;
