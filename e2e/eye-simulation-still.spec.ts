@@ -50,7 +50,10 @@ test('between saccades and blinks the eyes hold still, and the view draws nothin
           drawsAtLast = draws;
         } else {
           if (from > 0 && frames > from) still.push([frames - from, drawsAtLast - drawsBefore]);
-          if (now === '') drawsWhileMoving = draws;
+          // Every draw so far came with a move (a blink, the skin awake, or a new gaze: the frame that ends a stretch
+          // has drawn the change that ended it), as the still stretches must draw nothing. On a slow machine a watch
+          // may see no blink and no skin awake, only saccades.
+          drawsWhileMoving = draws;
           key = now;
           frames = 1;
           from = -1;
