@@ -54,7 +54,7 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
   // centimetre higher, which the frontalis and depressors moved more than the brows (AU1 raised the brow's head
   // 2.2 mm, AU2 its tail 4.5, AU4 lowered its head 3.6 and drew it 0.4 toward the midline). The muscles' lower fibres
   // now insert into the brow (thesis 4.5: a muscle per direction of pull, inserted where it moves the skin): 3.8, 6.1,
-  // 6.0 and 1.7 mm.
+  // 6.0 and 1.7 mm; with AU1's lower fibre reaching wider and the corrugator's lower fibres, 4.9, 6.1, 6.6 and 2.4.
   it('AU1, AU2 and AU4 move the brows themselves, where their hair grows, visibly', () => {
     expect(displacement(rest, settle('AU1'), lm.browHead).up).toBeGreaterThanOrEqual(3);
     expect(displacement(rest, settle('AU2'), lm.browTail).up).toBeGreaterThanOrEqual(4);
