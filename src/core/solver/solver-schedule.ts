@@ -27,8 +27,12 @@ export const LATE_MOTION = 1000;
 /** Per frame after LATE_MOTION, the cap on every vertex's share shrinks by this factor. */
 export const LATE_SLOWING = 0.98;
 
-/** Frames over which the skin's ways are weighed against the window before (see Relaxation.breakLoops). */
-export const LOOP_WINDOW = 32;
+/**
+ * Frames over which the skin's ways are weighed against the window before (see Relaxation.breakLoops). A loop is
+ * found two windows after it starts at the soonest; 24 let the rig's expressions sleep after the fewest frames of 16 to
+ * 32 on both heads (docs/solver-notes.md, "Relaxation and loops").
+ */
+export const LOOP_WINDOW = 24;
 /**
  * The stillness the solver was tuned at: no vertex moving more than this in a frame, relative to the mesh size (the
  * sleep tolerance before 1e-5). Two things keep it however loose `sleepTolerance` is (docs/solver-notes.md, "Sleep
