@@ -64,8 +64,8 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     expect(-lowered.lateral).toBeGreaterThanOrEqual(1.5);
     // FACS's AU4 lowers the brow's inner and central parts, not its head alone: with only the depressors and the
     // corrugator's upper fibres the head came down 6.0 mm and the brow over the outer eye corner 0.65, a hook at the
-    // inner end that the recogniser read as neutral turned 30°. The corrugator's lower fibres take the brow's body
-    // down and in: 2.3 mm over the outer corner, the head 6.6.
+    // inner end. The corrugator's lower fibres take the brow's body down and in: 2.3 mm over the outer corner, the
+    // head 6.6.
     expect(-displacement(rest, x, lm.browTail).up).toBeGreaterThanOrEqual(1.5);
   });
 
