@@ -3,7 +3,7 @@ import type { Rig } from '../core/rig/rig-types';
 import { HEAD_NODES } from '../core/head/head-nodes';
 import { headColliders } from '../render/head-colliders';
 import { DEFAULT_LANDMARKS } from '../core/head/landmarks';
-import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
+import { disposeHead, fetchModel, parseHeadModel, type HeadModel } from '../render/head-model';
 import { HeadView } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
 import { loadEnvironment } from '../render/environment';
@@ -35,6 +35,81 @@ import { HeadTurner } from './head-turner';
 import { findNeck } from '../core/rig/neck-carry';
 import { PanelSlot } from './panel-slot';
 import { takeBack } from './take-back';
+
+/** What a face downloads before it can show its head, started together as it is created (see startLoading). */
+interface FaceLoads {
+  rig: Promise<Rig>;
+  /** The prefiltered room light, or null if it could not be had (the view then makes its own). */
+  environment: ReturnType<typeof loadEnvironment>;
+  /** A head loaded on an earlier visit and kept in the browser (none without autosave). */
+  stored: ReturnType<HeadStore['load']>;
+  /**
+   * The head of the options (`model`, else the default head), once: null, not fetched, where a kept head or a person
+   * replaces it.
+   */
+  takeModel(): Promise<HeadModel | null>;
+  /** Frees the model if it was fetched and never taken (a start that failed or was aborted before it). */
+  release(): void;
+  modelUrl: string;
+  partsUrl: string;
+  rigKey: string | undefined;
+  headStore: HeadStore | undefined;
+}
+
+/**
+ * Starts every download a face needs before its head shows, at once: the rig, the room light, the kept head and the
+ * model used to wait for one another, and the model alone for the view's WebGL context as well.
+ */
+function startLoading(o: Required<FaceOptions>): FaceLoads {
+  const modelUrl = o.model === null ? assetUrl(`models/head-${o.resolution}.glb`, o.assetBase) : pageUrl(o.model);
+  const key = o.autosave === false ? undefined : typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, o.assetBase)}`;
+  const headStore = key ? new HeadStore(`${key}:head`) : undefined;
+  const stored = headStore ? headStore.load() : Promise.resolve(undefined);
+  // A person asked for by the options replaces the default head (checked, with its message, where it is read).
+  const person = o.model === null && o.identity !== null;
+  // The bytes at once, beside the rest; parsed only if no kept head replaces them (then they were fetched for nothing,
+  // on a return visit with a head of one's own, rather than after the kept head was looked for).
+  const bytes = person ? null : fetchModel(modelUrl);
+  bytes?.catch(() => {});
+  const model = stored.then((kept) => (kept || !bytes ? null : headFrom(bytes, modelUrl)));
+  const rig = loadRig(o.rig, o.assetBase);
+  // Awaited in build; until then a failure must not count as unhandled if something before it fails first.
+  rig.catch(() => {});
+  model.catch(() => {});
+  let taken = false;
+  return {
+    rig,
+    takeModel: () => {
+      taken = true;
+      return model;
+    },
+    release: () => {
+      if (!taken)
+        model.then(
+          (head) => head && disposeHead(head),
+          () => {},
+        );
+      taken = true;
+    },
+    // A failure resolves to null, and the view then makes its own.
+    environment: loadEnvironment(assetUrl('environment/room.pmrem', o.assetBase)),
+    stored,
+    modelUrl,
+    // Loaded heads take their eyes and teeth from the lightest default head.
+    partsUrl: assetUrl('models/head-low.glb', o.assetBase),
+    rigKey: key,
+    headStore,
+  };
+}
+
+/** The head model from its bytes (fetched or being fetched from `url`), its failure naming where from. */
+async function headFrom(bytes: Promise<ArrayBuffer>, url: string): Promise<HeadModel> {
+  try {
+    return await parseHeadModel(await bytes, url);
+  } catch (error) {
+    throw new Error(`the head could not be loaded from ${url}: ${(error as Error).message}`);
+  }
+}
 
 /**
  * One face in a container: its element (canvas and panels), view, head, solver, muscles, eyes and handle, built
@@ -141,10 +216,14 @@ export class EmbeddedFace {
     if (container?.nodeType !== 1) throw new Error(`createFace: needs a container element, got ${String(container)}`);
     const o = checkFaceOptions(options);
     signal?.throwIfAborted();
+    // Before the view: its WebGL context takes a while to make (half a second in software WebGL), the downloads go on
+    // meanwhile.
+    const loads = startLoading(o);
     const face = new EmbeddedFace(container, o);
     try {
-      await face.build(signal);
+      await face.build(loads, signal);
     } catch (error) {
+      loads.release();
       face.failed(error as Error);
       face.dispose();
       throw error;
@@ -192,37 +271,28 @@ export class EmbeddedFace {
     }
   }
 
-  private async build(signal: AbortSignal | undefined): Promise<void> {
+  private async build(loads: FaceLoads, signal: AbortSignal | undefined): Promise<void> {
     const o = this.options;
     this.parts.assetBase = o.assetBase;
-    const rigLoading = loadRig(o.rig, o.assetBase);
-    // Fetched beside the head and the rig; a failure resolves to null, and the view then makes its own.
-    const environment = loadEnvironment(assetUrl('environment/room.pmrem', o.assetBase));
-    // Awaited below; until then a failure must not count as unhandled if the head fails first.
-    rigLoading.catch(() => {});
-    this.modelUrl = o.model === null ? assetUrl(`models/head-${o.resolution}.glb`, o.assetBase) : pageUrl(o.model);
-    // Loaded heads take their eyes and teeth from the lightest default head.
-    this.partsUrl = assetUrl('models/head-low.glb', o.assetBase);
-    this.rigKey =
-      o.autosave === false ? undefined : typeof o.autosave === 'string' ? o.autosave : `softface:rig:${rigKey(o.rig, o.assetBase)}`;
-    const original = await rigLoading;
+    this.modelUrl = loads.modelUrl;
+    this.partsUrl = loads.partsUrl;
+    this.rigKey = loads.rigKey;
+    this.headStore = loads.headStore;
+    const original = await loads.rig;
     signal?.throwIfAborted();
     this.original = original;
     // A head loaded on an earlier visit comes back, with its landmarks, so that its rig is the same.
     let prepared: PreparedHead | undefined;
-    if (this.rigKey) {
-      this.headStore = new HeadStore(`${this.rigKey}:head`);
-      const stored = await this.headStore.load();
-      signal?.throwIfAborted();
-      if (stored) {
-        try {
-          const options = { ...stored.options, landmarks: stored.landmarks };
-          prepared = await prepareHead(stored.files, options, this.partsUrl, original, options.resolution ?? o.resolution);
-        } catch (error) {
-          console.warn(`the head kept from an earlier visit was not used: ${(error as Error).message}`);
-        }
-        signal?.throwIfAborted();
+    const stored = await loads.stored;
+    signal?.throwIfAborted();
+    if (stored) {
+      try {
+        const options = { ...stored.options, landmarks: stored.landmarks };
+        prepared = await prepareHead(stored.files, options, this.partsUrl, original, options.resolution ?? o.resolution);
+      } catch (error) {
+        console.warn(`the head kept from an earlier visit was not used: ${(error as Error).message}`);
       }
+      signal?.throwIfAborted();
     }
     // A person asked for by the options is shown in place of the default head or a kept one.
     const named = o.model === null ? readIdentity(o.identity, 'createFace: identity') : null;
@@ -231,16 +301,11 @@ export class EmbeddedFace {
       signal?.throwIfAborted();
     }
     let head: HeadModel;
+    // A kept head that could not be used falls back to the model, fetched only then.
     if (prepared) head = prepared.head;
-    else {
-      try {
-        head = await loadHeadModel(this.modelUrl);
-      } catch (error) {
-        throw new Error(`the head could not be loaded from ${this.modelUrl}: ${(error as Error).message}`);
-      }
-    }
+    else head = (await loads.takeModel()) ?? (await headFrom(fetchModel(this.modelUrl), this.modelUrl));
     signal?.throwIfAborted();
-    const lighting = await environment;
+    const lighting = await loads.environment;
     if (lighting) this.view.setEnvironment(lighting);
     await this.mount(head, prepared, { signal });
 

@@ -1,4 +1,4 @@
-import { type Box3, BufferAttribute, Mesh, type Object3D, Texture, Vector3, type Material } from 'three';
+import { type Box3, BufferAttribute, LoaderUtils, Mesh, type Object3D, Texture, Vector3, type Material } from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { HEAD_NODES } from '../core/head/head-nodes';
 import type { IdentityLook } from '../core/head/identity-look';
@@ -34,7 +34,19 @@ export interface HeadModel {
 
 /** Loads a softface head GLB and gives its parts the app's materials. */
 export async function loadHeadModel(url: string): Promise<HeadModel> {
-  const gltf = await new GLTFLoader().loadAsync(url);
+  return parseHeadModel(await fetchModel(url), url);
+}
+
+/** A model file's bytes (see parseHeadModel): fetched apart from the parse, so that the download can start first. */
+export async function fetchModel(url: string): Promise<ArrayBuffer> {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`HTTP ${response.status}`);
+  return response.arrayBuffer();
+}
+
+/** A softface head from the bytes of a GLB (or glTF) fetched from `url`, with the app's materials. */
+export async function parseHeadModel(bytes: ArrayBuffer, url: string): Promise<HeadModel> {
+  const gltf = await new GLTFLoader().parseAsync(bytes, LoaderUtils.extractUrlBase(url));
   return headModelOf(gltf.scene, url);
 }
 
