@@ -96,6 +96,8 @@ export class MuscleRig {
   private readonly reached: Uint32Array;
   private readonly step = new Float64Array(3);
   private readonly turns: TurnCache;
+  /** Scratch for place(): one skin's worth of vertex indices. */
+  private candidateScratch = new Uint32Array(0);
 
   /** Throws if the rest positions, a muscle (naming it) or an option is not valid. */
   constructor(rest: Float32Array, muscles: readonly Muscle[], options: MuscleRigOptions = {}) {
@@ -387,11 +389,13 @@ export class MuscleRig {
     const candidate = (v: number): boolean =>
       reaches(P, o, this.margin, X[3 * v], X[3 * v + 1], X[3 * v + 2]) ||
       (add.length > 0 && painted(X[3 * v], X[3 * v + 1], X[3 * v + 2]) > 0);
+    // One pass over the skin into scratch, then copied: the test is what costs (the high head's 55 muscles took a
+    // quarter of a second when every vertex was tested twice, to count and to list).
+    if (this.candidateScratch.length < n) this.candidateScratch = new Uint32Array(n);
+    const scratch = this.candidateScratch;
     let count = 0;
-    for (let v = 0; v < n; v++) if (candidate(v)) count++;
-    const list = new Uint32Array(count);
-    count = 0;
-    for (let v = 0; v < n; v++) if (candidate(v)) list[count++] = v;
+    for (let v = 0; v < n; v++) if (candidate(v)) scratch[count++] = v;
+    const list = scratch.slice(0, count);
     this.candidateLists[m] = list;
     this.candidateCounts[m] = count;
     this.muscleList[m] = muscle;

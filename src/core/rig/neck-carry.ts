@@ -18,6 +18,7 @@ import {
 } from '../expression/head-pose';
 import { chainLoops } from '../head/polymesh';
 import type { MuscleInputs } from '../solver/muscle-inputs';
+import { VertexKeyCounts } from '../solver/vertex-key-counts';
 import type { Vec3 } from './rig-types';
 
 /** Where the neck is: its cut, the axis up the neck from it, and the pivot the head turns about. */
@@ -181,19 +182,17 @@ export class NeckCarry {
 
 /** The boundary loops of a triangle mesh: edges with no twin, chained head to tail (each loop in order). */
 function boundaryLoops(triangles: ArrayLike<number>): number[][] {
-  let count = 0;
-  for (let t = 0; t < triangles.length; t++) count = Math.max(count, triangles[t] + 1);
-  // An edge a -> b as one number (exact: count squared stays far below 2^53).
-  const directed = new Set<number>();
+  // Each edge a -> b, counted in typed arrays (a Set of a * count + b took the high head 0.28 s).
+  const directed = new VertexKeyCounts(triangles.length);
   for (let t = 0; t < triangles.length; t += 3) {
-    for (let k = 0; k < 3; k++) directed.add(triangles[t + k] * count + triangles[t + ((k + 1) % 3)]);
+    for (let k = 0; k < 3; k++) directed.add(triangles[t + k], triangles[t + ((k + 1) % 3)]);
   }
   const next = new Map<number, number>();
   for (let t = 0; t < triangles.length; t += 3) {
     for (let k = 0; k < 3; k++) {
       const a = triangles[t + k];
       const b = triangles[t + ((k + 1) % 3)];
-      if (!directed.has(b * count + a)) next.set(a, b);
+      if (directed.get(b, a) === 0) next.set(a, b);
     }
   }
   return chainLoops(next);

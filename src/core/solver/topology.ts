@@ -381,7 +381,8 @@ function adjacencyLists(n: number, triangles: number[]): number[][] {
 function reverseCuthillMcKee(adjacency: number[][]): number[] {
   const n = adjacency.length;
   const visited = new Uint8Array(n);
-  const degree = Uint32Array.from(adjacency, (list) => list.length);
+  const degree = new Uint32Array(n);
+  for (let v = 0; v < n; v++) degree[v] = adjacency[v].length;
   // Lower degree first, then lower index: the order the breadth-first search takes neighbours in.
   const before = (a: number, b: number): boolean => degree[a] < degree[b] || (degree[a] === degree[b] && a < b);
   const order: number[] = [];

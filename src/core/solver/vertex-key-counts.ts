@@ -1,5 +1,5 @@
 /**
- * How often each edge or triangle has been counted, keyed by its vertex indices (sorted by the caller), in typed
+ * How often each edge or triangle has been counted, keyed by its vertex indices in the order given, in typed
  * arrays with open addressing: building the high head's topology took a quarter of a second with a Map keyed by
  * numbers above 2^31 (docs/page-notes.md, "Building the skin").
  */
