@@ -77,8 +77,8 @@ export function buildTopology(renderPositions: ArrayLike<number>, indices: Array
     if (!Number.isInteger(v) || v < 0 || v >= renderCount) throw new Error(`index ${i} is ${v}, outside the ${renderCount} vertices`);
   }
 
-  // 1. Weld render vertices that share a position exactly (UV seams), in first-seen order. Sorted by position rather
-  // than looked up by a string of the coordinates: a tenth of the time on the high head's 68 thousand vertices.
+  // 1. Weld render vertices that share a position exactly (UV seams), in first-seen order: found by sorting them by
+  // position, not by a string of their coordinates per vertex (docs/page-notes.md, "Building the skin").
   const byPosition = Array.from({ length: renderCount }, (_, r) => r).sort(
     (p, q) =>
       renderPositions[3 * p] - renderPositions[3 * q] ||
