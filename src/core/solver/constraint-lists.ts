@@ -303,7 +303,7 @@ export function fillBendingLists(into: BendingLists, V: Uint32Array, count: numb
 
 /** The topology's neighbour lists with each neighbour stored as 3 * its vertex (same CSR starts). */
 export function neighbourOffsets(topology: SkinTopology): Uint32Array {
-  // A loop, not `Uint32Array.from` with a map function, which walks an iterator: 90 ms on the high head against 1.
+  // A loop, not `Uint32Array.from` with a map function, which walks an iterator (90 ms on the high head).
   const nb = topology.neighbours;
   const out = new Uint32Array(nb.length);
   for (let j = 0; j < nb.length; j++) out[j] = 3 * nb[j];
