@@ -141,8 +141,8 @@ export class EmbeddedFace {
     if (container?.nodeType !== 1) throw new Error(`createFace: needs a container element, got ${String(container)}`);
     const o = checkFaceOptions(options);
     signal?.throwIfAborted();
-    // Before the view: its WebGL context takes a while to make (half a second in software WebGL), the downloads go on
-    // meanwhile.
+    // Before the view: making it (its WebGL context, the first draw's setup) held a start's page for about half a second
+    // in a profile in software WebGL; the downloads go on meanwhile.
     const loads = startLoading(o);
     const face = new EmbeddedFace(container, o);
     try {
