@@ -54,4 +54,9 @@ describe('baked environment', () => {
       expect(brightest).toBeGreaterThan(0x3000); // above 0.125
     }
   });
+
+  it('writes the committed room environment again byte for byte from what it reads (the format has not moved)', () => {
+    const bytes = new Uint8Array(gunzipSync(readFileSync(new URL('../public/environment/room.pmrem', import.meta.url))));
+    expect(Buffer.from(encodeEnvironment(decodeEnvironment(bytes))).equals(Buffer.from(bytes))).toBe(true);
+  });
 });

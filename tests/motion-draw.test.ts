@@ -9,6 +9,9 @@ const slow = (changes: Partial<MotionDrawState>): MotionDrawState => ({
   fullDrawMs: 190,
   motionResolution: 0.5,
   slowDrawMs: 50,
+  empty: false,
+  drawnSinceChange: false,
+  fresh: false,
   ...changes,
 });
 
@@ -32,5 +35,17 @@ describe('the render loop choosing a resolution (motionDraw)', () => {
 
   it('draws the picture again at full resolution once nothing new has come for MOTION_END_MS', () => {
     expect(motionDraw(slow({ reduced: true, sinceChangeMs: MOTION_END_MS }))).toBe('full');
+  });
+
+  it('draws a head just set once, as the finished picture, whatever the changes around it', () => {
+    expect(motionDraw(slow({ fresh: true, changed: true }))).toBe('still');
+    expect(motionDraw(slow({ fresh: true, changed: true, fullDrawMs: 16 }))).toBe('still');
+    expect(motionDraw(slow({ fresh: true, reduced: true, sinceChangeMs: 4 }))).toBe('still');
+  });
+
+  it('draws the background alone once for each change, at full resolution, where draws are slow', () => {
+    expect(motionDraw(slow({ empty: true, changed: true }))).toBe('full');
+    expect(motionDraw(slow({ empty: true, changed: true, drawnSinceChange: true }))).toBe('skip');
+    expect(motionDraw(slow({ empty: true, reduced: true, sinceChangeMs: MOTION_END_MS }))).toBe('skip');
   });
 });

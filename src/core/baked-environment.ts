@@ -28,24 +28,31 @@ function texelCount(size: number, levels: number): number {
   return n;
 }
 
-/** Walks every face image with the gradient predictor: `visit(index, predicted)` per RGB channel value. */
-function walk(size: number, levels: number, values: Uint16Array, visit: (i: number, predicted: number) => void): void {
-  let offset = 0;
-  for (let l = 0; l < levels; l++) {
-    const s = size >> l;
-    const row = 3 * s;
-    for (let f = 0; f < 6; f++) {
-      for (let y = 0; y < s; y++) {
-        for (let x = 0; x < s; x++) {
-          for (let c = 0; c < 3; c++) {
-            const i = offset + row * y + 3 * x + c;
-            const left = x > 0 ? values[i - 3] : 0;
-            const up = y > 0 ? values[i - row] : 0;
-            visit(i, x > 0 && y > 0 ? left + up - values[i - row - 3] : x > 0 ? left : up);
-          }
-        }
-      }
-      offset += row * s;
+/**
+ * The gradient predictor of value `i` of an RGBA face image whose rows are `row` values long, at texel (x, y): from
+ * the same channel's left, upper and upper-left values.
+ */
+function predict(values: Uint16Array, i: number, x: number, y: number, row: number): number {
+  if (x > 0 && y > 0) return values[i - 4] + values[i - row] - values[i - row - 4];
+  return x > 0 ? values[i - 4] : y > 0 ? values[i - row] : 0;
+}
+
+/**
+ * Decodes one RGBA face image of `s` x `s` texels in place, its residuals' high bytes from `bytes[high..]` and low
+ * bytes from `bytes[low..]` (three a texel). A function per face, with the texel's three channels written out: one
+ * walk of every level's faces in nested loops around a callback ran into a few thousand bailouts of V8's on-stack
+ * replacement in the browser, a third of a second of a page's start.
+ */
+function decodeFace(face: Uint16Array, s: number, bytes: Uint8Array, high: number, low: number): void {
+  const row = 4 * s;
+  for (let y = 0, t = 0; y < s; y++) {
+    for (let x = 0; x < s; x++, t++) {
+      const i = 4 * t;
+      const r = 3 * t;
+      face[i] = (predict(face, i, x, y, row) + ((bytes[high + r] << 8) | bytes[low + r])) & 0xffff;
+      face[i + 1] = (predict(face, i + 1, x, y, row) + ((bytes[high + r + 1] << 8) | bytes[low + r + 1])) & 0xffff;
+      face[i + 2] = (predict(face, i + 2, x, y, row) + ((bytes[high + r + 2] << 8) | bytes[low + r + 2])) & 0xffff;
+      face[i + 3] = HALF_ONE;
     }
   }
 }
@@ -53,30 +60,29 @@ function walk(size: number, levels: number, values: Uint16Array, visit: (i: numb
 /** The file's bytes (before gzip) for `environment`; alpha is dropped (it is 1 everywhere in a PMREM). */
 export function encodeEnvironment(environment: EnvironmentLevels): Uint8Array {
   const { size, levels, faces } = environment;
-  const count = texelCount(size, levels);
-  const rgb = new Uint16Array(3 * count);
-  let o = 0;
-  for (let l = 0; l < levels; l++) {
-    for (let f = 0; f < 6; f++) {
-      const face = faces[l][f];
-      if (face.length !== 4 * (size >> l) ** 2)
-        throw new Error(`environment level ${l} face ${f}: ${face.length} values, expected ${4 * (size >> l) ** 2}`);
-      for (let i = 0; i < face.length; i += 4) {
-        rgb[o++] = face[i];
-        rgb[o++] = face[i + 1];
-        rgb[o++] = face[i + 2];
-      }
-    }
-  }
-  const n = rgb.length;
+  const n = 3 * texelCount(size, levels);
   const out = new Uint8Array(4 * HEADER_WORDS + 2 * n);
   new Uint32Array(out.buffer, 0, HEADER_WORDS).set([ENVIRONMENT_MAGIC, ENVIRONMENT_VERSION, size, levels]);
   const planes = 4 * HEADER_WORDS;
-  walk(size, levels, rgb, (i, predicted) => {
-    const residual = (rgb[i] - predicted) & 0xffff;
-    out[planes + i] = residual >> 8;
-    out[planes + n + i] = residual & 0xff;
-  });
+  let o = 0;
+  for (let l = 0; l < levels; l++) {
+    const s = size >> l;
+    const row = 4 * s;
+    for (let f = 0; f < 6; f++) {
+      const face = faces[l][f];
+      if (face.length !== 4 * s * s) throw new Error(`environment level ${l} face ${f}: ${face.length} values, expected ${4 * s * s}`);
+      for (let y = 0; y < s; y++) {
+        for (let x = 0; x < s; x++) {
+          for (let c = 0; c < 3; c++, o++) {
+            const i = 4 * (y * s + x) + c;
+            const residual = (face[i] - predict(face, i, x, y, row)) & 0xffff;
+            out[planes + o] = residual >> 8;
+            out[planes + n + o] = residual & 0xff;
+          }
+        }
+      }
+    }
+  }
   return out;
 }
 
@@ -98,23 +104,15 @@ export function decodeEnvironment(bytes: Uint8Array): EnvironmentLevels {
   if (bytes.length !== 4 * HEADER_WORDS + 2 * n)
     throw new Error(`baked environment of ${bytes.length} bytes; its header asks for ${4 * HEADER_WORDS + 2 * n}`);
   const planes = 4 * HEADER_WORDS;
-  const rgb = new Uint16Array(n);
-  walk(size, levels, rgb, (i, predicted) => {
-    rgb[i] = (predicted + ((bytes[planes + i] << 8) | bytes[planes + n + i])) & 0xffff;
-  });
   const faces: Uint16Array[][] = [];
-  let o = 0;
+  let o = planes;
   for (let l = 0; l < levels; l++) {
+    const s = size >> l;
     const level: Uint16Array[] = [];
-    const texels = (size >> l) ** 2;
     for (let f = 0; f < 6; f++) {
-      const face = new Uint16Array(4 * texels);
-      for (let t = 0; t < texels; t++) {
-        face[4 * t] = rgb[o++];
-        face[4 * t + 1] = rgb[o++];
-        face[4 * t + 2] = rgb[o++];
-        face[4 * t + 3] = HALF_ONE;
-      }
+      const face = new Uint16Array(4 * s * s);
+      decodeFace(face, s, bytes, o, o + n);
+      o += 3 * s * s;
       level.push(face);
     }
     faces.push(level);

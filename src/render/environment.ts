@@ -40,25 +40,12 @@ export async function loadEnvironment(url: string): Promise<CompressedCubeTextur
 function environmentTexture(environment: EnvironmentLevels): CompressedCubeTexture {
   const { size, levels, faces } = environment;
   const images: { width: number; height: number; mipmaps: CompressedTextureMipmap[] }[] = [];
+  // Each face turned in place (the decoded arrays are this function's alone): no second copy of a few megabytes.
+  for (let l = 0; l < levels; l++) for (let f = 0; f < 6; f++) mirrorRows(faces[l][f], size >> l);
   for (let f = 0; f < 6; f++) {
     const source = f === 0 ? 1 : f === 1 ? 0 : f;
     const mipmaps: CompressedTextureMipmap[] = [];
-    for (let l = 0; l < levels; l++) {
-      const s = size >> l;
-      const from = faces[l][source];
-      const data = new Uint16Array(from.length);
-      for (let y = 0; y < s; y++) {
-        for (let x = 0; x < s; x++) {
-          const a = 4 * (y * s + x);
-          const b = 4 * (y * s + s - 1 - x);
-          data[a] = from[b];
-          data[a + 1] = from[b + 1];
-          data[a + 2] = from[b + 2];
-          data[a + 3] = from[b + 3];
-        }
-      }
-      mipmaps.push({ data, width: s, height: s });
-    }
+    for (let l = 0; l < levels; l++) mipmaps.push({ data: faces[l][source], width: size >> l, height: size >> l });
     images.push({ width: size, height: size, mipmaps });
   }
   // Uncompressed RGBA levels go up through the compressed cube path's plain-data branch, each level as given.
@@ -71,4 +58,17 @@ function environmentTexture(environment: EnvironmentLevels): CompressedCubeTextu
   texture.name = 'PMREM';
   texture.needsUpdate = true;
   return texture;
+}
+
+/** Flips each row of an RGBA image `s` texels wide left to right, in place. */
+function mirrorRows(data: Uint16Array, s: number): void {
+  for (let y = 0; y < s; y++) {
+    for (let a = 4 * y * s, b = 4 * (y * s + s - 1); a < b; a += 4, b -= 4) {
+      for (let c = 0; c < 4; c++) {
+        const t = data[a + c];
+        data[a + c] = data[b + c];
+        data[b + c] = t;
+      }
+    }
+  }
 }

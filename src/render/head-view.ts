@@ -84,6 +84,11 @@ export class HeadView {
    */
   private drawUntil = 0;
   private drawFrames = 0;
+  /** How many times invalidate was called, and the count at the last draw of a scene without a head. */
+  private changes = 0;
+  private emptyDrawnAt = -1;
+  /** Whether the head shown was drawn yet (see motionDraw). */
+  private headDrawn = false;
   /** A change waits to be drawn (a hook held the frame it came in). */
   private drawPending = false;
   /** The pixel ratio of a full-resolution draw, and whether the canvas is at the motion's lower one now. */
@@ -131,6 +136,9 @@ export class HeadView {
       fullDrawMs: 0,
       motionResolution: this.motionResolution,
       slowDrawMs: o.slowDrawMs,
+      empty: true,
+      drawnSinceChange: false,
+      fresh: false,
     };
     this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.outputColorSpace = SRGBColorSpace;
@@ -165,6 +173,7 @@ export class HeadView {
    * that stands still), so whatever changes the scene outside the view's own setters and frame hooks calls this.
    */
   readonly invalidate = (): void => {
+    this.changes++;
     this.drawUntil = performance.now() + DRAW_AFTER_CHANGE_MS;
     this.drawFrames = DRAW_AFTER_CHANGE_FRAMES;
   };
@@ -173,6 +182,7 @@ export class HeadView {
   setHead(head: HeadModel): void {
     if (this.head) this.scene.remove(this.head.root);
     this.head = head;
+    this.headDrawn = false;
     this.scene.add(head.root);
     this.frameBounds(head.bounds);
     this.applyRender();
@@ -330,12 +340,24 @@ export class HeadView {
       state.reduced = this.reduced || this.pictures.rough;
       state.sinceChangeMs = now - this.changedAt;
       state.fullDrawMs = this.fullDrawMs;
+      state.empty = !this.head;
+      state.drawnSinceChange = this.emptyDrawnAt === this.changes;
+      state.fresh = !this.headDrawn;
       const draw = motionDraw(state);
       if (draw === 'skip') return;
       if (this.drawFrames > 0) this.drawFrames--;
       this.setReduced(draw === 'reduced');
-      // Nothing new: the motion has ended, and this is its still.
-      this.drawPicture(!changed);
+      if (this.head) {
+        this.emptyDrawnAt = -1;
+        this.headDrawn = true;
+        if (draw === 'still') {
+          // What the change's frames were to catch is in this picture: they need not be drawn again.
+          this.drawUntil = 0;
+          this.drawFrames = 0;
+        }
+      } else this.emptyDrawnAt = this.changes;
+      // Nothing new: the motion has ended, and this is its still (or a head just set).
+      this.drawPicture(draw === 'still' || !changed);
       this.drawnAt = now;
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
     };

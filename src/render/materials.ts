@@ -87,7 +87,7 @@ export interface HeadMaterials {
 /** Makes the head's materials; the procedural textures are generated here, once. */
 export function createHeadMaterials(skin: Partial<SkinLookOptions> = {}, iris: Partial<IrisOptions> = {}): HeadMaterials {
   const s: Required<SkinLookOptions> = { ...SKIN_LOOK_DEFAULTS, ...skin };
-  const pores = poreTexture(generatePoreMap({ seed: s.poreSeed }), s.poreRepeat);
+  const pores = poreTexture(poreMapOf(s.poreSeed), s.poreRepeat);
   pores.userData.seed = s.poreSeed;
   return {
     skin: createSkinMaterial(s, pores),
@@ -103,7 +103,7 @@ export function createHeadMaterials(skin: Partial<SkinLookOptions> = {}, iris: P
 /** Skin: a physically based dielectric with sheen, pores in its normal map and a subsurface (wrap) diffuse term. */
 function createSkinMaterial(options: Partial<SkinLookOptions> = {}, pores?: Texture): MeshPhysicalMaterial {
   const s: Required<SkinLookOptions> = { ...SKIN_LOOK_DEFAULTS, ...options };
-  const normalMap = pores ?? poreTexture(generatePoreMap({ seed: s.poreSeed }), s.poreRepeat);
+  const normalMap = pores ?? poreTexture(poreMapOf(s.poreSeed), s.poreRepeat);
   const material = new MeshPhysicalMaterial({
     name: 'skin',
     color: new Color(...s.color),
@@ -194,6 +194,15 @@ function createTongueMaterial(pores: Texture): MeshPhysicalMaterial {
     normalScale: new Vector2(0.8, 0.8),
   });
   return addSubsurface(material, { wrap: [0.55, 0.25, 0.2], normalBlur: [0.6, 0.3, 0.2], cavity: 0.2 });
+}
+
+/** The pore map made last, kept for the next head (another person, a second face on the page): read only. */
+let lastPoreMap: { seed: number; map: PoreMap } | null = null;
+
+/** The pore map of `seed`: the one made last if it has that seed (a map takes about 100 ms to make). */
+function poreMapOf(seed: number): PoreMap {
+  if (lastPoreMap?.seed !== seed) lastPoreMap = { seed, map: generatePoreMap({ seed }) };
+  return lastPoreMap.map;
 }
 
 /** The normal map of pores, tiling. */

@@ -24,15 +24,27 @@ export interface MotionDrawState {
   motionResolution: number;
   /** A full draw slower than this (ms) is slow. */
   slowDrawMs: number;
+  /** Whether the scene shows no head (the background alone). */
+  empty: boolean;
+  /** Whether the picture on the canvas shows the latest change already (kept only for a scene without a head). */
+  drawnSinceChange: boolean;
+  /** Whether the head shown was never drawn yet (just set). */
+  fresh: boolean;
 }
 
 /**
  * While the picture changes, slow draws go at the lower resolution: a slow full draw shares the cores with the solver,
  * and the answer to an input reaches the screen later (docs/page-notes.md). The motion's first draw decides by the
  * last full one, so a GPU that keeps up never draws lower. Nothing new: a picture drawn lower is drawn again at full
- * once the motion has ended (MOTION_END_MS); otherwise nothing is drawn.
+ * once the motion has ended (MOTION_END_MS); otherwise nothing is drawn. A head just set is drawn once, as the finished
+ * picture (`still`), even where its skin already moves (the solver's first frames, or a head switched under an
+ * expression: one still, then the motion); the background alone, once for each change, at full resolution. (At a
+ * page's start in software WebGL the head used to come as four lower draws and a still, the background as two
+ * draws at two resolutions: a second of the GPU's time, and each switch of resolution reallocates the canvas.)
  */
-export function motionDraw(s: MotionDrawState): 'skip' | 'reduced' | 'full' {
+export function motionDraw(s: MotionDrawState): 'skip' | 'reduced' | 'full' | 'still' {
+  if (s.empty) return s.changed && !s.drawnSinceChange ? 'full' : 'skip';
+  if (s.fresh) return 'still';
   if (s.changed) return s.motionResolution < 1 && s.fullDrawMs > s.slowDrawMs ? 'reduced' : 'full';
   return s.reduced && s.sinceChangeMs >= MOTION_END_MS ? 'full' : 'skip';
 }

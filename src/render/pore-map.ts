@@ -138,21 +138,36 @@ function valueNoise(n: number, period: number, random: () => number): Float32Arr
   for (let y = 0; y < n; y++) {
     const fy = y * scale;
     const y0 = Math.floor(fy);
-    const ty = smooth(fy - y0);
-    const r0 = (y0 % period) * period;
-    const r1 = ((y0 + 1) % period) * period;
-    for (let x = 0; x < n; x++) {
-      const fx = x * scale;
-      const x0 = Math.floor(fx);
-      const tx = smooth(fx - x0);
-      const c0 = x0 % period;
-      const c1 = (x0 + 1) % period;
-      const top = lattice[r0 + c0] + tx * (lattice[r0 + c1] - lattice[r0 + c0]);
-      const bottom = lattice[r1 + c0] + tx * (lattice[r1 + c1] - lattice[r1 + c0]);
-      out[y * n + x] = top + ty * (bottom - top);
-    }
+    noiseRow(out, y * n, n, scale, lattice, period, (y0 % period) * period, ((y0 + 1) % period) * period, smooth(fy - y0));
   }
   return out;
+}
+
+/**
+ * One row of valueNoise: `n` values from `out[at]`, between lattice rows `r0` and `r1` at `ty`. A function of its own:
+ * the row loop nested in the image's ran into some hundred bailouts of V8's on-stack replacement in the browser.
+ */
+function noiseRow(
+  out: Float32Array,
+  at: number,
+  n: number,
+  scale: number,
+  lattice: Float32Array,
+  period: number,
+  r0: number,
+  r1: number,
+  ty: number,
+): void {
+  for (let x = 0; x < n; x++) {
+    const fx = x * scale;
+    const x0 = Math.floor(fx);
+    const tx = smooth(fx - x0);
+    const c0 = x0 % period;
+    const c1 = (x0 + 1) % period;
+    const top = lattice[r0 + c0] + tx * (lattice[r0 + c1] - lattice[r0 + c0]);
+    const bottom = lattice[r1 + c0] + tx * (lattice[r1 + c1] - lattice[r1 + c0]);
+    out[at + x] = top + ty * (bottom - top);
+  }
 }
 
 const smooth = (t: number): number => t * t * (3 - 2 * t);
