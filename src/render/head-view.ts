@@ -18,7 +18,7 @@ import { ViewCamera } from './view-camera';
 import { ViewLights } from './view-lights';
 import type { HairSnapshot } from './hair-view';
 import { describeMaterial, type MaterialDescription } from './materials';
-import { motionDraw, type MotionDrawState } from './motion-draw';
+import { DrawSchedule } from './draw-schedule';
 import {
   APPEARANCE_DEFAULTS,
   APPEARANCE_RANGES,
@@ -54,14 +54,6 @@ export interface ViewCapture {
   dispose(): void;
 }
 
-/**
- * How long, and at least how many frames, the view keeps drawing after it was told of a change: covers what lands a
- * frame or two later (the environment map, shader compiles, a panel's change applied in the next task), on a page
- * whose frames come slowly too.
- */
-const DRAW_AFTER_CHANGE_MS = 250;
-const DRAW_AFTER_CHANGE_FRAMES = 3;
-
 /** A three.js scene that shows a head: renderer, camera, orbit controls and the default lights. */
 export class HeadView {
   readonly renderer: WebGLRenderer;
@@ -78,19 +70,8 @@ export class HeadView {
   private animationFrame = 0;
   private readonly frameHooks: FrameHook[] = [];
   private readonly renderHooks: (() => void)[] = [];
-  /**
-   * The view draws at animation frames until this time (ms, performance.now()) and for this many more frames, and
-   * whenever a hook changed something.
-   */
-  private drawUntil = 0;
-  private drawFrames = 0;
-  /** How many times invalidate was called, and the count at the last draw of a scene without a head. */
-  private changes = 0;
-  private emptyDrawnAt = -1;
-  /** Whether the head shown was drawn yet (see motionDraw). */
-  private headDrawn = false;
-  /** A change waits to be drawn (a hook held the frame it came in). */
-  private drawPending = false;
+  /** When the loop draws and how. */
+  private readonly schedule: DrawSchedule;
   /** The pixel ratio of a full-resolution draw, and whether the canvas is at the motion's lower one now. */
   private readonly pixelRatio: number;
   private readonly motionResolution: number;
@@ -101,10 +82,6 @@ export class HeadView {
    */
   private drawnAt = -1;
   private fullDrawMs = 0;
-  /** The animation frame time at which the loop last saw something new. */
-  private changedAt = 0;
-  /** What the loop knows at an animation frame, for motionDraw. */
-  private readonly drawState: MotionDrawState;
   private readonly resizeObserver: ResizeObserver;
   /**
    * Whether any of the canvas is in view: a view scrolled away or in a hidden element renders nothing (and runs no
@@ -129,17 +106,7 @@ export class HeadView {
     this.pictures = new PictureDrawer(this.renderer, multisampled);
     this.pixelRatio = Math.min(window.devicePixelRatio, o.maxPixelRatio);
     this.motionResolution = Math.min(1, Math.max(0.25, o.motionResolution));
-    this.drawState = {
-      changed: false,
-      reduced: false,
-      sinceChangeMs: 0,
-      fullDrawMs: 0,
-      motionResolution: this.motionResolution,
-      slowDrawMs: o.slowDrawMs,
-      empty: true,
-      drawnSinceChange: false,
-      fresh: false,
-    };
+    this.schedule = new DrawSchedule(this.motionResolution, o.slowDrawMs);
     this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.outputColorSpace = SRGBColorSpace;
     this.renderer.toneMapping = ACESFilmicToneMapping;
@@ -173,16 +140,14 @@ export class HeadView {
    * that stands still), so whatever changes the scene outside the view's own setters and frame hooks calls this.
    */
   readonly invalidate = (): void => {
-    this.changes++;
-    this.drawUntil = performance.now() + DRAW_AFTER_CHANGE_MS;
-    this.drawFrames = DRAW_AFTER_CHANGE_FRAMES;
+    this.schedule.invalidate();
   };
 
   /** Shows a head (replacing the one shown) and frames it from the front. */
   setHead(head: HeadModel): void {
     if (this.head) this.scene.remove(this.head.root);
     this.head = head;
-    this.headDrawn = false;
+    this.schedule.headSet();
     this.scene.add(head.root);
     this.frameBounds(head.bounds);
     this.applyRender();
@@ -319,7 +284,7 @@ export class HeadView {
         this.drawnAt = -1;
       }
       if (!this.inView || this.capturing) return;
-      let changed = this.drawPending || this.drawFrames > 0 || performance.now() < this.drawUntil;
+      let changed = false;
       let hold = false;
       for (let i = 0; i < this.frameHooks.length; i++) {
         const result = this.frameHooks[i](now);
@@ -328,36 +293,11 @@ export class HeadView {
       }
       // True while the camera moves: a drag, or the damping after one.
       if (this.controls.update()) changed = true;
-      // An input's other changes (the jaw's turn, the glyphs) wait for the skin's answer, and are drawn with it: a
-      // draw of the skin as it was costs as much as any (a third of a second in software WebGL, where it also slows
-      // the solver) and shows the teeth ahead of the lips.
-      this.drawPending = changed && hold;
-      if (hold) return;
-      if (changed) this.changedAt = now;
-      // Filled in place: the loop allocates nothing.
-      const state = this.drawState;
-      state.changed = changed;
-      state.reduced = this.reduced || this.pictures.rough;
-      state.sinceChangeMs = now - this.changedAt;
-      state.fullDrawMs = this.fullDrawMs;
-      state.empty = !this.head;
-      state.drawnSinceChange = this.emptyDrawnAt === this.changes;
-      state.fresh = !this.headDrawn;
-      const draw = motionDraw(state);
+      const reduced = this.reduced || this.pictures.rough;
+      const draw = this.schedule.choose(now, changed, hold, reduced, this.head !== undefined, this.fullDrawMs);
       if (draw === 'skip') return;
-      if (this.drawFrames > 0) this.drawFrames--;
       this.setReduced(draw === 'reduced');
-      if (this.head) {
-        this.emptyDrawnAt = -1;
-        this.headDrawn = true;
-        if (draw === 'still') {
-          // What the change's frames were to catch is in this picture: they need not be drawn again.
-          this.drawUntil = 0;
-          this.drawFrames = 0;
-        }
-      } else this.emptyDrawnAt = this.changes;
-      // Nothing new: the motion has ended, and this is its still (or a head just set).
-      this.drawPicture(draw === 'still' || !changed);
+      this.drawPicture(draw === 'still');
       this.drawnAt = now;
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
     };
