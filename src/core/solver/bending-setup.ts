@@ -13,7 +13,7 @@ import type { SkinTopology } from './topology';
  * direction's, so that every mesh folds at the asked spacing: docs/solver-notes.md, "Bending"); C was measured on
  * triangle grids (see tests).
  */
-const BENDING_CALIBRATION = 6;
+export const BENDING_CALIBRATION = 6;
 
 /**
  * The most bending share one projection takes; a vertex that needs more is projected in passes of equal parts. The

@@ -4,6 +4,7 @@
  */
 import type { Collider } from './colliders';
 import type { BendingLists, EdgeLists, TriangleLists } from './constraint-lists';
+import type { SecondRing } from './second-ring';
 
 /** What the part loops read and write: the solver's lists and positions, and the topology's fixed arrays. */
 export interface PartArrays {
@@ -41,6 +42,8 @@ export interface PartArrays {
   bendGain: Float32Array;
   bendPasses: Uint8Array;
   inverseDegree: Float32Array;
+  /** Bending over the ring two edges out (see second-ring.ts). */
+  secondRing: SecondRing;
   /**
    * For orientation passes that follow one another (see projectOrientationPart): 1 for each listed triangle with a
    * corner moved since it was last checked; and each triangle's place in the list (-1 if not listed).

@@ -40,6 +40,8 @@ export const JOB_START_FRAME = 8;
 export const JOB_RELAX = 9;
 /** The move record's result, the largest squared move of the partner's half, goes to the board's value. */
 export const JOB_STEPS = 10;
+/** Half of a second-ring bending pass (see projectSecondRingPart): the board's part is the region's count. */
+export const JOB_SECOND_RING = 11;
 
 /** Board checks before sleeping: about 20 to 50 microseconds of spinning, longer than a part's projection. */
 const SPIN_LIMIT = 2000;

@@ -11,6 +11,7 @@ import {
   JOB_ORIENTATION,
   JOB_POSITIONS,
   JOB_RELAX,
+  JOB_SECOND_RING,
   JOB_START_FRAME,
   JOB_STEPS,
   JOB_STOP,
@@ -20,6 +21,7 @@ import {
 import { PARTS } from './constraint-lists';
 import { recordStepsPart, relaxPart, startFramePart } from './frame-kernels';
 import { projectLengths } from './length-kernels';
+import { projectSecondRingPart } from './second-ring';
 import { projectOrientationPart } from './orientation-kernel';
 import type { PartArrays } from './part-arrays';
 import { projectBendingPart, projectCollisions, projectNormals, projectPositions } from './solver-kernels';
@@ -63,6 +65,9 @@ export function runShare(
       return 0;
     case JOB_NORMALS:
       projectNormals(arrays, count, words, thread);
+      return 0;
+    case JOB_SECOND_RING:
+      projectSecondRingPart(arrays, from, to, words);
       return 0;
     case JOB_START_FRAME:
       startFramePart(arrays, a, b, from, to);

@@ -13,6 +13,7 @@ import {
   JOB_NORMALS,
   JOB_ORIENTATION,
   JOB_POSITIONS,
+  JOB_SECOND_RING,
   JOB_START_FRAME,
   JOB_STEPS,
 } from './partner-board';
@@ -99,13 +100,16 @@ export class FramePasses {
    * is projected in several passes, one after another over the region, each of an equal part of it. Each pass goes
    * part by part as the orientation passes (see projectBendingPart): the even blocks with the odd ones, then the even
    * seams with the odd ones, each part in vertex order, so that two threads share it and one gives the same shape.
+   * Then, where the ring of neighbours cannot bend as stiffly as the spacing asks, a pass over the ring two edges out
+   * of the `count` region vertices (see projectSecondRingPart), half on the partner if any.
    */
-  projectBending(p: SkinParameters, maxBendPasses: number): void {
+  projectBending(p: SkinParameters, maxBendPasses: number, count: number): void {
     if (p.wrinkleSpacing <= 0) return;
     for (let pass = 0; pass < maxBendPasses; pass++) {
       this.bendingPair(PART_EVEN, PART_ODD, pass);
       this.bendingPair(PART_EVEN_SEAM, PART_ODD_SEAM, pass);
     }
+    if (this.parts.secondRing.active) this.share(JOB_SECOND_RING, count);
   }
 
   private bendingPair(mine: number, theirs: number, pass: number): void {

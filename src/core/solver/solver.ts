@@ -32,6 +32,7 @@ import type { PartnerLink } from './partner-link';
 import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from './skin-parameters';
 import { createSolverBuffers, type ConstraintCounts, type FrameTimings, type SolverBuffers } from './solver-buffers';
 import { Relaxation } from './relaxation';
+import { createSecondRing, setSecondRingShares } from './second-ring';
 import { FramePasses } from './solver-passes';
 import {
   FOLD_CHOICE_FRAMES,
@@ -173,6 +174,7 @@ export class SkinSolver {
       bendGain: this.bendGain,
       inverseDegree: inverseDegrees(topology, memory),
       bendPasses: this.bendPasses,
+      secondRing: createSecondRing(topology, memory),
       unchecked,
       uncheckedWords: new Uint32Array(unchecked.buffer),
       watched,
@@ -217,6 +219,7 @@ export class SkinSolver {
       this.bendStiffness,
       this.bendGain,
     );
+    setSecondRingShares(this.parts.secondRing, this.topology, next);
     this.listBending();
     // New parameters start a new motion, as new muscle inputs do.
     this.restartMotion();
@@ -360,7 +363,7 @@ export class SkinSolver {
       t0 = now();
       time.orientation += t0 - t1;
       t1 = t0;
-      this.passes.projectBending(p, this.maxBendPasses);
+      this.passes.projectBending(p, this.maxBendPasses, this.region.count);
       t0 = now();
       time.bending += t0 - t1;
       this.passes.projectCollisions();
@@ -431,6 +434,7 @@ export class SkinSolver {
     const included = this.region.enabled ? this.region.inside : null;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, included, this.buffers.unfoldedLengths);
     this.listBending();
+    this.parts.secondRing.lambda.fill(0); // skin that left the region has no step (see projectSecondRingPart)
     // The watched flags follow their triangles to their new places.
     const places = this.parts.listedTriangle;
     const watched = this.parts.watched;
