@@ -47,7 +47,10 @@ export interface SecondRing {
   gain: Float32Array;
   /** 1 for a vertex that has a constraint or is in the ring of one that has: the vertices a pass moves. */
   reach: Uint8Array;
-  /** Each listed vertex's step along its rest normal in the current pass (0 outside the region and without one). */
+  /**
+   * At each vertex's xyz offset, its constraint's step in the current pass over its ring's size (what each ring vertex
+   * takes), then the step itself (what the vertex takes); 0 outside the region and without a constraint.
+   */
   lambda: Float64Array;
   /** Whether any vertex has a constraint: the frames skip the pass when none has (the low and medium heads). */
   active: boolean;
@@ -108,7 +111,7 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
     rest,
     gain: allocate(Float32Array, n, memory),
     reach: allocate(Uint8Array, n, memory),
-    lambda: allocate(Float64Array, n, memory),
+    lambda: allocate(Float64Array, 3 * n, memory),
     active: false,
   };
 }
@@ -186,22 +189,22 @@ export function projectSecondRingPart(a: PartArrays, from: number, to: number, b
   for (let k = from; k < to; k++) {
     const v = V[k];
     const g = gain[v];
-    lambda[v] = g === 0 ? 0 : g * heightOverRing(x, N, start, offsets, inverse, v, rest[v]);
+    const step = g === 0 ? 0 : g * heightOverRing(x, N, start, offsets, inverse, v, rest[v]);
+    lambda[3 * v] = step * inverse[v];
+    lambda[3 * v + 1] = step;
   }
   if (board) meet(board);
   for (let k = from; k < to; k++) {
     const u = V[k];
     if (reach[u] === 0) continue;
     const i = 3 * u;
-    const own = lambda[u];
+    const own = lambda[i + 1];
     let dx = own * N[i];
     let dy = own * N[i + 1];
     let dz = own * N[i + 2];
     for (let j = start[u]; j < start[u + 1]; j++) {
       const o = offsets[j];
-      const w = o / 3;
-      const q = lambda[w] * inverse[w];
-      if (q === 0) continue;
+      const q = lambda[o];
       dx -= q * N[o];
       dy -= q * N[o + 1];
       dz -= q * N[o + 2];
