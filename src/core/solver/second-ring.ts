@@ -1,7 +1,8 @@
 /**
  * Bending over the ring of vertices two edges out, where the ring of neighbours cannot bend stiffly enough: the fine
  * head's folds at the spacing the skin asks for instead of paper's crumpling (docs/solver-notes.md, "Bending two
- * rings out").
+ * rings out"). Like the first ring's bending (bending-setup.ts), it carries the wrinkle parameter thesis 3.1.2 wishes
+ * for: one spacing of folds at every mesh resolution.
  */
 import { BENDING_CALIBRATION } from './bending-setup';
 import { allocate, type Memory } from './memory';
