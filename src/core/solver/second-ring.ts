@@ -65,12 +65,20 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
   const start = topology.neighbourStart;
   const nb = topology.neighbours;
   const ringStart = allocate(Uint32Array, n + 1, memory);
-  const found: number[] = [];
+  // At most the sum of the first ring's degrees, each vertex.
+  let most = 0;
+  for (let v = 0; v < n; v++) for (let j = start[v]; j < start[v + 1]; j++) most += start[nb[j] + 1] - start[nb[j]];
+  const found = new Uint32Array(most);
+  let count = 0;
   const ratio = new Float32Array(n);
   // Breadth-first two rings out; `mark` holds the last vertex whose search reached each vertex.
   const mark = new Int32Array(n).fill(-1);
-  const distance = (v: number, u: number): number =>
-    Math.hypot(X[3 * u] - X[3 * v], X[3 * u + 1] - X[3 * v + 1], X[3 * u + 2] - X[3 * v + 2]);
+  const distance = (v: number, u: number): number => {
+    const dx = X[3 * u] - X[3 * v];
+    const dy = X[3 * u + 1] - X[3 * v + 1];
+    const dz = X[3 * u + 2] - X[3 * v + 2];
+    return Math.sqrt(dx * dx + dy * dy + dz * dz);
+  };
   for (let v = 0; v < n; v++) {
     mark[v] = v;
     let first = 0;
@@ -78,7 +86,7 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
       mark[nb[j]] = v;
       first += distance(v, nb[j]);
     }
-    const from = found.length;
+    const from = count;
     let second = 0;
     for (let j = start[v]; j < start[v + 1]; j++) {
       const u = nb[j];
@@ -86,17 +94,17 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
         const w = nb[k];
         if (mark[w] === v) continue;
         mark[w] = v;
-        found.push(3 * w);
+        found[count++] = 3 * w;
         second += distance(v, w);
       }
     }
     const degree1 = start[v + 1] - start[v];
-    const degree2 = found.length - from;
+    const degree2 = count - from;
     ratio[v] = degree1 > 0 && degree2 > 0 && first > 0 ? second / degree2 / (first / degree1) : 0;
-    ringStart[v + 1] = found.length;
+    ringStart[v + 1] = count;
   }
-  const offsets = allocate(Uint32Array, found.length, memory);
-  offsets.set(found);
+  const offsets = allocate(Uint32Array, count, memory);
+  offsets.set(found.subarray(0, count));
   const inverse = allocate(Float32Array, n, memory);
   for (let v = 0; v < n; v++) {
     const size = ringStart[v + 1] - ringStart[v];
