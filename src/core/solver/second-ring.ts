@@ -49,10 +49,12 @@ export interface SecondRing {
   /** 1 for a vertex that has a constraint or is in the ring of one that has: the vertices a pass moves. */
   reach: Uint8Array;
   /**
-   * At each vertex's xyz offset, its constraint's step in the current pass over its ring's size (what each ring vertex
-   * takes), then the step itself (what the vertex takes); 0 outside the region and without a constraint.
+   * At each vertex's xyz offset, its constraint's move of each ring vertex in the current pass (against the vertex's
+   * rest normal, the step over the ring's size); 0 outside the region and without a constraint.
    */
-  lambda: Float64Array;
+  ringMove: Float32Array;
+  /** Each vertex's constraint's step in the current pass, which it takes along its rest normal; 0 likewise. */
+  ownStep: Float32Array;
   /** Whether any vertex has a constraint: the frames skip the pass when none has (the low and medium heads). */
   active: boolean;
 }
@@ -120,7 +122,8 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
     rest,
     gain: allocate(Float32Array, n, memory),
     reach: allocate(Uint8Array, n, memory),
-    lambda: allocate(Float64Array, 3 * n, memory),
+    ringMove: allocate(Float32Array, 3 * n, memory),
+    ownStep: allocate(Float32Array, n, memory),
     active: false,
   };
 }
@@ -194,29 +197,33 @@ export function projectSecondRingPart(a: PartArrays, from: number, to: number, b
   const x = a.positions;
   const N = a.restNormals;
   const V = a.regionVertices;
-  const { start, offsets, inverse, rest, gain, reach, lambda } = a.secondRing;
+  const { start, offsets, inverse, rest, gain, reach, ringMove, ownStep } = a.secondRing;
   for (let k = from; k < to; k++) {
     const v = V[k];
     const g = gain[v];
     const step = g === 0 ? 0 : g * heightOverRing(x, N, start, offsets, inverse, v, rest[v]);
-    lambda[3 * v] = step * inverse[v];
-    lambda[3 * v + 1] = step;
+    // Each ring vertex's move, made once here, so that the gather reads three numbers a ring vertex and no normal.
+    const i = 3 * v;
+    const q = step * inverse[v];
+    ringMove[i] = q * N[i];
+    ringMove[i + 1] = q * N[i + 1];
+    ringMove[i + 2] = q * N[i + 2];
+    ownStep[v] = step;
   }
   if (board) meet(board);
   for (let k = from; k < to; k++) {
     const u = V[k];
     if (reach[u] === 0) continue;
     const i = 3 * u;
-    const own = lambda[i + 1];
+    const own = ownStep[u];
     let dx = own * N[i];
     let dy = own * N[i + 1];
     let dz = own * N[i + 2];
     for (let j = start[u]; j < start[u + 1]; j++) {
       const o = offsets[j];
-      const q = lambda[o];
-      dx -= q * N[o];
-      dy -= q * N[o + 1];
-      dz -= q * N[o + 2];
+      dx -= ringMove[o];
+      dy -= ringMove[o + 1];
+      dz -= ringMove[o + 2];
     }
     x[i] += dx;
     x[i + 1] += dy;

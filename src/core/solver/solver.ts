@@ -434,7 +434,9 @@ export class SkinSolver {
     const included = this.region.enabled ? this.region.inside : null;
     fillEdgeLists(this.edgeLists, this.topology, this.buffers.weights, included, this.buffers.unfoldedLengths);
     this.listBending();
-    this.parts.secondRing.lambda.fill(0); // skin that left the region has no step (see projectSecondRingPart)
+    // Skin that left the region has no step (see projectSecondRingPart).
+    this.parts.secondRing.ringMove.fill(0);
+    this.parts.secondRing.ownStep.fill(0);
     // The watched flags follow their triangles to their new places.
     const places = this.parts.listedTriangle;
     const watched = this.parts.watched;
