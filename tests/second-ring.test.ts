@@ -48,6 +48,33 @@ describe('the second ring of each vertex', () => {
     expect(ring.ratio[middle]).toBeLessThan(2.3);
     for (let v = 0; v < t.vertexCount; v++) expect(ring.rest[v]).toBe(0); // a flat grid: every ring at the vertex's height
   });
+  it('leaves out a vertex whose ring reaches across a crease: there its height measures the turn, not a fold', () => {
+    // The grid folded at x = 0 by 90 degrees (the half at x > 0 turned to stand along z): 2 mm between columns.
+    const folded = grid.positions.slice();
+    for (let o = 0; o < folded.length; o += 3) {
+      if (folded[o] > 0) {
+        folded[o + 2] = -folded[o];
+        folded[o] = 0;
+      }
+    }
+    const ft = buildTopology(folded, grid.indices);
+    const fring = createSecondRing(ft, 'local');
+    let leftOut = 0;
+    for (let v = 0; v < ft.vertexCount; v++) {
+      // The column on the grid: the crease is column 0, the turned half's columns stand at x = 0 with z < 0.
+      const column = Math.round((ft.rest[3 * v] < -1e-6 ? ft.rest[3 * v] : -ft.rest[3 * v + 2]) / 0.002);
+      const interior = Math.abs(ft.rest[3 * v + 1]) < 0.006 && Math.abs(column) < 4;
+      if (!interior) continue;
+      // One column from the crease, the ring reaches the other face (normals 90 degrees apart); on the crease and two
+      // columns out it reaches no further than 45 degrees (the crease's normal halfway between the faces').
+      if (Math.abs(column) === 1) {
+        expect(fring.ratio[v], `column ${column}`).toBe(0);
+        leftOut++;
+      } else expect(fring.ratio[v], `column ${column}`).toBeGreaterThan(1.5);
+    }
+    // Five rows (|y| < 6 mm) of the two columns beside the crease.
+    expect(leftOut).toBe(10);
+  });
 });
 
 describe('bending two rings out on a fine sheet', () => {

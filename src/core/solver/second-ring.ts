@@ -32,6 +32,13 @@ const SHORTEST_WRINKLES = 0.006;
  * medium head's (47,520 of its 68,277 vertices).
  */
 const SHORTEST_FOLD = 0.009;
+/**
+ * A ring whose rest normals turn further than this from the vertex's (the cosine: 60 degrees) lies over a crease, a
+ * lip's or a lid's margin, a nostril: there its mean height measures the surface's turn, not a fold, and the vertex
+ * gets no second ring (408 of the high head's vertices). With it the closing lids' edge-on fans at the inner eye corners
+ * ended with more triangles turned over (AU43 20 against 3, AU46 33 against 10; docs/solver-notes.md).
+ */
+const CREASE_COSINE = 0.5;
 
 /** The second-ring stencils (CSR) and what a frame's pass over them reads and writes (see projectSecondRingPart). */
 export interface SecondRing {
@@ -40,7 +47,10 @@ export interface SecondRing {
   offsets: Uint32Array;
   /** 1 / the ring's size (0 for none). */
   inverse: Float32Array;
-  /** The ring's mean distance over the first ring's, at rest: the spacing the stencil bends at, over the vertex's. */
+  /**
+   * The ring's mean distance over the first ring's, at rest: the spacing the stencil bends at, over the vertex's; 0
+   * for no ring or a ring over a crease (see CREASE_COSINE).
+   */
   ratio: Float32Array;
   /** The constraint's value at rest, computed as a frame computes it, so that skin at rest stays exactly there. */
   rest: Float64Array;
@@ -90,6 +100,7 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
     }
     const from = count;
     let second = 0;
+    let flat = true;
     for (let j = start[v]; j < start[v + 1]; j++) {
       const u = nb[j];
       for (let k = start[u]; k < start[u + 1]; k++) {
@@ -98,11 +109,12 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
         mark[w] = v;
         found[count++] = 3 * w;
         second += distance(v, w);
+        if (N[3 * v] * N[3 * w] + N[3 * v + 1] * N[3 * w + 1] + N[3 * v + 2] * N[3 * w + 2] < CREASE_COSINE) flat = false;
       }
     }
     const degree1 = start[v + 1] - start[v];
     const degree2 = count - from;
-    ratio[v] = degree1 > 0 && degree2 > 0 && first > 0 ? second / degree2 / (first / degree1) : 0;
+    ratio[v] = flat && degree1 > 0 && degree2 > 0 && first > 0 ? second / degree2 / (first / degree1) : 0;
     ringStart[v + 1] = count;
   }
   const offsets = allocate(Uint32Array, count, memory);
