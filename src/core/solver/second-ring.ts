@@ -35,8 +35,8 @@ const SHORTEST_FOLD = 0.009;
 /**
  * A ring whose rest normals turn further than this from the vertex's (the cosine: 60 degrees) lies over a crease, a
  * lip's or a lid's margin, a nostril: there its mean height measures the surface's turn, not a fold, and the vertex
- * gets no second ring (408 of the high head's vertices). With it the closing lids' edge-on fans at the inner eye corners
- * ended with more triangles turned over (AU43 20 against 3, AU46 33 against 10; docs/solver-notes.md).
+ * gets no second ring (408 of the high head's vertices). Given one there, the closing lids' edge-on fans at the inner
+ * eye corners ended with more triangles turned over (AU43 20 against 3, AU46 33 against 10; docs/solver-notes.md).
  */
 const CREASE_COSINE = 0.5;
 
