@@ -28,11 +28,15 @@ function watchJaw(page: Page, name: string): Promise<Watched> {
       const ratio = Math.min(devicePixelRatio, 2);
       const full = Math.floor(canvas.clientWidth * ratio);
       const half = Math.floor(canvas.clientWidth * ratio * 0.5);
-      /** Waits until the canvas is at full width again (redrawn once nothing new has come for a while), or gives up. */
+      // A face is ready before its first picture is drawn (in software WebGL that draw, which makes the environment
+      // map, takes seconds): the jaw must open after it, or the skin may settle before anything is drawn, and the
+      // first picture is then a still of the open jaw. The canvas's data-quality is set by each draw.
+      const shownFull = (): boolean => canvas.width === full && canvas.dataset.quality === 'full';
+      /** Waits until the canvas shows a finished picture at full width (again, once nothing new has come), or gives up. */
       const untilFull = async (): Promise<boolean> => {
-        const deadline = performance.now() + 10_000;
-        while (canvas.width !== full && performance.now() < deadline) await frame();
-        return canvas.width === full;
+        const deadline = performance.now() + 20_000;
+        while (!shownFull() && performance.now() < deadline) await frame();
+        return shownFull();
       };
       const fullAtStart = await untilFull();
       const widths = [canvas.width];
