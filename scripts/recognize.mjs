@@ -20,6 +20,7 @@
  * labelled
  *                         with what it is meant to show and what the recogniser read
  *   --light JSON          light options for every render (face.setLight), e.g. '{"keyAzimuth":0}'; default the app's
+ *   --appearance JSON     appearance options for every render (face.setAppearance), e.g. '{"lashes":false}'
  *   --presets a,b,...     only these presets (and neutral)
  *   --out PATH            where the results go: PATH.json and PATH.md (default bench-results/recognition)
  *   --no-build            serve the last build (dist/) as it is
@@ -55,6 +56,7 @@ const crop = option('crop', DEFAULTS.crop);
 const imagesDir = option('images', null);
 const sheetFile = option('sheet', null);
 const light = option('light', null);
+const appearance = option('appearance', null);
 const only = option('presets', null)?.split(',');
 const out = option('out', 'bench-results/recognition');
 /** The sheet's tiles: neutral and the seven prototypes, front view. */
@@ -93,6 +95,7 @@ try {
   await openApp(page, `http://127.0.0.1:${port}/?resolution=${resolution}`, { timeout: 120_000, retries: 51, retryMs: 200 });
   await page.addStyleTag({ content: HIDE_PANELS_CSS });
   if (light) await page.evaluate((l) => window.face.setLight(l), JSON.parse(light));
+  if (appearance) await page.evaluate((a) => window.face.setAppearance(a), JSON.parse(appearance));
   const all = await page.evaluate(() => window.face.listPresets().map((p) => p.name));
   for (const name of only ?? []) if (!all.includes(name)) throw new Error(`--presets: no preset ${name}`);
   const presets = ['neutral', ...all.filter((name) => !only || only.includes(name))];
