@@ -56,8 +56,9 @@ export interface EyeSimulationOptions {
 
 /**
  * Defaults. The lid shares: AU43's lid muscle turns the upper lid by up to 38 degrees, so 0.013 per degree follows
- * about half of a downward turn (20 degrees down: AU43 0.26, the lid 10 degrees lower); AU5 turns it up by 12, so
- * 0.016 per degree follows about a third of an upward turn (25 up: AU5 0.4), enough to keep the iris's top in view.
+ * about half of a downward turn (20 degrees down: AU43 0.26, the lid 10 degrees lower); AU5 turns it up by 17.5, so
+ * 0.011 per degree follows about a fifth of an upward turn (25 up: AU5 0.275, the lid 4.8 degrees higher), enough to
+ * keep the iris's top in view.
  */
 export const EYE_SIMULATION_DEFAULTS: Readonly<Required<EyeSimulationOptions>> = Object.freeze({
   seed: 1,
@@ -75,7 +76,7 @@ export const EYE_SIMULATION_DEFAULTS: Readonly<Required<EyeSimulationOptions>> =
   pitchMin: -20,
   pitchMax: 25,
   lidDownPerDegree: 0.013,
-  lidUpPerDegree: 0.016,
+  lidUpPerDegree: 0.011,
 });
 
 /** Each option's accepted range, as [least, greatest] (times in ms, angles in degrees). */
