@@ -90,14 +90,29 @@ try {
         },
         { item, timeout: SETTLE_MS },
       );
-      await page.waitForTimeout(200); // let the renderer show the newest frame
-      // A face that has just stopped is drawn at full resolution a moment later (data-quality, see picture-drawer.ts);
-      // a tile shot before that showed the moving face's lower-resolution, jagged draw.
-      await page.waitForSelector('canvas[data-quality="full"]', { timeout: 10_000 });
-      const png = await page.screenshot({ clip: { x: region.x, y: region.y, width: region.width, height: region.height } });
+      // The tile is what face.savePNG draws (a still of the newest skin, as a picture is saved), not a screenshot:
+      // after the change, the page's own frames may still be at the moving face's lower resolution, and a screenshot
+      // taken before that frame was drawn showed it, jagged (the neutral tile, right after the page opened).
+      const png = await page.evaluate(
+        async ({ region, tile }) => {
+          const canvas = document.querySelector('canvas[data-quality]');
+          const whole = await createImageBitmap(await window.face.savePNG());
+          // The picture's pixels per CSS pixel (the view caps its pixel ratio at 2; close-ups are scaled up to the tile).
+          const s = whole.width / canvas.clientWidth;
+          const picture = await createImageBitmap(whole, region.x * s, region.y * s, region.width * s, region.height * s);
+          const out = document.createElement('canvas');
+          out.width = tile.width;
+          out.height = tile.height;
+          const ctx = out.getContext('2d');
+          ctx.imageSmoothingQuality = 'high';
+          ctx.drawImage(picture, 0, 0, tile.width, tile.height);
+          return out.toDataURL('image/png').split(',')[1];
+        },
+        { region, tile: TILE },
+      );
       const named = person ? (item === 'neutral' ? person : item) : item;
       const label = resolutions.length > 1 ? `${named}, ${head} head` : named;
-      tiles.push({ label: settled ? label : `${label} (not settled)`, data: png.toString('base64') });
+      tiles.push({ label: settled ? label : `${label} (not settled)`, data: png });
       console.log(`${entry}: ${settled ? 'settled' : 'not settled'}`);
     }
   }
