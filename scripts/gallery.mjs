@@ -95,8 +95,9 @@ try {
       // taken before that frame was drawn showed it, jagged (the neutral tile, right after the page opened).
       const png = await page.evaluate(
         async ({ region, tile }) => {
-          const canvas = document.querySelector('canvas[data-quality]');
           const whole = await createImageBitmap(await window.face.savePNG());
+          // After savePNG, whose draw marks the face's canvas (a page may not have drawn it yet before).
+          const canvas = document.querySelector('canvas[data-quality]');
           // The picture's pixels per CSS pixel (the view caps its pixel ratio at 2; close-ups are scaled up to the tile).
           const s = whole.width / canvas.clientWidth;
           const picture = await createImageBitmap(whole, region.x * s, region.y * s, region.width * s, region.height * s);
