@@ -155,7 +155,11 @@ export interface JawMuscle extends MuscleCommon {
   rotation: EulerDegrees;
   /** Full edge lengths of the box along its local x, y, z axes, metres (> 0). */
   size: Vec3;
-  /** The hinge the lower face turns about; defaults to the centre of the box's back face. */
+  /**
+   * The hinge the lower face turns about; defaults to the centre of the box's back face. A real jaw's condyle glides
+   * forward as it turns, so the opening jaw turns about a centre well below it, near the ramus's middle: a hinge
+   * placed there drops the chin instead of swinging it back into the neck (the default rig's is).
+   */
   joint?: Vec3;
   /** The turn at contraction 1, degrees (-90..90), before `curve` adds to it: positive moves the chin down. */
   maxAngle: number;
