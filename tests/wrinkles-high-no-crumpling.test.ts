@@ -6,10 +6,26 @@ import { FrontSampler, foldLines, regionFolds, type FoldRegion, type RegionFolds
 // with 46 % of their power under 4 mm, the chin under AU17 3.3 mm and 67 %, under the lower lip with AU15 33 % (the
 // medium head: 7.6 mm and 4 %, 5.7 mm and 16 %, 14 %). Bending two rings out where the first ring cannot bend stiffly
 // enough (src/core/solver/second-ring.ts) gives 9.1 mm and 7 %, 6.7 mm and 15 %, 7 % (docs/solver-notes.md).
-const CASES: { region: FoldRegion; under: string }[] = [
-  { region: 'crowsFeet', under: 'AU6' },
-  { region: 'chin', under: 'AU17' },
-  { region: 'underLowerLip', under: 'AU15' },
+//
+// Every region the folds are read in, under its Action Units. `folds`: the high head folds there (not left smooth);
+// `sameSpacing`: its folds are within a quarter of the medium head's spacing. Where either is false it does not hold
+// yet (high head, 2026-12-05): AU9 leaves the nose root all but smooth (0.02 mm; the medium head 0.10), disgust folds
+// under the lower lip 0.07 mm deep (19 mm apart, the medium head 4.0 mm and 0.11 deep), and the nasolabial folds
+// (14.0 and 14.2 mm against 10.8), the nose root (17.5 against 10.4) and above the upper lip under AU18 (19.8 against
+// 10.7) are longer than the medium head's.
+const CASES: { region: FoldRegion; under: string; folds: boolean; sameSpacing: boolean }[] = [
+  { region: 'forehead', under: 'AU1+AU2', folds: true, sameSpacing: true },
+  { region: 'glabella', under: 'AU4', folds: true, sameSpacing: true },
+  { region: 'noseRoot', under: 'AU9', folds: false, sameSpacing: false },
+  { region: 'crowsFeet', under: 'AU6', folds: true, sameSpacing: true },
+  { region: 'crowsFeet', under: 'happiness', folds: true, sameSpacing: true },
+  { region: 'nasolabial', under: 'AU12', folds: true, sameSpacing: false },
+  { region: 'nasolabial', under: 'happiness', folds: true, sameSpacing: false },
+  { region: 'chin', under: 'AU17', folds: true, sameSpacing: true },
+  { region: 'underLowerLip', under: 'AU15', folds: true, sameSpacing: true },
+  { region: 'underLowerLip', under: 'AU16', folds: true, sameSpacing: true },
+  { region: 'underLowerLip', under: 'disgust', folds: false, sameSpacing: false },
+  { region: 'aboveUpperLip', under: 'AU18', folds: true, sameSpacing: false },
 ];
 /** Real wrinkles are at least this far apart (mm), and skin, not paper, keeps at most this share of its folds' power under 4 mm. */
 const SHORTEST_WRINKLES = 6;
@@ -19,18 +35,27 @@ const SMOOTH = 0.06;
 /** The fine head's folds are within this share of the medium head's spacing. */
 const SAME_SPACING = 0.25;
 
-/** Each case's folds on a head, each Action Unit at full intensity from rest, solved as the page solves it. */
+/** Each case's folds on a head, each expression at full intensity from rest (solved once), as the page solves it. */
 async function foldsOn(resolution: Resolution): Promise<RegionFolds[]> {
   const sim = await loadHeadSimulation(resolution);
   const { rest, restNormals } = sim.host.topology;
   const sampler = new FrontSampler(rest, restNormals, sim.triangles);
   const lines = foldLines(rest, sim.triangles);
+  const settled = new Map<string, Float32Array>();
   return CASES.map(({ region, under }) => {
-    resetToRest(sim);
-    sim.expression.setActionUnit(under, 1);
-    sim.apply();
-    for (let frames = 0; frames < MAX_SETTLE_FRAMES && sim.host.step(); frames++);
-    return regionFolds(sampler, lines[region], sim.host.solver.buffers.positions);
+    let x = settled.get(under);
+    if (!x) {
+      resetToRest(sim);
+      for (const item of under.split('+')) {
+        if (item.startsWith('AU')) sim.expression.setActionUnit(item, 1);
+        else sim.expression.applyPreset(item, 1);
+      }
+      sim.apply();
+      for (let frames = 0; frames < MAX_SETTLE_FRAMES && sim.host.step(); frames++);
+      x = Float32Array.from(sim.host.solver.buffers.positions);
+      settled.set(under, x);
+    }
+    return regionFolds(sampler, lines[region], x);
   });
 }
 
@@ -40,17 +65,23 @@ describe('the high head folds as skin where its mesh is finest', () => {
   beforeAll(async () => {
     medium = await foldsOn('medium');
     high = await foldsOn('high');
-  }, 120_000);
+  }, 240_000);
 
-  it.each(CASES.map((c, k) => ({ ...c, k })))(
-    "$region under $under: real wrinkles' spacing, no crumpling, as on the medium head",
+  it.each(CASES.map((c, k) => ({ ...c, k })))("$region under $under: real wrinkles' spacing, no crumpling", ({ k }) => {
+    expect(high[k].wavelength, 'dominant wavelength (mm)').toBeGreaterThanOrEqual(SHORTEST_WRINKLES);
+    expect(high[k].shortShare, 'share of the power under 4 mm').toBeLessThanOrEqual(MOST_GRAIN);
+  });
+
+  it.each(CASES.map((c, k) => ({ ...c, k })).filter((c) => c.folds))('$region under $under: folds, not skin left smooth', ({ k }) => {
+    // The fold tests' smooth skin is under 0.06 mm; the crow's feet, chin and under the lower lip with AU15 fold 0.14,
+    // 0.20 and 0.10 mm, against the medium head's 0.44, 0.43 and 0.33 (0.25, 0.22 and 0.11 before, crumpled).
+    expect(high[k].amplitude, 'root mean square (mm)').toBeGreaterThanOrEqual(SMOOTH);
+  });
+
+  it.each(CASES.map((c, k) => ({ ...c, k })).filter((c) => c.sameSpacing))(
+    '$region under $under: as far apart as on the medium head',
     ({ k }) => {
-      expect(high[k].wavelength, 'dominant wavelength (mm)').toBeGreaterThanOrEqual(SHORTEST_WRINKLES);
-      expect(high[k].shortShare, 'share of the power under 4 mm').toBeLessThanOrEqual(MOST_GRAIN);
       expect(Math.abs(high[k].wavelength / medium[k].wavelength - 1), 'against the medium head').toBeLessThanOrEqual(SAME_SPACING);
-      // Folds, not skin left smooth (the fold tests' smooth skin is under 0.06 mm): 0.14, 0.20 and 0.10 mm, against the
-      // medium head's 0.44, 0.43 and 0.33 (0.25, 0.22 and 0.11 before, crumpled).
-      expect(high[k].amplitude, 'root mean square (mm)').toBeGreaterThanOrEqual(SMOOTH);
     },
   );
 });
