@@ -1,17 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { displacement, faceLandmarks, type FaceLandmarks } from './fixtures/face-landmarks';
-import { loadHeadSimulation, MAX_SETTLE_FRAMES, resetToRest } from './fixtures/head-simulation';
-
-/** Area of triangle (a, b, c) of positions `p`. */
-function area(p: Float32Array, a: number, b: number, c: number): number {
-  const ux = p[3 * b] - p[3 * a],
-    uy = p[3 * b + 1] - p[3 * a + 1],
-    uz = p[3 * b + 2] - p[3 * a + 2];
-  const vx = p[3 * c] - p[3 * a],
-    vy = p[3 * c + 1] - p[3 * a + 1],
-    vz = p[3 * c + 2] - p[3 * a + 2];
-  return 0.5 * Math.hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
-}
+import { loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression, triangleArea } from './fixtures/head-simulation';
 
 /**
  * The share of the neck's side (behind and below the jaw's angle, both sides: the default head's rest skin 3 to 9 cm
@@ -29,9 +18,9 @@ function neckSqueezed(rest: Float32Array, x: Float32Array, triangles: Uint32Arra
     const cy = (rest[3 * a + 1] + rest[3 * b + 1] + rest[3 * c + 1]) / 3;
     const cz = (rest[3 * a + 2] + rest[3 * b + 2] + rest[3 * c + 2]) / 3;
     if (cx < 0.03 || cx > 0.09 || cy < 0.585 || cy > 0.645 || cz < 0.03 || cz > 0.1) continue;
-    const at = area(rest, a, b, c);
+    const at = triangleArea(rest, a, b, c);
     total += at;
-    if (area(x, a, b, c) < 0.8 * at) squeezed += at;
+    if (triangleArea(x, a, b, c) < 0.8 * at) squeezed += at;
   }
   return squeezed / total;
 }
@@ -43,12 +32,7 @@ describe('the opening jaw, medium head', () => {
   let rest: Float32Array;
   let lm: FaceLandmarks;
   const settle = (unit: string): Float32Array => {
-    resetToRest(sim);
-    sim.expression.setActionUnit(unit, 1);
-    sim.apply();
-    let frames = 0;
-    while (frames < MAX_SETTLE_FRAMES && sim.host.step()) frames++;
-    expect(sim.host.solver.sleeping, `${unit} comes to rest`).toBe(true);
+    expect(settleExpression(sim, unit, MAX_SETTLE_FRAMES).sleeping, `${unit} comes to rest`).toBe(true);
     return Float32Array.from(sim.host.solver.buffers.positions);
   };
   beforeAll(async () => {
