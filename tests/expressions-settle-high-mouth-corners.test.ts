@@ -5,9 +5,9 @@ import { loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression } from './fixtu
 // The mouth corners' muscles on the high head, solved as the worker solves it. Their pulls run along the normal of the
 // lips' inner strip at the corners; held there with a fifth of their weight, that strip lagged millimetres behind
 // the skin beside it and the corners' fans turned edge-on, stretched and crept: AU12 and happiness slept only after
-// 753 frames, AU13 after 367 with 23 triangles turned over, AU14 after 585 (docs/solver-notes.md). Not every unit and
-// preset settles on the high head yet (the lids' inner corners under AU43, for one), so these are the ones held
-// (happiness's AU12 stands for the zygomaticus major: the high head's frames are the unit tests' dearest).
+// 753 frames, AU13 after 367 with 23 triangles turned over, AU14 after 585 (docs/solver-notes.md). Not every preset
+// ends with no triangle turned over on the high head yet (fear leaves two at a mouth corner), so these are the ones
+// held (happiness's AU12 stands for the zygomaticus major: the high head's frames are the unit tests' dearest).
 describe('the mouth corners on the high head', () => {
   let sim: Awaited<ReturnType<typeof loadHeadSimulation>>;
   beforeAll(async () => {

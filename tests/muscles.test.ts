@@ -522,6 +522,26 @@ describe('jaw muscle lip fade', () => {
 });
 
 describe('combining muscles into solver inputs', () => {
+  it("gives the rotation muscles' share of each vertex's hold as its turn weight, none for a linear muscle", () => {
+    // Points over the lid's and a linear muscle's zones at once; the linear one alone holds most of them.
+    const rest = randomPoints(4000, [-0.03, -0.03, -0.01], [0.06, 0.05, 0.04], 11);
+    const n = rest.length / 3;
+    const o = { ...outputsFor(n), turnWeights: new Float32Array(n).fill(0.5) };
+    new MuscleRig(rest, [LINEAR, LID]).compute([1, 1], o);
+    const alone = outputsFor(n);
+    new MuscleRig(rest, [LID]).compute([1], alone);
+    const linearOnly = { ...outputsFor(n), turnWeights: new Float32Array(n).fill(0.5) };
+    new MuscleRig(rest, [LINEAR]).compute([1], linearOnly);
+    let turned = 0;
+    for (let v = 0; v < n; v++) {
+      // The lid's hold, whatever else holds the vertex; nothing where the lid does not reach.
+      expect(o.turnWeights[v]).toBeCloseTo(alone.weights[v], 6);
+      expect(linearOnly.turnWeights[v]).toBe(0);
+      if (o.turnWeights[v] > 0) turned++;
+    }
+    expect(turned).toBeGreaterThan(20);
+  });
+
   // Two linear muscles whose zones overlap, pulling toward origins 3 cm apart.
   const A: LinearMuscle = { ...LINEAR, name: 'overlap-a' };
   const B: LinearMuscle = {

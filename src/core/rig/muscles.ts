@@ -5,7 +5,7 @@
  */
 import type { MuscleInputs } from '../solver/muscle-inputs';
 import { brushed, displaceAtFalloff, displaceVertex, reaches, sphereWeight, type TurnCache } from './muscle-fields';
-import { NORMAL_SHARE, packMuscle, STRIDE } from './muscle-packing';
+import { JAW, LID, NORMAL_SHARE, packMuscle, STRIDE, TYPE } from './muscle-packing';
 import { validateMuscle } from './muscle-validation';
 import type { Muscle } from './rig-types';
 
@@ -174,14 +174,17 @@ export class MuscleRig {
    * gradually. A vertex's weight is the sum of the active muscles' falloffs at rest (capped at 1; each scaled by
    * contraction / holdFadeIn below holdFadeIn); its normal weight sums each falloff times the muscle's normalWeight (1
    * for lid and jaw, which carry the skin bodily). Vertices no active muscle reaches keep weight 0 and target = rest.
+   * With `turnWeights` in `out`, each vertex's share of the hold from the lid and jaw muscles goes there too (capped at
+   * 1; see SolverBuffers.turnWeights).
    *
    * A vertex is integrated through the muscles it is a candidate of (those within `margin` of it at rest) while it is
    * within `margin` of its rest position, where it cannot be in any other zone, and through every active muscle once
    * it has slid farther: the result is that of asking every muscle everywhere, only faster.
    */
-  compute(contractions: ArrayLike<number>, out: MuscleInputs): number {
+  compute(contractions: ArrayLike<number>, out: MuscleInputs & { turnWeights?: Float32Array }): number {
     const n = this.vertexCount;
     const { targets, weights, normalWeights } = out;
+    const turnWeights = out.turnWeights?.length === n ? out.turnWeights : null;
     if (targets.length !== 3 * n || weights.length !== n || normalWeights.length !== n) {
       throw new Error(
         `muscle outputs must hold ${n} vertices (targets ${3 * n}, weights ${n}, ` +
@@ -196,6 +199,7 @@ export class MuscleRig {
     targets.set(rest);
     weights.fill(0);
     normalWeights.fill(0);
+    turnWeights?.fill(0);
 
     const P = this.packed;
     const S = this.substeps;
@@ -247,6 +251,8 @@ export class MuscleRig {
       let z = rest[i + 2];
       let weight = 0;
       let normalWeight = 0;
+      // The rotation muscles' share of the hold: the skin they carry bodily (see SolverBuffers.turnWeights).
+      let turnWeight = 0;
       for (let k = 0; k < S; k++) {
         let sx = 0;
         let sy = 0;
@@ -268,6 +274,7 @@ export class MuscleRig {
               const hold = falloff * holdScale[m];
               weight += hold;
               normalWeight += hold * P[o + NORMAL_SHARE];
+              if (P[o + TYPE] === LID || P[o + TYPE] === JAW) turnWeight += hold;
             }
             sx += step[0];
             sy += step[1];
@@ -329,6 +336,7 @@ export class MuscleRig {
       targets[i + 2] = z;
       weights[v] = weight < 1 ? weight : 1;
       normalWeights[v] = normalWeight < 1 ? normalWeight : 1;
+      if (turnWeights) turnWeights[v] = turnWeight < 1 ? turnWeight : 1;
       const moveSquared = (x - rest[i]) ** 2 + (y - rest[i + 1]) ** 2 + (z - rest[i + 2]) ** 2;
       if (moveSquared > largestMoveSquared) largestMoveSquared = moveSquared;
     }

@@ -114,3 +114,24 @@ export function recordStepsPart(a: PartArrays, k0: number, k1: number): number {
   }
   return largest2;
 }
+
+/**
+ * Skin outside the region (`inside[v]` 0) is at rest and does not move: its last step is zero, its previous place rest
+ * and it has no turn to remember, so that a vertex joining within a frame (see SkinSolver.settleRegion) starts from
+ * there, as it would had it never been in the region.
+ */
+export function restOutside(a: PartArrays, inside: Uint8Array): void {
+  const last = a.lastStep;
+  const prev = a.previous;
+  const X = a.rest;
+  for (let v = 0; v < inside.length; v++) {
+    if (inside[v]) continue;
+    const i = 3 * v;
+    a.restart[v] = 0;
+    a.path[v] = 0;
+    last[i] = last[i + 1] = last[i + 2] = 0;
+    prev[i] = X[i];
+    prev[i + 1] = X[i + 1];
+    prev[i + 2] = X[i + 2];
+  }
+}

@@ -39,10 +39,11 @@ export function triangleFrames(rest: Float32Array, triangles: Uint32Array): Floa
 }
 
 /**
- * Orientation of one part's triangles: each triangle's area projected on its rest normal stays above a fraction of
- * its rest area, so compressed skin folds (the triangle tilts) instead of crumpling flat (the triangle turns over
- * within the surface), which no length constraint can tell from the right shape. The projected area is linear in each
- * corner, so one projection restores the bound exactly; the corrections lie in the rest tangent plane.
+ * Orientation of one part's triangles: each triangle's area projected on its frame's normal (its rest normal, turned
+ * where the lids and the jaw carry the skin: see CarriedFrames) stays above a fraction of its rest area, so compressed
+ * skin folds (the triangle tilts) instead of crumpling flat (the triangle turns over within the surface), which no
+ * length constraint can tell from the right shape. The projected area is linear in each corner, so one projection
+ * restores the bound exactly; the corrections lie in the plane the frame's normal stands on.
  *
  * `mode` is ORIENT_FULL, ORIENT_AGAIN or ORIENT_WATCHED. ORIENT_AGAIN says that nothing but the previous orientation
  * pass moved the skin since: a triangle found within its bound then, none of whose corners moved since, still is and
@@ -129,27 +130,37 @@ export function projectOrientationPart(a: PartArrays, part: number, mode: number
 }
 
 /**
- * Whether a listed triangle is turned over (its area along its rest normal below zero). The passes keep every triangle
+ * Whether a listed triangle is turned over (its area along its frame below zero). The passes keep every triangle
  * above its bound, but in a frame where they run out a sliver can still be over; the solver does not sleep on one.
  */
 export function anyTurnedOver(a: PartArrays): boolean {
-  const x = a.positions;
   const T = a.triangles.corners;
-  const F = a.triangles.frames;
   const parts = a.triangles.parts;
-  for (let t = parts[0], end = parts[parts.length - 1]; t < end; t++) {
-    const ia = T[3 * t];
-    const ib = T[3 * t + 1];
-    const ic = T[3 * t + 2];
-    const ux = x[ib] - x[ia];
-    const uy = x[ib + 1] - x[ia + 1];
-    const uz = x[ib + 2] - x[ia + 2];
-    const vx = x[ic] - x[ia];
-    const vy = x[ic + 1] - x[ia + 1];
-    const vz = x[ic + 2] - x[ia + 2];
-    if (F[4 * t] * (uy * vz - uz * vy) + F[4 * t + 1] * (uz * vx - ux * vz) + F[4 * t + 2] * (ux * vy - uy * vx) < 0) return true;
-  }
+  for (let t = parts[0], end = parts[parts.length - 1]; t < end; t++)
+    if (areaAlong(a.positions, T[3 * t], T[3 * t + 1], T[3 * t + 2], a.triangles.frames, 4 * t) < 0) return true;
   return false;
+}
+
+/** How many of the triangles (vertex indices) are turned over against their frames (triangleFrames' layout). */
+export function countTurnedOver(x: Float32Array, triangles: Uint32Array, frames: Float32Array): number {
+  let count = 0;
+  for (let t = 0; t < triangles.length / 3; t++)
+    if (areaAlong(x, 3 * triangles[3 * t], 3 * triangles[3 * t + 1], 3 * triangles[3 * t + 2], frames, 4 * t) < 0) count++;
+  return count;
+}
+
+/**
+ * Twice the area, along the frame normal `F[o..o+2]`, of the triangle whose corners lie at xyz offsets `ia`, `ib`,
+ * `ic` of `x`: below zero for a triangle turned over against its frame.
+ */
+function areaAlong(x: Float32Array, ia: number, ib: number, ic: number, F: Float32Array, o: number): number {
+  const ux = x[ib] - x[ia];
+  const uy = x[ib + 1] - x[ia + 1];
+  const uz = x[ib + 2] - x[ia + 2];
+  const vx = x[ic] - x[ia];
+  const vy = x[ic + 1] - x[ia + 1];
+  const vz = x[ic + 2] - x[ia + 2];
+  return F[o] * (uy * vz - uz * vy) + F[o + 1] * (uz * vx - ux * vz) + F[o + 2] * (ux * vy - uy * vx);
 }
 
 /** An orientation pass that checks every listed triangle and adds those near their bound to the watched ones. */

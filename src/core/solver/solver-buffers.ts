@@ -19,6 +19,11 @@ export interface SolverBuffers {
    */
   normalWeights: Float32Array;
   /**
+   * The share of each vertex's hold that muscles carrying the skin bodily give (lids, jaw), 0..1: where the skin turns
+   * with them, its triangles' bounds on turning over turn too (see CarriedFrames). 0 for targets set directly.
+   */
+  turnWeights: Float32Array;
+  /**
    * Length each edge (topology order) may reach before it resists stretching: its rest length, or more where folded
    * skin unfolds (above a closing lid, see LidSlack). Read when the muscle inputs change.
    */
@@ -39,6 +44,7 @@ export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'lo
     targets: copy(topology.rest),
     weights: allocate(Float32Array, n, memory),
     normalWeights: allocate(Float32Array, n, memory),
+    turnWeights: allocate(Float32Array, n, memory),
     unfoldedLengths: copy(topology.restLength),
   };
 }

@@ -8,6 +8,7 @@
 import { ACTIVE_GROW, ActiveRegion } from './active-region';
 import { bendingAtRest, inverseDegrees, setBendingShares } from './bending-setup';
 import type { Collider } from './colliders';
+import { CarriedFrames } from './carried-frames';
 import { CollisionCandidates } from './collision-candidates';
 import {
   createBendingLists,
@@ -22,10 +23,11 @@ import {
   type EdgeLists,
   type TriangleLists,
 } from './constraint-lists';
+import { restOutside } from './frame-kernels';
 import { createBulgeDirections } from './length-kernels';
 import { allocate, type Memory } from './memory';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from './muscle-inputs';
-import { ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, triangleFrames } from './orientation-kernel';
+import { countTurnedOver, ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, triangleFrames } from './orientation-kernel';
 import type { PartArrays } from './part-arrays';
 import { JOB_RELAX } from './partner-board';
 import type { PartnerLink } from './partner-link';
@@ -72,6 +74,8 @@ export class SkinSolver {
   private readonly bendParts: Uint8Array;
   /** Per triangle: its rest unit normal (xyz) and the least area it may shrink to along that normal. */
   private readonly triangleFrames: Float32Array;
+  /** Turns the triangles' frames with the skin the lids and the jaw carry (see CarriedFrames). */
+  private readonly carriedFrames: CarriedFrames;
   /** The lists the per-frame loops walk (see constraint-lists.ts), part by part. */
   private readonly edgeLists: EdgeLists;
   private readonly triangleLists: TriangleLists;
@@ -138,6 +142,7 @@ export class SkinSolver {
     this.bendPasses = allocate(Uint8Array, n, memory);
     this.bulgeDirections = createBulgeDirections(topology, memory);
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
+    this.carriedFrames = new CarriedFrames(topology.rest, topology.restNormals, topology.triangles, this.triangleFrames);
     this.edgeLists = createEdgeLists(topology, memory);
     this.triangleLists = createTriangleLists(topology, memory);
     this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
@@ -238,6 +243,7 @@ export class SkinSolver {
   /** Releases every muscle constraint. */
   clearMuscleTargets(): void {
     clearMuscleInputs(this.buffers, this.topology.rest);
+    this.buffers.turnWeights.fill(0);
     this.buffers.unfoldedLengths.set(this.topology.restLength);
     this.updateMuscles();
   }
@@ -250,6 +256,9 @@ export class SkinSolver {
     for (let v = 0; v < W.length; v++) if (W[v] > 0 || WN[v] > 0) this.held[count++] = v;
     this.heldCount = count;
     this.region.seed(this.held, count);
+    // The frames first: the lists (refilled or kept below) copy them.
+    const B = this.buffers;
+    this.carriedFrames.update(B.targets, W, WN, B.turnWeights, this.triangleFrames, this.triangleLists.frames, this.parts.listedTriangle);
     this.collisions.joinReachedCandidates(this.region, this.buffers.positions, ACTIVE_GROW * this.topology.size);
     // Of the lists, only the edges' depend on the weights (held edges apart, with their weight): while a slider moves
     // the region mostly stays as it is, and the other lists with it.
@@ -317,6 +326,14 @@ export class SkinSolver {
   attachPartner(link: PartnerLink | null): void {
     if (link && this.memory !== 'shared') throw new Error('only a solver on shared memory can have a partner thread');
     this.passes.partner = link;
+  }
+
+  /**
+   * Triangles of the whole skin turned over now: their area along their frame (the rest normal, turned where the
+   * lids and the jaw carry the skin; see CarriedFrames) below zero.
+   */
+  turnedOverCount(): number {
+    return countTurnedOver(this.buffers.positions, this.topology.triangles, this.triangleFrames);
   }
 
   /** True once the shape has converged for the current inputs; step() then does nothing until an input changes. */
@@ -455,26 +472,7 @@ export class SkinSolver {
     watched.fill(0);
     for (let t = 0; t < places.length; t++) if (places[t] >= 0) watched[places[t]] = kept[t];
     this.listedRevision = this.region.revision;
-    if (this.region.enabled) {
-      // Skin outside the region is at rest and does not move: its last step is zero, its previous place rest and it
-      // has no turn to remember, so that a vertex joining within a frame (see settleRegion) starts from there, as it
-      // would had it never been in the region.
-      const inside = this.region.inside;
-      const last = this.lastStep;
-      const prev = this.previous;
-      const restart = this.relaxation.restart;
-      const X = this.topology.rest;
-      for (let v = 0; v < inside.length; v++) {
-        if (inside[v]) continue;
-        const i = 3 * v;
-        restart[v] = 0;
-        this.relaxation.path[v] = 0;
-        last[i] = last[i + 1] = last[i + 2] = 0;
-        prev[i] = X[i];
-        prev[i + 1] = X[i + 1];
-        prev[i + 2] = X[i + 2];
-      }
-    }
+    if (this.region.enabled) restOutside(this.parts, this.region.inside);
     this.collisions.listCandidates(this.region);
   }
 

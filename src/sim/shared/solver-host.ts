@@ -119,6 +119,8 @@ export class SolverHost {
       this.solver.buffers.targets.set(muscles.targets);
       this.solver.buffers.weights.set(muscles.weights);
       this.solver.buffers.normalWeights.set(muscles.normalWeights);
+      // Targets set directly turn no skin bodily (see SolverBuffers.turnWeights).
+      this.solver.buffers.turnWeights.fill(0);
       this.solver.updateMuscles();
     }
     // Rig contractions replace directly set targets: the rig computes every vertex's target and weights. The block
