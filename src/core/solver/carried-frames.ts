@@ -22,7 +22,7 @@ export class CarriedFrames {
   /** The corners (vertex indices) of the triangles with a turned corner, in their order. */
   private readonly list: Uint32Array;
   /** Those triangles' indices. */
-  private readonly listed: Uint32Array;
+  private readonly carriedTriangles: Uint32Array;
 
   constructor(
     private readonly rest: Float32Array,
@@ -36,7 +36,7 @@ export class CarriedFrames {
     this.done = new Uint8Array(rest.length / 3);
     this.turnedTriangles = new Uint8Array(triangles.length / 3);
     this.list = new Uint32Array(triangles.length);
-    this.listed = new Uint32Array(triangles.length / 3);
+    this.carriedTriangles = new Uint32Array(triangles.length / 3);
   }
 
   /**
@@ -80,7 +80,7 @@ export class CarriedFrames {
       L[3 * count] = a;
       L[3 * count + 1] = b;
       L[3 * count + 2] = c;
-      this.listed[count++] = t;
+      this.carriedTriangles[count++] = t;
     }
     if (count === 0) return;
     const X = this.rest;
@@ -120,7 +120,7 @@ export class CarriedFrames {
       M[i + 2] = z / mixed;
     }
     for (let k = 0; k < count; k++) {
-      const t = this.listed[k];
+      const t = this.carriedTriangles[k];
       turnFrame(N, M, 3 * L[3 * k], 3 * L[3 * k + 1], 3 * L[3 * k + 2], R, frames, 4 * t);
       was[t] = 1;
       copyFrame(frames, t, listed, places[t]);
