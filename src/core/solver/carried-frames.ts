@@ -5,7 +5,11 @@
  * skin past edge-on against the rest normals at the eye's corners; bounded about those, the skin there pulled against
  * the lid until the solver's safety net (docs/solver-notes.md, "Orientation frames carried with the lids").
  */
+import { rotationOffsetBy } from '../math3';
 import { addFaceNormals } from './topology';
+
+/** Scratch for one frame's turn (see turnFrame). */
+const turn = new Float64Array(3);
 
 /** The frames of a skin's triangles as its rotation muscles carry them (see `update`). */
 export class CarriedFrames {
@@ -131,7 +135,7 @@ export class CarriedFrames {
 /**
  * Writes into `frames[o..o+2]` the rest normal `R[o..o+2]` turned by the rotation that takes the mean of the corners'
  * rest normals (N at xyz offsets a, b, c) to the mean of their turned normals (M); the rest normal where either mean
- * vanishes or the two are parallel.
+ * vanishes or the two are parallel (or, never seen, opposite).
  */
 function turnFrame(
   N: Float32Array,
@@ -164,20 +168,16 @@ function turnFrame(
   tx /= tl;
   ty /= tl;
   tz /= tl;
-  // Rodrigues: about k = f x t / |f x t|, by the angle whose sine is |f x t| and cosine f . t.
-  let kx = fy * tz - fz * ty;
-  let ky = fz * tx - fx * tz;
-  let kz = fx * ty - fy * tx;
+  // About k = f x t / |f x t|, by the angle whose sine is |f x t| and cosine f . t.
+  const kx = fy * tz - fz * ty;
+  const ky = fz * tx - fx * tz;
+  const kz = fx * ty - fy * tx;
   const sine = Math.hypot(kx, ky, kz);
   if (sine < 1e-9) return;
-  kx /= sine;
-  ky /= sine;
-  kz /= sine;
-  const cosine = fx * tx + fy * ty + fz * tz;
-  const along = (kx * nx + ky * ny + kz * nz) * (1 - cosine);
-  frames[o] = nx * cosine + (ky * nz - kz * ny) * sine + kx * along;
-  frames[o + 1] = ny * cosine + (kz * nx - kx * nz) * sine + ky * along;
-  frames[o + 2] = nz * cosine + (kx * ny - ky * nx) * sine + kz * along;
+  rotationOffsetBy(nx, ny, nz, 0, 0, 0, kx / sine, ky / sine, kz / sine, sine, 1 - (fx * tx + fy * ty + fz * tz), turn);
+  frames[o] = nx + turn[0];
+  frames[o + 1] = ny + turn[1];
+  frames[o + 2] = nz + turn[2];
 }
 
 /** Copies triangle `t`'s frame (xyz normal and bound) to place `place` of a list's frames; nothing for place -1. */
