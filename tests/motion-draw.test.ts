@@ -1,11 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { MOTION_END_MS, motionDraw, type MotionDrawState } from '../src/render/motion-draw';
+import { MOTION_END_MS, MOTION_STALL_MS, motionDraw, type MotionDrawState } from '../src/render/motion-draw';
 
 /** Software WebGL: a full draw held the next animation frame back 190 ms, the motion drawn at half resolution. */
 const slow = (changes: Partial<MotionDrawState>): MotionDrawState => ({
   changed: false,
   reduced: false,
   sinceChangeMs: 0,
+  moving: false,
   fullDrawMs: 190,
   motionResolution: 0.5,
   slowDrawMs: 50,
@@ -35,6 +36,12 @@ describe('the render loop choosing a resolution (motionDraw)', () => {
 
   it('draws the picture again at full resolution once nothing new has come for MOTION_END_MS', () => {
     expect(motionDraw(slow({ reduced: true, sinceChangeMs: MOTION_END_MS }))).toBe('full');
+  });
+
+  it('keeps the lower resolution while more of the motion is coming, however slowly, and gives up on a stalled solver', () => {
+    expect(motionDraw(slow({ reduced: true, moving: true, sinceChangeMs: MOTION_END_MS }))).toBe('skip');
+    expect(motionDraw(slow({ reduced: true, moving: true, sinceChangeMs: MOTION_STALL_MS - 1 }))).toBe('skip');
+    expect(motionDraw(slow({ reduced: true, moving: true, sinceChangeMs: MOTION_STALL_MS }))).toBe('full');
   });
 
   it('draws a head just set once, as the finished picture, whatever the changes around it', () => {

@@ -329,7 +329,8 @@ export class EmbeddedFace {
       this.view.onFrame(() => {
         simulation.advance();
         if (skinView.update()) return true;
-        return simulation.awaitsAnswer() ? 'hold' : false;
+        if (simulation.awaitsAnswer()) return 'hold';
+        return simulation.moving() ? 'moving' : false;
       }),
     );
     // Whatever the handle changes (expression, jaw, glyphs, editor, light, head) is drawn.

@@ -36,6 +36,7 @@ export class DrawSchedule {
       changed: false,
       reduced: false,
       sinceChangeMs: 0,
+      moving: false,
       fullDrawMs: 0,
       motionResolution,
       slowDrawMs,
@@ -59,11 +60,12 @@ export class DrawSchedule {
 
   /**
    * The draw of the animation frame at `now`: `changed` whether a hook or the camera changed what it shows, `hold`
-   * whether a hook holds it (the skin has not answered an input yet), `reduced` whether the canvas shows a picture
+   * whether a hook holds it (the skin has not answered an input yet), `moving` whether a hook says more of the motion is
+   * coming, `reduced` whether the canvas shows a picture
    * drawn lower or without antialiasing, `head` whether the scene shows a head, `fullDrawMs` how long the last full
    * draw held the next frame back.
    */
-  choose(now: number, changed: boolean, hold: boolean, reduced: boolean, head: boolean, fullDrawMs: number): FrameDraw {
+  choose(now: number, changed: boolean, hold: boolean, moving: boolean, reduced: boolean, head: boolean, fullDrawMs: number): FrameDraw {
     const news = changed || this.drawPending || this.drawFrames > 0 || performance.now() < this.drawUntil;
     // An input's other changes (the jaw's turn, the glyphs) wait for the skin's answer, and are drawn with it: a
     // draw of the skin as it was costs as much as any (a third of a second in software WebGL, where it also slows
@@ -75,6 +77,7 @@ export class DrawSchedule {
     s.changed = news;
     s.reduced = reduced;
     s.sinceChangeMs = now - this.changedAt;
+    s.moving = moving;
     s.fullDrawMs = fullDrawMs;
     s.empty = !head;
     s.drawnSinceChange = this.emptyDrawnAt === this.changes;

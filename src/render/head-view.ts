@@ -40,9 +40,10 @@ import { PictureDrawer } from './picture-drawer';
  * Work done at each animation frame while the view is in view; `now` is the frame's timestamp in ms. It returns true
  * when it changed what the frame shows (new skin, turned eyes), so that the view draws it; `hold` when what it shows
  * is about to change (the skin has not answered an input yet), so that the view puts off drawing until it has: the
- * hook bounds how long it holds.
+ * hook bounds how long it holds; `moving` when it has nothing new for this frame but more is coming (the solver still
+ * works), so that the view does not take the motion for ended.
  */
-export type FrameHook = (now: number) => boolean | 'hold' | undefined;
+export type FrameHook = (now: number) => boolean | 'hold' | 'moving' | undefined;
 
 /** A fixed-size rendering of the view for a recorder: the render loop holds until `dispose`. */
 export interface ViewCapture {
@@ -286,15 +287,17 @@ export class HeadView {
       if (!this.inView || this.capturing) return;
       let changed = false;
       let hold = false;
+      let moving = false;
       for (let i = 0; i < this.frameHooks.length; i++) {
         const result = this.frameHooks[i](now);
         if (result === true) changed = true;
         else if (result === 'hold') hold = true;
+        else if (result === 'moving') moving = true;
       }
       // True while the camera moves: a drag, or the damping after one.
       if (this.controls.update()) changed = true;
       const reduced = this.reduced || this.pictures.rough;
-      const draw = this.schedule.choose(now, changed, hold, reduced, this.head !== undefined, this.fullDrawMs);
+      const draw = this.schedule.choose(now, changed, hold, moving, reduced, this.head !== undefined, this.fullDrawMs);
       if (draw === 'skip') return;
       this.setReduced(draw === 'reduced');
       this.drawPicture(draw === 'still');

@@ -88,6 +88,8 @@ export class SkinSimulation {
   readonly bounds = new Float32Array(6);
   private readonly staging: InputStaging;
   private readFrames = -1;
+  /** Whether the frame last read by readFrame came from a solver still at work. */
+  private readMoving = false;
   private disposed = false;
   /** When the newest input batch was published (performance.now()). */
   private publishedAt = -Infinity;
@@ -311,7 +313,13 @@ export class SkinSimulation {
     intoNormals.set(slot.renderNormals);
     readSlotBounds(slot, this.bounds);
     this.readFrames = frames;
+    this.readMoving = !slotSleeping(slot);
     return true;
+  }
+
+  /** Whether the frame last read by readFrame came from a solver still at work: more frames of the motion are coming. */
+  moving(): boolean {
+    return this.readMoving && !this.disposed;
   }
 
   /**
