@@ -3,7 +3,7 @@ import { pathToFileURL } from 'node:url';
 import { join } from 'node:path';
 import webpack from 'webpack';
 import { expect, test } from './fixtures';
-import { checkPackedApp, filesUnder, packedApp } from './packed-app';
+import { BUILD_TIMEOUT_MS, checkPackedApp, filesUnder, packedApp } from './packed-app';
 
 /**
  * The package as a web developer uses it with webpack 5: `examples/webpack-app` with the package packed and installed,
@@ -15,6 +15,8 @@ test.describe.configure({ timeout: 240_000 });
 
 let app: string;
 test.beforeAll(async () => {
+  // A hook's timeout is the config's, not the describe's: webpack's build took over 60 s beside three browsers.
+  test.setTimeout(BUILD_TIMEOUT_MS);
   app = packedApp('webpack-app');
   const config = (await import(pathToFileURL(join(app, 'webpack.config.js')).href)).default;
   // As `npx webpack` run in the app's folder would build it.

@@ -45,6 +45,9 @@ export function packedApp(example: string, linked: readonly string[] = []): stri
   return app;
 }
 
+/** How long an example app's install and build may take on a loaded machine (a hook's timeout is the config's otherwise). */
+export const BUILD_TIMEOUT_MS = 180_000;
+
 /**
  * A Vite example with the package installed (see `packedApp`), built once before the file's tests and removed after
  * them: returns the getter of its folder (the build is in its `dist/`).
@@ -52,6 +55,8 @@ export function packedApp(example: string, linked: readonly string[] = []): stri
 export function builtViteApp(example: string, linked: string[] = []): () => string {
   let app = '';
   test.beforeAll(async () => {
+    // A hook's timeout is the config's, not the describe's.
+    test.setTimeout(BUILD_TIMEOUT_MS);
     app = packedApp(example, linked);
     await build({
       root: app,
