@@ -41,13 +41,15 @@ test('a link with an expression in its hash opens that face, and the hash follow
       window.face.setActionUnit('AU26', i / 100);
       await new Promise((r) => setTimeout(r, 10));
     }
-    await new Promise((r) => setTimeout(r, 400));
+    // The last value's write comes at most 250 ms later, or later still where the machine stretches the timers.
+    const deadline = performance.now() + 10_000;
+    while (!/[#&]AU26=1(&|$)/.test(location.hash) && performance.now() < deadline) await new Promise((r) => setTimeout(r, 20));
     return { writes: w.hashWrites - before, ms: performance.now() - start, hash: location.hash };
   });
   console.log(`hash writes during a burst of 100 changes over ${Math.round(burst.ms)} ms: ${burst.writes}`);
   expect(burst.writes).toBeGreaterThanOrEqual(2);
   expect(burst.writes).toBeLessThanOrEqual(Math.ceil(burst.ms / 250) + 1);
-  expect(burst.hash).toContain('AU26=1');
+  expect(burst.hash).toMatch(/[#&]AU26=1(&|$)/);
 
   // The copied link reopens the same face, in a fresh page.
   const expected = await page.evaluate(() => window.face.getActionUnits());
