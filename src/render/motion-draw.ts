@@ -46,11 +46,11 @@ export interface MotionDrawState {
  * last full one, so a GPU that keeps up never draws lower. Nothing new: a picture drawn lower is drawn again at full
  * once the motion has ended: nothing new for MOTION_END_MS and no hook saying more is coming (on a loaded machine the
  * solver's frames come further apart than MOTION_END_MS, and a full draw between two of them is a slow draw in the
- * middle of the motion); otherwise nothing is drawn. A head just set is drawn once, as the finished
- * picture (`still`), even where its skin already moves (the solver's first frames, or a head switched under an
- * expression: one still, then the motion); the background alone, once for each change, at full resolution. (At a
- * page's start in software WebGL the head used to come as four lower draws and a still, the background as two
- * draws at two resolutions: a second of the GPU's time, and each switch of resolution reallocates the canvas.)
+ * middle of the motion); otherwise nothing is drawn. A head just set is drawn once, as the finished picture
+ * (`still`), even where its skin already moves (the solver's first frames, or a head switched under an expression: one
+ * still, then the motion); the background alone, once for each change, at full resolution. (At a page's start in
+ * software WebGL the head used to come as four lower draws and a still, the background as two draws at two
+ * resolutions: a second of the GPU's time, and each switch of resolution reallocates the canvas.)
  */
 export function motionDraw(s: MotionDrawState): 'skip' | 'reduced' | 'full' | 'still' {
   if (s.empty) return s.changed && !s.drawnSinceChange ? 'full' : 'skip';
