@@ -68,3 +68,9 @@ export const ORIENTATION_SHOWN_PASSES = 6;
  * triangles turned over on the way (docs/solver-notes.md, "Orientation").
  */
 export const ORIENTATION_SHOWN_FLOOR = 0.5;
+/**
+ * At most this many orientation passes untangle a sliver still skin has left turned over (see SkinSolver.untangle): the
+ * high head's AU20 fans needed about 110 from where the frames left them; with 100 it slept after 154 frames, with 200
+ * or more after 97.
+ */
+export const UNTANGLE_PASSES = 200;

@@ -46,6 +46,7 @@ import {
   ORIENTATION_SHOWN_PASSES,
   START_MOMENTUM_FRAMES,
   STILL_MOVE,
+  UNTANGLE_PASSES,
 } from './solver-schedule';
 import type { SkinTopology } from './topology';
 
@@ -56,6 +57,8 @@ export class SkinSolver {
   private readonly previous: Float32Array;
   /** Each vertex's move in the last frame (xyz), to tell a vertex that turns back from one going somewhere. */
   private readonly lastStep: Float32Array;
+  /** Scratch: the region's positions while untangle() tries. */
+  private readonly untangleScratch: Float32Array;
   /** The relaxation's per-vertex state and the motion's age (see relaxation.ts). */
   private readonly relaxation: Relaxation;
   /** The watched triangles were cleared: the next frame's passes check every triangle (see restartMotion). */
@@ -135,6 +138,7 @@ export class SkinSolver {
     this.previous = allocate(Float32Array, 3 * n, memory);
     this.previous.set(topology.rest);
     this.lastStep = allocate(Float32Array, 3 * n, memory);
+    this.untangleScratch = new Float32Array(3 * n);
     this.relaxation = new Relaxation(n, memory);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
@@ -408,20 +412,57 @@ export class SkinSolver {
     if (this.relaxation.motionFrames % LOOP_WINDOW === 0)
       this.relaxation.breakLoops(this.region.vertices, this.region.count, this.topology);
     this.frames++;
+    const size = this.topology.size;
+    const still = !this.inputsChanged && this.lastMove <= p.sleepTolerance * size;
+    // Before the skin just outside the region goes back to rest, which the passes may nudge.
+    if (still && this.passes.turnedOver()) {
+      untangle = now();
+      this.untangle();
+      time.orientation += now() - untangle;
+    }
     this.restRegionRing();
     const beforeNormals = now();
     this.passes.computeNormals(this.region, this.topology.triangles);
     const end = now();
     time.normals = end - beforeNormals;
     time.total = end - start;
-    const changed = this.inputsChanged;
     this.inputsChanged = false;
-    // Still skin sleeps; with a triangle turned over, which the next frames' passes may yet untangle, only once as
-    // still as STILL_MOVE (or stopped by the safety net).
-    const size = this.topology.size;
-    if (!changed && this.lastMove <= p.sleepTolerance * size)
-      this.asleep = this.lastMove <= STILL_MOVE * size || this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
+    // Still skin sleeps; with a triangle turned over that untangle() could not lift, which the next frames' passes may
+    // yet untangle, only once as still as STILL_MOVE (or stopped by the safety net).
+    if (still) this.asleep = this.lastMove <= STILL_MOVE * size || this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
     return true;
+  }
+
+  /**
+   * Still skin with a sliver turned over (the fans at the mouth's corners under AU20, fear and disgust on the high
+   * head): orientation passes alone, up to UNTANGLE_PASSES, lift the fan back over its bound (a tenth of a millimetre
+   * or so), and the skin sleeps untangled. Waiting for the frames to do it took hundreds of them, the fan's vertices
+   * slowed by the relaxation to a sixteenth of their moves and less (docs/solver-notes.md, "Untangling as the skin
+   * comes to rest"). If the passes leave a triangle turned over, the skin goes back to where the frame left it.
+   */
+  private untangle(): void {
+    const x = this.buffers.positions;
+    const keep = this.untangleScratch;
+    const V = this.region.vertices;
+    const count = this.region.count;
+    for (let k = 0; k < count; k++) {
+      const i = 3 * V[k];
+      keep[i] = x[i];
+      keep[i + 1] = x[i + 1];
+      keep[i + 2] = x[i + 2];
+    }
+    for (
+      let k = 0;
+      k < UNTANGLE_PASSES && this.passes.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL, ORIENTATION_SHOWN_FLOOR);
+      k++
+    );
+    if (!this.passes.turnedOver()) return;
+    for (let k = 0; k < count; k++) {
+      const i = 3 * V[k];
+      x[i] = keep[i];
+      x[i + 1] = keep[i + 1];
+      x[i + 2] = keep[i + 2];
+    }
   }
 
   /**
