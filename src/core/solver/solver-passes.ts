@@ -4,7 +4,7 @@
  */
 import type { ActiveRegion } from './active-region';
 import { PART_EVEN, PART_EVEN_SEAM, PART_ODD, PART_ODD_SEAM, PARTS } from './constraint-lists';
-import { anyTurnedOver, projectOrientationPart } from './orientation-kernel';
+import { anyTurnedOver, ORIENT_AGAIN, ORIENT_FULL, projectOrientationPart } from './orientation-kernel';
 import type { PartArrays } from './part-arrays';
 import {
   JOB_BENDING,
@@ -19,6 +19,7 @@ import {
 } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import type { SkinParameters } from './skin-parameters';
+import { ORIENTATION_SHOWN_FLOOR, UNTANGLE_PASSES } from './solver-schedule';
 import { ALONE, LEADER, runShare } from './solver-partner';
 import { projectBendingPart } from './solver-kernels';
 import { computeNormals } from './topology';
@@ -83,6 +84,41 @@ export class FramePasses {
   /** Whether a listed triangle is turned over now (see anyTurnedOver); read on this thread between passes. */
   turnedOver(): boolean {
     return anyTurnedOver(this.parts);
+  }
+
+  /**
+   * Up to `passes` orientation passes in a row at `floor` of the bound (the first checks every triangle, the others
+   * those with a corner moved since), stopping once one corrects nothing.
+   */
+  orientationRounds(passes: number, floor = 1): void {
+    for (let k = 0; k < passes && this.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL, floor); k++);
+  }
+
+  /**
+   * Still skin with a sliver turned over (the fans at the mouth's corners under AU20, fear and disgust on the high
+   * head): orientation passes alone, up to UNTANGLE_PASSES at ORIENTATION_SHOWN_FLOOR of the bound, lift the fan back
+   * (a tenth of a millimetre or so), so that the skin sleeps untangled. Waiting for the frames to do it took hundreds
+   * of them, the fan's vertices slowed by the relaxation to a sixteenth of their moves and less (docs/solver-notes.md,
+   * "Untangling as the skin comes to rest"). If a triangle stays turned over, the `count` region vertices go back to
+   * where the frame left them. `keep` is scratch, 3 floats a vertex.
+   */
+  untangle(count: number, keep: Float32Array): void {
+    const x = this.parts.positions;
+    const V = this.parts.regionVertices;
+    for (let k = 0; k < count; k++) {
+      const i = 3 * V[k];
+      keep[i] = x[i];
+      keep[i + 1] = x[i + 1];
+      keep[i + 2] = x[i + 2];
+    }
+    this.orientationRounds(UNTANGLE_PASSES, ORIENTATION_SHOWN_FLOOR);
+    if (!this.turnedOver()) return;
+    for (let k = 0; k < count; k++) {
+      const i = 3 * V[k];
+      x[i] = keep[i];
+      x[i + 1] = keep[i + 1];
+      x[i + 2] = keep[i + 2];
+    }
   }
 
   private orientationPair(mine: number, theirs: number, mode: number, floor: number): boolean {

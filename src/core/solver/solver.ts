@@ -27,7 +27,7 @@ import { restOutside } from './frame-kernels';
 import { createBulgeDirections } from './length-kernels';
 import { allocate, type Memory } from './memory';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from './muscle-inputs';
-import { countTurnedOver, ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, triangleFrames } from './orientation-kernel';
+import { countTurnedOver, ORIENT_FULL, ORIENT_WATCHED, triangleFrames } from './orientation-kernel';
 import type { PartArrays } from './part-arrays';
 import { JOB_RELAX } from './partner-board';
 import type { PartnerLink } from './partner-link';
@@ -46,7 +46,6 @@ import {
   ORIENTATION_SHOWN_PASSES,
   START_MOMENTUM_FRAMES,
   STILL_MOVE,
-  UNTANGLE_PASSES,
 } from './solver-schedule';
 import type { SkinTopology } from './topology';
 
@@ -57,7 +56,7 @@ export class SkinSolver {
   private readonly previous: Float32Array;
   /** Each vertex's move in the last frame (xyz), to tell a vertex that turns back from one going somewhere. */
   private readonly lastStep: Float32Array;
-  /** Scratch: the region's positions while untangle() tries. */
+  /** Scratch: the region's positions while FramePasses.untangle tries. */
   private readonly untangleScratch: Float32Array;
   /** The relaxation's per-vertex state and the motion's age (see relaxation.ts). */
   private readonly relaxation: Relaxation;
@@ -396,16 +395,12 @@ export class SkinSolver {
     // relaxation in the fans, where the corrections then took turns with the other constraints until the safety net
     // (see ORIENTATION_SHOWN_FLOOR).
     let untangle = now();
-    for (let k = 0; k < ORIENTATION_PASSES && this.passes.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL); k++);
+    this.passes.orientationRounds(ORIENTATION_PASSES);
     time.orientation += now() - untangle;
     this.settleRegion();
     this.relax();
     untangle = now();
-    for (
-      let k = 0;
-      k < ORIENTATION_SHOWN_PASSES && this.passes.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL, ORIENTATION_SHOWN_FLOOR);
-      k++
-    );
+    this.passes.orientationRounds(ORIENTATION_SHOWN_PASSES, ORIENTATION_SHOWN_FLOOR);
     time.orientation += now() - untangle;
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.passes.recordSteps(this.region.count);
@@ -417,7 +412,7 @@ export class SkinSolver {
     // Before the skin just outside the region goes back to rest, which the passes may nudge.
     if (still && this.passes.turnedOver()) {
       untangle = now();
-      this.untangle();
+      this.passes.untangle(this.region.count, this.untangleScratch);
       time.orientation += now() - untangle;
     }
     this.restRegionRing();
@@ -427,42 +422,10 @@ export class SkinSolver {
     time.normals = end - beforeNormals;
     time.total = end - start;
     this.inputsChanged = false;
-    // Still skin sleeps; with a triangle turned over that untangle() could not lift, which the next frames' passes may
+    // Still skin sleeps; with a triangle turned over that FramePasses.untangle could not lift, which the next frames' passes may
     // yet untangle, only once as still as STILL_MOVE (or stopped by the safety net).
     if (still) this.asleep = this.lastMove <= STILL_MOVE * size || this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
     return true;
-  }
-
-  /**
-   * Still skin with a sliver turned over (the fans at the mouth's corners under AU20, fear and disgust on the high
-   * head): orientation passes alone, up to UNTANGLE_PASSES, lift the fan back over its bound (a tenth of a millimetre
-   * or so), and the skin sleeps untangled. Waiting for the frames to do it took hundreds of them, the fan's vertices
-   * slowed by the relaxation to a sixteenth of their moves and less (docs/solver-notes.md, "Untangling as the skin
-   * comes to rest"). If the passes leave a triangle turned over, the skin goes back to where the frame left it.
-   */
-  private untangle(): void {
-    const x = this.buffers.positions;
-    const keep = this.untangleScratch;
-    const V = this.region.vertices;
-    const count = this.region.count;
-    for (let k = 0; k < count; k++) {
-      const i = 3 * V[k];
-      keep[i] = x[i];
-      keep[i + 1] = x[i + 1];
-      keep[i + 2] = x[i + 2];
-    }
-    for (
-      let k = 0;
-      k < UNTANGLE_PASSES && this.passes.projectOrientation(k > 0 ? ORIENT_AGAIN : ORIENT_FULL, ORIENTATION_SHOWN_FLOOR);
-      k++
-    );
-    if (!this.passes.turnedOver()) return;
-    for (let k = 0; k < count; k++) {
-      const i = 3 * V[k];
-      x[i] = keep[i];
-      x[i + 1] = keep[i + 1];
-      x[i + 2] = keep[i + 2];
-    }
   }
 
   /**
