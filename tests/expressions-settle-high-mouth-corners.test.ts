@@ -11,7 +11,7 @@ import { loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression } from './fixtu
 //
 // AU20 and fear pull the corners back and leave slivers in their fans turned over once the rest is still: the skin
 // waited for the frames to lift them, the fans' vertices slowed by the relaxation (AU20 slept after 773 frames), or
-// slept with them (fear, 2 turned over). Untangled as the skin comes to rest (SkinSolver.untangle): 97 and 93 frames.
+// slept with them (fear, 2 turned over). Untangled as the skin comes to rest (FramePasses.untangle): 97 and 93 frames.
 describe('the mouth corners on the high head', () => {
   let sim: Awaited<ReturnType<typeof loadHeadSimulation>>;
   beforeAll(async () => {

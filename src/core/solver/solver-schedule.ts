@@ -69,7 +69,7 @@ export const ORIENTATION_SHOWN_PASSES = 6;
  */
 export const ORIENTATION_SHOWN_FLOOR = 0.5;
 /**
- * At most this many orientation passes untangle a sliver still skin has left turned over (see SkinSolver.untangle): the
+ * At most this many orientation passes untangle a sliver still skin has left turned over (see FramePasses.untangle): the
  * high head's AU20 fans needed about 110 from where the frames left them; with 100 it slept after 154 frames, with 200
  * or more after 97.
  */

@@ -422,8 +422,8 @@ export class SkinSolver {
     time.normals = end - beforeNormals;
     time.total = end - start;
     this.inputsChanged = false;
-    // Still skin sleeps; with a triangle turned over that FramePasses.untangle could not lift, which the next frames' passes may
-    // yet untangle, only once as still as STILL_MOVE (or stopped by the safety net).
+    // Still skin sleeps; with a triangle turned over that FramePasses.untangle could not lift, which the next frames'
+    // passes may yet untangle, only once as still as STILL_MOVE (or stopped by the safety net).
     if (still) this.asleep = this.lastMove <= STILL_MOVE * size || this.relaxation.motionFrames > LATE_MOTION || !this.passes.turnedOver();
     return true;
   }
