@@ -3,6 +3,7 @@ import type { SkinView } from '../render/skin-view';
 import type { SkinSimulation } from '../sim/main/skin-simulation';
 import type { FaceEyes } from './face-ports';
 import type { FaceHandle } from './face-handle';
+import { HeldPicture } from './held-picture';
 import { videoFrameCount, type VideoOptions } from './video-options';
 
 /** What a recorder works with: the face's handle, its skin solver and view, and the skin mesh's updater. */
@@ -47,6 +48,11 @@ export class VideoRecorder {
     const before = handle.timelineState();
     const eyes = handle.getEyeSimulation();
     let capture: ViewCapture | undefined;
+    // A picture the last one shows already (a held expression, a still lead-in) is not drawn again: the sink repeats it.
+    const held = new HeldPicture();
+    const stopWatching = handle.onChange((change) => {
+      if (change !== 'expression' && change !== 'timeline') held.invalidate();
+    });
     try {
       // The encoders load with the first recording (a page that never records does not fetch them); a browser that
       // cannot encode refuses before the face is touched.
@@ -62,12 +68,15 @@ export class VideoRecorder {
         for (let i = 0; i < frames; i++) {
           o.signal?.throwIfAborted();
           if (before.loaded) handle.seek(i / o.fps);
-          await simulation.runFrames(o.solverFramesPerVideoFrame);
-          this.parts.skin.update();
-          // The render loop holds while recording: the eye positions a timeline sets turn the eyes here.
-          this.parts.eyes.showGaze();
-          capture.render();
-          await sink.add(capture.canvas, i, o.fps);
+          const solved = await simulation.runFrames(o.solverFramesPerVideoFrame);
+          if (held.same(solved, handle.getEffectiveActionUnits())) await sink.repeat(i, o.fps);
+          else {
+            this.parts.skin.update();
+            // The render loop holds while recording: the eye positions a timeline sets turn the eyes here.
+            this.parts.eyes.showGaze();
+            capture.render();
+            await sink.add(capture.canvas, i, o.fps);
+          }
           o.onProgress?.((i + 1) / frames);
         }
         o.signal?.throwIfAborted();
@@ -77,6 +86,7 @@ export class VideoRecorder {
         throw error;
       }
     } finally {
+      stopWatching();
       this.busy = false;
       if (!handle.isDisposed()) {
         // A head loaded meanwhile took this simulation away with the old head; the new one runs free already.

@@ -18,6 +18,8 @@ const KEY_FRAME_SECONDS = 2;
 /** Where the pictures go: a WebM encoder and muxer, or a zip of PNGs. */
 export interface FrameSink {
   add(canvas: HTMLCanvasElement, index: number, fps: number): Promise<void>;
+  /** Adds the last picture added again, as frame `index` (a held expression: see HeldPicture). */
+  repeat(index: number, fps: number): Promise<void>;
   finish(): Promise<Blob>;
   /** Frees what the sink holds after a failure or a cancel. */
   cancel(): void;
@@ -65,16 +67,28 @@ export async function webmSink(o: Required<VideoOptions>): Promise<FrameSink> {
   });
   encoder.configure(config);
   const keyEvery = Math.max(1, Math.round(KEY_FRAME_SECONDS * o.fps));
+  // The last picture, kept for `repeat`.
+  let last: VideoFrame | undefined;
+  const encode = async (source: HTMLCanvasElement | VideoFrame, index: number, fps: number): Promise<void> => {
+    if (failure) throw failure;
+    const frame = new VideoFrame(source, { timestamp: Math.round((index * 1e6) / fps), duration: Math.round(1e6 / fps) });
+    encoder.encode(frame, { keyFrame: index % keyEvery === 0 });
+    if (source === last) frame.close();
+    else {
+      last?.close();
+      last = frame;
+    }
+    while (encoder.encodeQueueSize > ENCODE_QUEUE && !failure)
+      await new Promise((resolve) => encoder.addEventListener('dequeue', resolve, { once: true }));
+  };
   return {
-    async add(canvas, index, fps) {
-      if (failure) throw failure;
-      const frame = new VideoFrame(canvas, { timestamp: Math.round((index * 1e6) / fps), duration: Math.round(1e6 / fps) });
-      encoder.encode(frame, { keyFrame: index % keyEvery === 0 });
-      frame.close();
-      while (encoder.encodeQueueSize > ENCODE_QUEUE && !failure)
-        await new Promise((resolve) => encoder.addEventListener('dequeue', resolve, { once: true }));
+    add: encode,
+    async repeat(index, fps) {
+      if (!last) throw new Error('recordVideo: no picture to repeat');
+      await encode(last, index, fps);
     },
     async finish() {
+      last?.close();
       await encoder.flush();
       encoder.close();
       await muxed;
@@ -83,6 +97,7 @@ export async function webmSink(o: Required<VideoOptions>): Promise<FrameSink> {
       return new Blob([output.target.buffer!], { type: 'video/webm' });
     },
     cancel() {
+      last?.close();
       if (encoder.state !== 'closed') encoder.close();
       void output.cancel();
     },
@@ -97,17 +112,28 @@ export function pngZipSink(): FrameSink {
     if (error) failure ??= error;
     else chunks.push(chunk);
   });
+  // The last picture's PNG, kept for `repeat`.
+  let last: Uint8Array | undefined;
+  const store = (png: Uint8Array, index: number): void => {
+    const file = new ZipPassThrough(`frame-${String(index).padStart(5, '0')}.png`);
+    // A fixed date: the same recording gives the same file.
+    file.mtime = ZIP_DATE;
+    zip.add(file);
+    file.push(png, true);
+  };
   return {
     async add(canvas, index) {
       if (failure) throw failure;
       const png = await new Promise<Blob>((resolve, reject) =>
         canvas.toBlob((b) => (b ? resolve(b) : reject(new Error('recordVideo: a frame could not be encoded as a PNG'))), 'image/png'),
       );
-      const file = new ZipPassThrough(`frame-${String(index).padStart(5, '0')}.png`);
-      // A fixed date: the same recording gives the same file.
-      file.mtime = ZIP_DATE;
-      zip.add(file);
-      file.push(new Uint8Array(await png.arrayBuffer()), true);
+      last = new Uint8Array(await png.arrayBuffer());
+      store(last, index);
+    },
+    async repeat(index) {
+      if (failure) throw failure;
+      if (!last) throw new Error('recordVideo: no picture to repeat');
+      store(last, index);
     },
     async finish() {
       zip.end();
