@@ -8,14 +8,23 @@ import { defineConfig } from 'vitest/config';
  * last and ran on alone for its last 25 s.
  */
 const SLOW_FIRST = [
-  'tests/identity-expressions.test.ts', // 50
-  'tests/expressions-settle-action-units.test.ts', // 33
-  'tests/expressions-settle-presets.test.ts', // 21
-  'tests/rig-fuzz.test.ts', // 16
-  'tests/expressions-round-trip-mixtures.test.ts', // 15
-  'tests/identity-lifts.test.ts', // 15
-  'tests/facs-cues.test.ts', // 11
-  'tests/identity-ageing.test.ts', // 10
+  'tests/wrinkles-high-no-crumpling.test.ts', // 45
+  'tests/expressions-settle-high-prototypes.test.ts', // 33
+  'tests/expressions-settle-high-lower-face.test.ts', // 33
+  'tests/identity-expressions.test.ts', // 26
+  'tests/expressions-settle-high-presets.test.ts', // 25
+  'tests/expressions-settle-action-units.test.ts', // 17
+  'tests/expressions-settle-high-upper-face.test.ts', // 17
+  'tests/expressions-settle-high-mouth-corners.test.ts', // 17
+  'tests/facs-cues.test.ts', // 14
+  'tests/expressions-settle-presets.test.ts', // 13
+  'tests/identity-lifts.test.ts', // 11
+  'tests/expressions-settle-high-lids.test.ts', // 9
+  'tests/rig-fuzz.test.ts', // 9
+  'tests/solver-active-region.test.ts', // 9
+  'tests/expressions-round-trip-mixtures.test.ts', // 7
+  'tests/wrinkles-by-region.test.ts', // 7
+  'tests/identity-ageing.test.ts', // 7
 ];
 
 /** Vitest's order (its record of earlier runs first), with SLOW_FIRST ahead of every other file. */
