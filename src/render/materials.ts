@@ -254,7 +254,8 @@ const SUBSURFACE_LIGHTS = (() => {
     )
     .replace(SHEEN_COMPENSATION, `${SHEEN_COMPENSATION} sfDiffuseIrradiance *= sheenEnergyComp;`)
     .replace(DIRECT_DIFFUSE, 'reflectedLight.directDiffuse += sfDiffuseIrradiance * diffuseBRDF * ( 1.0 - F );');
-  return `uniform vec3 sfWrap;\nuniform vec3 sfNormalBlur;\nuniform float sfCavity;\nvec3 sfSmoothNormal;\n${chunk}`;
+  const uniforms = 'uniform vec3 sfWrap;\nuniform vec3 sfNormalBlur;\nuniform float sfCavity;\nuniform float sfShade;\n';
+  return `${uniforms}vec3 sfSmoothNormal;\n${chunk}`;
 })();
 
 /** Gives a physical material the subsurface look (wrap lighting, blurred diffuse normal, cavity darkening). */
@@ -263,19 +264,25 @@ function addSubsurface<M extends MeshPhysicalMaterial>(material: M, options: Sub
     sfWrap: { value: new Vector3(...options.wrap) },
     sfNormalBlur: { value: new Vector3(...options.normalBlur) },
     sfCavity: { value: options.cavity },
+    // The light that reaches the part at all, 0..1: 1 but for the teeth and gums behind lips all but closed (MouthShade).
+    sfShade: { value: 1 },
   };
   material.userData.subsurface = { wrap: [...options.wrap], normalBlur: [...options.normalBlur], cavity: options.cavity };
+  material.userData.shade = uniforms.sfShade;
   material.onBeforeCompile = (shader: WebGLProgramParametersWithUniforms) => {
     if (!SUBSURFACE_LIGHTS) throw new Error('the subsurface look does not fit this three.js: its physical lighting chunk changed');
     Object.assign(shader.uniforms, uniforms);
-    shader.fragmentShader = shader.fragmentShader.replace('#include <lights_physical_pars_fragment>', SUBSURFACE_LIGHTS).replace(
-      '#include <normal_fragment_maps>',
-      `#include <normal_fragment_maps>
+    shader.fragmentShader = shader.fragmentShader
+      .replace('#include <lights_physical_pars_fragment>', SUBSURFACE_LIGHTS)
+      .replace(
+        '#include <normal_fragment_maps>',
+        `#include <normal_fragment_maps>
 	sfSmoothNormal = nonPerturbedNormal;
 	#ifdef USE_NORMALMAP_TANGENTSPACE
 		diffuseColor.rgb *= mix( 1.0, texture2D( normalMap, vNormalMapUv ).a, sfCavity );
 	#endif`,
-    );
+      )
+      .replace('#include <opaque_fragment>', 'outgoingLight *= sfShade;\n#include <opaque_fragment>');
   };
   // One program for every material with the look (their uniforms differ, their code does not).
   material.customProgramCacheKey = () => 'softface-subsurface';
