@@ -112,3 +112,9 @@ export function rotateAboutAxis(
 export function clamp01(x: number): number {
   return x < 0 ? 0 : x > 1 ? 1 : x;
 }
+
+/** 0 at or below `a`, 1 at or above `b`, and a smooth cubic between (GLSL's smoothstep). */
+export function smoothstep(a: number, b: number, x: number): number {
+  const t = clamp01((x - a) / (b - a));
+  return t * t * (3 - 2 * t);
+}

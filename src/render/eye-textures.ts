@@ -3,7 +3,7 @@
  * v runs outward on the iris (0 at the centre, 1 at the limbus) and backward on the sclera (0 at the limbus, 1 at the
  * back pole). Seeded, so every load looks the same. Pure data (RGBA8, sRGB-encoded colour), no DOM.
  */
-import { clamp01 } from '../core/math3';
+import { clamp01, smoothstep } from '../core/math3';
 import { mulberry32 } from '../core/random';
 
 /** An RGBA8 image, rows from v = 0 upward, colour sRGB-encoded. */
@@ -124,11 +124,6 @@ export function generateScleraImage(seed = 5): EyeImage {
     }
   }
   return { width, height, data };
-}
-
-function smoothstep(a: number, b: number, x: number): number {
-  const t = clamp01((x - a) / (b - a));
-  return t * t * (3 - 2 * t);
 }
 
 /** Linear 0..1 to an sRGB-encoded byte. */

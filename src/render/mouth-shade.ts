@@ -1,4 +1,5 @@
 import type { BufferAttribute, Material, Mesh, Object3D } from 'three';
+import { smoothstep } from '../core/math3';
 import type { Vec3 } from '../core/rig/rig-types';
 import { findLipSlit, type LipSlit } from '../core/head/lip-slit';
 
@@ -57,8 +58,7 @@ export class MouthShade {
 
 /** The light the teeth get with the lips `gap` metres apart at the midline: CLOSED_MOUTH_LIGHT closed, 1 open. */
 export function mouthLightAt(gap: number): number {
-  const t = Math.min(1, Math.max(0, (gap - CLOSED_GAP) / (OPEN_GAP - CLOSED_GAP)));
-  return CLOSED_MOUTH_LIGHT + (1 - CLOSED_MOUTH_LIGHT) * t * t * (3 - 2 * t);
+  return CLOSED_MOUTH_LIGHT + (1 - CLOSED_MOUTH_LIGHT) * smoothstep(CLOSED_GAP, OPEN_GAP, gap);
 }
 
 /** The light uniforms of the teeth rows' materials (the teeth's and the gums'), each once. */

@@ -3,7 +3,7 @@
  * per-vertex multiplier of the albedo. Worked out once from the head at rest (metres, +y up, face toward +z); the
  * colours then ride on their vertices through every expression.
  */
-import { clamp01 } from '../core/math3';
+import { smoothstep } from '../core/math3';
 
 /** Where the tinted regions are, on the MakeHuman hm08 head (scripts/build-head-model.ts). */
 export interface SkinTintOptions {
@@ -86,9 +86,4 @@ export const DEEP_MOUTH_LIGHT = 0.2;
  */
 export function mouthLight(z: number, front: number): number {
   return DEEP_MOUTH_LIGHT + (1 - DEEP_MOUTH_LIGHT) * smoothstep(front - 0.05, front - 0.005, z);
-}
-
-function smoothstep(a: number, b: number, x: number): number {
-  const t = clamp01((x - a) / (b - a));
-  return t * t * (3 - 2 * t);
 }
