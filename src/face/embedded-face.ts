@@ -275,7 +275,8 @@ export class EmbeddedFace {
       const eyes = colliders
         .filter((c) => (HEAD_NODES.eyes as readonly string[]).includes(c.name))
         .map((c) => ({ centre: c.a, radius: c.radius }));
-      head.hair = new HairView(head.skin, prepared?.landmarks ?? DEFAULT_LANDMARKS, eyes);
+      const landmarks = prepared?.landmarks ?? DEFAULT_LANDMARKS;
+      head.hair = new HairView(head.skin, landmarks, eyes);
       // An edited rig kept from an earlier visit replaces the original, which "revert to default" brings back.
       if (this.rigKey) {
         // An identity's edited rig is kept under its own name, a loaded head's in the loaded head's slot.
@@ -296,6 +297,7 @@ export class EmbeddedFace {
         renderPositions: head.skin.geometry.getAttribute('position').array as Float32Array,
         indices: head.skin.geometry.index!.array as Uint16Array | Uint32Array,
         colliders,
+        mouth: { left: landmarks['mouth-l'], right: landmarks['mouth-r'] },
         muscles: rig.muscles,
         parameters: aged?.parameters,
       });

@@ -1,7 +1,7 @@
 /**
  * The skin solver (thesis 3.1.2 and 4.3): every frame, position, muscle and length constraints are projected in
  * that order, a number of times, over flat Float32Arrays. Added to the thesis: a bending constraint that sets the
- * wrinkle spacing in millimetres, collisions with rigid shapes (eyes, teeth), orientation constraints, a per-vertex
+ * wrinkle spacing in millimetres, collisions with rigid shapes (eyes, teeth) and between the lips, orientation constraints, a per-vertex
  * relaxation that turns cycles into convergence (see relaxation.ts), the active region: only skin that moves is solved, and
  * a partner thread that can take half of most passes with the same result (see solver-partner.ts).
  */
@@ -9,6 +9,7 @@ import { ACTIVE_GROW, ActiveRegion } from './active-region';
 import { bendingAtRest, inverseDegrees, setBendingShares } from './bending-setup';
 import type { Collider } from './colliders';
 import { CarriedFrames } from './carried-frames';
+import { LipContact, type MouthCorners } from './lip-contact';
 import { CollisionCandidates } from './collision-candidates';
 import {
   createBendingLists,
@@ -101,6 +102,8 @@ export class SkinSolver {
   private readonly bulgeDirections: Float32Array;
   /** The skin checked against the colliders (see collision-candidates.ts). */
   private readonly collisions: CollisionCandidates;
+  /** The lips' contact across the slit; null without a mouth (see LipContact). */
+  readonly lips: LipContact | null;
   private inputsChanged = false;
   private asleep = true;
   /** Largest vertex move of the last frame, in model units. */
@@ -120,6 +123,8 @@ export class SkinSolver {
       parameters?: Partial<SkinParameters>;
       buffers?: SolverBuffers;
       colliders?: Collider[];
+      /** The mouth's corners: where given, the lips meet instead of passing through each other (see LipContact). */
+      mouth?: MouthCorners;
       activeRegion?: boolean;
       memory?: Memory;
     } = {},
@@ -157,6 +162,7 @@ export class SkinSolver {
     this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory);
     const c = new CollisionCandidates(topology, options.colliders ?? [], memory);
     this.collisions = c;
+    this.lips = options.mouth ? LipContact.find(topology.rest, topology.restNormals, options.mouth) : null;
     const triangleCount = topology.triangles.length / 3;
     // Rounded up to whole words (see PartArrays.uncheckedWords); the flags past the last triangle stay 0.
     const unchecked = allocate(Uint8Array, 4 * Math.ceil(triangleCount / 4), memory);
@@ -387,6 +393,8 @@ export class SkinSolver {
       t0 = now();
       time.bending += t0 - t1;
       this.passes.projectCollisions();
+      // On this thread alone, with the partner idle between jobs: a few hundred pairs.
+      this.lips?.project(this.buffers.positions, this.region.inside);
       time.collisions += now() - t0;
     }
     this.watchFresh = false;

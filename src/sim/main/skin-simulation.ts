@@ -1,5 +1,6 @@
 import type { HeadPose } from '../../core/expression/head-pose';
 import type { Collider } from '../../core/solver/colliders';
+import type { MouthCorners } from '../../core/solver/lip-contact';
 import { validateMuscle } from '../../core/rig/muscle-validation';
 import type { Muscle } from '../../core/rig/rig-types';
 import { SKIN_DEFAULTS, validateParameters, type SkinParameters } from '../../core/solver/skin-parameters';
@@ -34,6 +35,8 @@ export interface SkinSimulationOptions {
   renderPositions: Float32Array;
   indices: Uint16Array | Uint32Array;
   colliders?: Collider[];
+  /** The mouth's corners in head space: the lips then meet instead of passing through each other (see LipContact). */
+  mouth?: MouthCorners;
   parameters?: Partial<SkinParameters>;
   /** The rig's muscles; `setContractions` then drives them, in this order. */
   muscles?: Muscle[];
@@ -131,7 +134,14 @@ export class SkinSimulation {
     const colliders = options.colliders ?? [];
     const muscles = options.muscles ?? [];
     if (mode === 'main') {
-      const host = new SolverHost({ renderPositions: options.renderPositions, indices: options.indices, colliders, parameters, muscles });
+      const host = new SolverHost({
+        renderPositions: options.renderPositions,
+        indices: options.indices,
+        colliders,
+        mouth: options.mouth,
+        parameters,
+        muscles,
+      });
       const t = host.topology;
       const mainLayout = controlLayout(t.vertexCount, contractionCapacity(muscles.length));
       const control = controlViews(new ArrayBuffer(mainLayout.byteLength), mainLayout);
@@ -148,6 +158,7 @@ export class SkinSimulation {
       renderPositions: options.renderPositions,
       indices: options.indices,
       colliders,
+      mouth: options.mouth,
       parameters,
       muscles,
     });

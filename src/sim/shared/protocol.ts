@@ -1,5 +1,6 @@
 /** Messages between SkinSimulation (main thread) and the skin worker. */
 import type { Collider } from '../../core/solver/colliders';
+import type { MouthCorners } from '../../core/solver/lip-contact';
 import type { Muscle } from '../../core/rig/rig-types';
 import type { SkinParameters } from '../../core/solver/skin-parameters';
 
@@ -14,6 +15,8 @@ export interface InitMessage {
   renderPositions: Float32Array;
   indices: Uint16Array | Uint32Array;
   colliders: Collider[];
+  /** The mouth's corners, for the lips' contact (see LipContact). */
+  mouth?: MouthCorners;
   parameters: SkinParameters;
   muscles: Muscle[];
   /** Threads that solve: 2 adds a partner worker (`shared` mode only). */

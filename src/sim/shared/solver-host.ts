@@ -1,4 +1,5 @@
 import type { Collider } from '../../core/solver/colliders';
+import type { MouthCorners } from '../../core/solver/lip-contact';
 import type { RigEdit } from './protocol';
 import { JawFollower } from '../../core/rig/jaw-follower';
 import { LidSlack } from '../../core/rig/lid-slack';
@@ -29,6 +30,8 @@ export interface SolverHostInput {
   renderPositions: Float32Array;
   indices: Uint16Array | Uint32Array;
   colliders: Collider[];
+  /** The mouth's corners (head space), for the lips' contact; none: the lips may pass through each other. */
+  mouth?: MouthCorners;
   parameters: SkinParameters;
   /** The rig's muscles (may be empty); contractions arrive in this order. */
   muscles: Muscle[];
@@ -72,6 +75,7 @@ export class SolverHost {
   /** The rig edits applied so far (see RigMessage). */
   rigRevision = 0;
   private readonly colliders: Collider[];
+  private readonly mouth: MouthCorners | undefined;
   private readonly activeRegion: boolean | undefined;
   /** The colliders as the model placed them, to put the jaw's back before a new jaw takes them. */
   private readonly restColliders: Collider[];
@@ -88,6 +92,7 @@ export class SolverHost {
     this.solver = new SkinSolver(this.topology, {
       parameters: input.parameters,
       colliders: input.colliders,
+      mouth: input.mouth,
       activeRegion: input.activeRegion,
       memory: input.memory,
     });
@@ -95,6 +100,7 @@ export class SolverHost {
     this.slack = this.rig ? new LidSlack(this.topology, input.muscles) : undefined;
     this.neck = NeckCarry.create(this.topology.rest, this.topology.triangles);
     this.colliders = input.colliders;
+    this.mouth = input.mouth;
     this.activeRegion = input.activeRegion;
     this.restColliders = structuredClone(input.colliders);
     this.jaw = JawFollower.create(input.muscles, input.colliders);
@@ -188,6 +194,7 @@ export class SolverHost {
       parameters: this.solver.parameters(),
       buffers,
       colliders,
+      mouth: this.mouth,
       activeRegion: this.activeRegion,
     });
     solver.updateMuscles();
