@@ -131,17 +131,18 @@ export class SkinSimulation {
     if (mode === 'shared' && typeof SharedArrayBuffer === 'undefined')
       throw new Error("solver mode 'shared' needs a cross-origin isolated page");
     const renderCount = options.renderPositions.length / 3;
-    const colliders = options.colliders ?? [];
     const muscles = options.muscles ?? [];
+    // What the solver host is built from, here or in the worker.
+    const skin = {
+      renderPositions: options.renderPositions,
+      indices: options.indices,
+      colliders: options.colliders ?? [],
+      mouth: options.mouth,
+      parameters,
+      muscles,
+    };
     if (mode === 'main') {
-      const host = new SolverHost({
-        renderPositions: options.renderPositions,
-        indices: options.indices,
-        colliders,
-        mouth: options.mouth,
-        parameters,
-        muscles,
-      });
+      const host = new SolverHost(skin);
       const t = host.topology;
       const mainLayout = controlLayout(t.vertexCount, contractionCapacity(muscles.length));
       const control = controlViews(new ArrayBuffer(mainLayout.byteLength), mainLayout);
@@ -155,12 +156,7 @@ export class SkinSimulation {
       type: 'init',
       mode,
       workers: mode === 'shared' && (workers === 2 || (workers === 'auto' && cores >= PARTNER_MIN_CORES)) ? 2 : 1,
-      renderPositions: options.renderPositions,
-      indices: options.indices,
-      colliders,
-      mouth: options.mouth,
-      parameters,
-      muscles,
+      ...skin,
     });
     const layout = slotLayout(renderCount, ready.vertexCount);
     const cLayout = controlLayout(ready.vertexCount, contractionCapacity(muscles.length));
