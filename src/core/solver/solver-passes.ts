@@ -3,6 +3,8 @@
  * and half there at the same time, with the same result (see solver-partner.ts): what SkinSolver.step runs.
  */
 import type { ActiveRegion } from './active-region';
+import type { LipContact } from './lip-contact';
+import type { FrameTimings } from './solver-buffers';
 import { PART_EVEN, PART_EVEN_SEAM, PART_ODD, PART_ODD_SEAM, PARTS } from './constraint-lists';
 import { anyTurnedOver, ORIENT_AGAIN, ORIENT_FULL, projectOrientationPart } from './orientation-kernel';
 import type { PartArrays } from './part-arrays';
@@ -30,9 +32,38 @@ export class FramePasses {
   partner: PartnerLink | null = null;
   private readonly parts: PartArrays;
   private readonly direction = new Float32Array(3);
+  /** The lips' contact, projected with the collisions (null without a mouth), and the region's flags it reads. */
+  private readonly lips: LipContact | null;
+  private readonly inside: Uint8Array;
 
-  constructor(parts: PartArrays) {
+  constructor(parts: PartArrays, lips: LipContact | null = null, inside: Uint8Array = new Uint8Array(0)) {
     this.parts = parts;
+    this.lips = lips;
+    this.inside = inside;
+  }
+
+  /**
+   * A frame's outer iterations: positions and muscles, lengths, orientation, bending, then collisions, each pass's
+   * time added to `time`. `orient`: the orientation passes' mode (see projectOrientation).
+   */
+  iterate(p: SkinParameters, maxBendPasses: number, count: number, orient: number, time: FrameTimings): void {
+    for (let it = 0; it < p.positionIterations; it++) {
+      let t0 = now();
+      this.projectPositions(count, p);
+      let t1 = now();
+      time.positions += t1 - t0;
+      this.projectLengths(p.lengthIterations, p);
+      t0 = now();
+      time.lengths += t0 - t1;
+      this.projectOrientation(orient);
+      t1 = now();
+      time.orientation += t1 - t0;
+      this.projectBending(p, maxBendPasses, count);
+      t0 = now();
+      time.bending += t0 - t1;
+      this.projectCollisions();
+      time.collisions += now() - t0;
+    }
   }
 
   /**
@@ -162,6 +193,8 @@ export class FramePasses {
    */
   projectCollisions(): void {
     this.share(JOB_COLLISIONS, 0);
+    // Then the lips' contact, on this thread alone with the partner idle between jobs: a few hundred pairs.
+    this.lips?.project(this.parts.positions, this.inside);
   }
 
   /**
@@ -208,3 +241,6 @@ function zeroAt(out: Float32Array, vertices: Uint32Array, count: number): void {
     out[i] = out[i + 1] = out[i + 2] = 0;
   }
 }
+
+/** Milliseconds from a monotonic clock (performance.now exists in browsers, workers and Node). */
+const now = (): number => performance.now();

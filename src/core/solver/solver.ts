@@ -210,7 +210,7 @@ export class SkinSolver {
       activeCandidates: c.activeCandidates,
       activeCandidateStart: c.activeCandidateStart,
     };
-    this.passes = new FramePasses(this.parts);
+    this.passes = new FramePasses(this.parts, this.lips, this.region.inside);
     this.setParameters(options.parameters ?? {});
     this.updateMuscles();
   }
@@ -375,28 +375,8 @@ export class SkinSolver {
       this.relaxation.motionFrames < START_MOMENTUM_FRAMES ? p.startMomentum : p.momentum,
       foldMomentum,
     );
-    for (let it = 0; it < p.positionIterations; it++) {
-      let t0 = now();
-      this.passes.projectPositions(this.region.count, p);
-      let t1 = now();
-      time.positions += t1 - t0;
-      t0 = t1;
-      this.passes.projectLengths(p.lengthIterations, p);
-      t1 = now();
-      time.lengths += t1 - t0;
-      // A motion's first frame from rest checks every triangle and so starts the watched set (see ORIENT_WATCH).
-      this.passes.projectOrientation(this.watchFresh ? ORIENT_FULL : ORIENT_WATCHED);
-      t0 = now();
-      time.orientation += t0 - t1;
-      t1 = t0;
-      this.passes.projectBending(p, this.maxBendPasses, this.region.count);
-      t0 = now();
-      time.bending += t0 - t1;
-      this.passes.projectCollisions();
-      // On this thread alone, with the partner idle between jobs: a few hundred pairs.
-      this.lips?.project(this.buffers.positions, this.region.inside);
-      time.collisions += now() - t0;
-    }
+    // A motion's first frame from rest checks every triangle and so starts the watched set (see ORIENT_WATCH).
+    this.passes.iterate(p, this.maxBendPasses, this.region.count, this.watchFresh ? ORIENT_FULL : ORIENT_WATCHED, time);
     this.watchFresh = false;
     // Dense fans (the mouth's corners) need a few passes to untangle. After the relaxation, which blends two shapes
     // and so could turn a sliver over, the passes hold only half the bound: whole-bound passes there undid the
