@@ -3,11 +3,15 @@ import { expect, test } from './fixtures';
 
 /** Frames of still gaze the test wants to see (in at least two stretches) before it stops watching. */
 const STILL_FRAMES = 30;
-/** The longest the test watches for them (ms). */
-const WATCH_MS = 25_000;
+/**
+ * The longest the test watches for them (ms). The watch ends as soon as it has seen them (6 to 9 s beside another
+ * browser test); a machine busier than that lowers the animation frame rate, so that each fixation spans fewer frames
+ * (a run beside two other solvers saw 8 still frames in 25 s).
+ */
+const WATCH_MS = 50_000;
 
 test('between saccades and blinks the eyes hold still, and the view draws nothing for them', async ({ page }) => {
-  test.setTimeout(60_000);
+  test.setTimeout(90_000);
   await openFace(page, '/?resolution=low');
   await page.evaluate(() => window.face.settle(30_000));
   const seen = await page.evaluate(
@@ -34,7 +38,7 @@ test('between saccades and blinks the eyes hold still, and the view draws nothin
       let from = -1;
       let drawsBefore = 0;
       let drawsAtLast = 0;
-      // Watched until two still stretches of 30 frames in all (draws counted in them) and a move, for up to 25 s: the
+      // Watched until two still stretches of 30 frames in all (draws counted in them) and a move, for up to 50 s: the
       // frames come at the animation frame rate, which a busy machine lowers (three watches beside another browser test
       // took 6.3 and 8.7 s, and one ran out at 10 s with stretches of 14, 6 and 1 frames).
       const enough = (): boolean => still.length >= 2 && still.reduce((n, [f]) => n + f, 0) >= STILL_FRAMES && drawsWhileMoving > 0;
