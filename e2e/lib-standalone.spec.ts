@@ -52,7 +52,9 @@ test('the standalone module runs on a static host under a strict content securit
   expect([...new Set(asked.map((path) => path.replace(/-[\w-]{8}\.js$/, '.js')))].sort()).toEqual([
     '/lib/environment/room.pmrem',
     '/lib/face-options.js',
+    '/lib/head-pose.js',
     '/lib/models/head-low.glb',
+    '/lib/neck-carry.js',
     '/lib/rigs/default.json',
     '/lib/softface.standalone.js',
     '/lib/spawn-skin-worker-inline.js',

@@ -25,7 +25,6 @@ import {
 import { MainBackend } from './main-backend';
 import type { RigEdit, SolverClock, SolverMode } from '../shared/protocol';
 import { SharedBackend } from './shared-backend';
-import { SolverHost } from '../shared/solver-host';
 import { TransferBackend } from './transfer-backend';
 import { WorkerConnection } from './worker-connection';
 
@@ -142,6 +141,9 @@ export class SkinSimulation {
       muscles,
     };
     if (mode === 'main') {
+      // The solver's own code is a chunk of its own: the worker modes carry theirs in the worker, so a page that never
+      // asks for the main thread does not download it.
+      const { SolverHost } = await import('../shared/solver-host');
       const host = new SolverHost(skin);
       const t = host.topology;
       const mainLayout = controlLayout(t.vertexCount, contractionCapacity(muscles.length));
