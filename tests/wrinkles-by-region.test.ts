@@ -7,7 +7,7 @@ import { FrontSampler, foldLines, regionFolds, type FoldRegion, type RegionFolds
 // and nowhere else). Each region must fold with its unit and stay smooth at neutral and with units that do not act on
 // it. Some units fold a neighbour's region as real faces do (AU4 the nose root, AU12 the chin's sides), so "unrelated"
 // is chosen per region.
-const EXPRESSIONS = ['neutral', 'AU1+AU2', 'AU4', 'AU6', 'AU9', 'AU12', 'AU17', 'AU18', 'happiness', 'AU15', 'AU16'] as const;
+const EXPRESSIONS = ['neutral', 'AU1+AU2', 'AU4', 'AU6', 'AU9', 'AU12', 'AU17', 'AU18', 'happiness', 'AU15', 'AU16', 'disgust'] as const;
 type Expression = (typeof EXPRESSIONS)[number];
 const CASES: { region: keyof FoldRegions; folds: Expression; smooth: Expression[] }[] = [
   { region: 'forehead', folds: 'AU1+AU2', smooth: ['neutral', 'AU6', 'AU9', 'AU12', 'AU17', 'AU18'] },
@@ -19,9 +19,9 @@ const CASES: { region: keyof FoldRegions; folds: Expression; smooth: Expression[
 ];
 /**
  * Where the folds' spacing is read, and under what (issue: folds at the spacing of real wrinkles): lines across each
- * region's folds (tests/fixtures/region-folds.ts). Not yet held on the medium head: the chin under AU17 (5.7 mm, 16 %
- * of its folds' power under 4 mm) and under the lower lip with disgust (4.0 mm, 40 %, folds 0.11 mm deep); nor on
- * the high head in most regions (docs/solver-notes.md, "Fold spacing by region").
+ * region's folds (tests/fixtures/region-folds.ts). Not yet held on the medium head: the chin under AU17 (5.8 mm, 14 %
+ * of its folds' power under 4 mm). Under the lower lip with disgust the skin rippled 4.0 mm apart (40 % under 4 mm)
+ * while the skin at the teeth bent at most a quarter (docs/solver-notes.md, "The cap at the colliders by spacing").
  */
 const SPACING: { region: FoldRegion; under: Expression }[] = [
   { region: 'forehead', under: 'AU1+AU2' },
@@ -33,6 +33,7 @@ const SPACING: { region: FoldRegion; under: Expression }[] = [
   { region: 'nasolabial', under: 'happiness' },
   { region: 'underLowerLip', under: 'AU15' },
   { region: 'underLowerLip', under: 'AU16' },
+  { region: 'underLowerLip', under: 'disgust' },
   { region: 'aboveUpperLip', under: 'AU18' },
 ];
 /** Real wrinkles are at least this far apart (mm), and skin, not paper, keeps at most this share of its folds' power under 4 mm. */
@@ -56,7 +57,7 @@ describe('wrinkles by region, medium head, each Action Unit at full intensity', 
     const lines = foldLines(rest, sim.triangles);
     for (const e of EXPRESSIONS) {
       resetToRest(sim);
-      if (e === 'happiness') sim.expression.applyPreset(e, 1);
+      if (e === 'happiness' || e === 'disgust') sim.expression.applyPreset(e, 1);
       else if (e !== 'neutral') for (const au of e.split('+')) sim.expression.setActionUnit(au, 1);
       sim.apply();
       let frames = 0;

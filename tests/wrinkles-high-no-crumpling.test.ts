@@ -10,10 +10,10 @@ import { FrontSampler, foldLines, regionFolds, type FoldRegion, type RegionFolds
 //
 // Every region the folds are read in, under its Action Units. `folds`: the high head folds there (not left smooth);
 // `sameSpacing`: its folds are within a quarter of the medium head's spacing. Where either is false it does not hold
-// yet (high head, 2026-12-05): AU9 leaves the nose root all but smooth (0.02 mm; the medium head 0.10), and the folds
-// under the lower lip with disgust (19.2 mm, 0.07 deep, against 4.0 and 0.11), the nasolabial folds (14.0 and 14.2 mm
-// against 10.8), the nose root (17.5 against 10.4) and above the upper lip under AU18 (19.8 against 10.7) are longer
-// than the medium head's.
+// yet (high head, 2026-12-06): AU9 leaves the nose root all but smooth (0.02 mm; the medium head 0.10), disgust the
+// skin under the lower lip nearly so (0.058 mm, 14.1 mm apart; the medium head 0.10 mm, 12.4 mm apart), and the
+// nasolabial folds (14.0 and 14.2 mm against 10.8 and 10.7), the nose root (17.5 against 10.4) and above the upper lip
+// under AU18 (19.8 against 10.4) are longer than the medium head's.
 const CASES: { region: FoldRegion; under: string; folds: boolean; sameSpacing: boolean }[] = [
   { region: 'forehead', under: 'AU1+AU2', folds: true, sameSpacing: true },
   { region: 'glabella', under: 'AU4', folds: true, sameSpacing: true },
@@ -25,7 +25,7 @@ const CASES: { region: FoldRegion; under: string; folds: boolean; sameSpacing: b
   { region: 'chin', under: 'AU17', folds: true, sameSpacing: true },
   { region: 'underLowerLip', under: 'AU15', folds: true, sameSpacing: true },
   { region: 'underLowerLip', under: 'AU16', folds: true, sameSpacing: true },
-  { region: 'underLowerLip', under: 'disgust', folds: true, sameSpacing: false },
+  { region: 'underLowerLip', under: 'disgust', folds: false, sameSpacing: true },
   { region: 'aboveUpperLip', under: 'AU18', folds: true, sameSpacing: false },
 ];
 /** Real wrinkles are at least this far apart (mm), and skin, not paper, keeps at most this share of its folds' power under 4 mm. */

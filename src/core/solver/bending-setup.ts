@@ -23,21 +23,46 @@ export const BENDING_CALIBRATION = 6;
 const MAX_BENDING_SHARE = 0.35;
 
 /**
- * The most bending stiffness skin at a collider (and the ring around it) gets. The lids over the eyes and the lips
- * over the teeth are meshed finely, so bending there asks for whole-strength projections; those and the collider's
- * push, every outer iteration, hand the skin back and forth without end (docs/solver-notes.md, "Bending"). A quarter
- * keeps them converging; the folds there are set by the collider.
+ * The most bending stiffness fine skin at a collider (and the ring around it) gets, and the lips' red at any spacing.
+ * The lids over the eyes and the lips over the teeth are meshed finely, so bending there asks for whole-strength
+ * projections; those and the collider's push, every outer iteration, hand the skin back and forth without end
+ * (docs/solver-notes.md, "Bending"). A quarter keeps them converging; the folds there are set by the collider.
  */
 const COLLIDER_BENDING_STIFFNESS = 0.25;
+/**
+ * The most bending stiffness coarse skin at a collider gets, and the spacings (metres) between which the cap goes
+ * from COLLIDER_BENDING_STIFFNESS to it. Coarse skin capped at a quarter bends too weakly to keep its folds apart:
+ * under the lower lip the medium head's skin (1.3 to 1.9 mm apart) rippled 4 mm apart under disgust, with 40 % of its
+ * folds' power under 4 mm. The high head's (0.6 to 1.0 mm) tangles at more (docs/solver-notes.md, "The cap at the
+ * colliders by spacing").
+ */
+const COARSE_COLLIDER_BENDING_STIFFNESS = 0.4;
+const FINE_COLLIDER_SPACING = 0.0008;
+const COARSE_COLLIDER_SPACING = 0.0012;
+/**
+ * Skin within this height (metres) of the mouth's corners, the lips' red, keeps the quarter at any spacing. The red
+ * is thin and soft over the lip's muscle and gathers into fine lines when the lips purse (AU18); at the coarse cap it
+ * lost a fifth of those folds.
+ */
+const RED_REACH = 0.007;
+
+/** The most bending stiffness skin at a collider with this spacing gets: a quarter when fine, more when coarse. */
+export function colliderBendingCap(spacing: number): number {
+  const t = (spacing - FINE_COLLIDER_SPACING) / (COARSE_COLLIDER_SPACING - FINE_COLLIDER_SPACING);
+  const share = Math.min(1, Math.max(0, t));
+  return COLLIDER_BENDING_STIFFNESS + share * (COARSE_COLLIDER_BENDING_STIFFNESS - COLLIDER_BENDING_STIFFNESS);
+}
 
 /**
  * Sets each vertex's bending passes per outer iteration, its share per pass (`stiffness`) and its step per unit of the
- * constraint (`gain`) for the parameters `next`; returns the most passes any vertex takes.
+ * constraint (`gain`) for the parameters `next`; returns the most passes any vertex takes. `mouthHeight`: the mouth
+ * corners' height, null for a skin without a mouth.
  */
 export function setBendingShares(
   topology: SkinTopology,
   next: SkinParameters,
   colliderVertices: Uint32Array,
+  mouthHeight: number | null,
   bendPasses: Uint8Array,
   bendStiffness: Float32Array,
   bendGain: Float32Array,
@@ -56,8 +81,11 @@ export function setBendingShares(
   // Skin at a collider and the ring around it: one pass, see COLLIDER_BENDING_STIFFNESS.
   const start = topology.neighbourStart;
   const nb = topology.neighbours;
+  const rest = topology.rest;
   const cap = (v: number): void => {
-    bendStiffness[v] = Math.min(COLLIDER_BENDING_STIFFNESS, bendPasses[v] * bendStiffness[v]);
+    const red = mouthHeight !== null && Math.abs(rest[3 * v + 1] - mouthHeight) <= RED_REACH;
+    const most = red ? COLLIDER_BENDING_STIFFNESS : colliderBendingCap(topology.spacing[v]);
+    bendStiffness[v] = Math.min(most, bendPasses[v] * bendStiffness[v]);
     bendPasses[v] = 1;
   };
   for (let j = 0; j < colliderVertices.length; j++) {

@@ -104,6 +104,8 @@ export class SkinSolver {
   private readonly collisions: CollisionCandidates;
   /** The lips' contact across the slit; null without a mouth (see LipContact). */
   readonly lips: LipContact | null;
+  /** The mouth corners' height, where the lips' red keeps the colliders' finer bending cap; null without a mouth. */
+  private readonly mouthHeight: number | null;
   private inputsChanged = false;
   private asleep = true;
   /** Largest vertex move of the last frame, in model units. */
@@ -163,6 +165,7 @@ export class SkinSolver {
     const c = new CollisionCandidates(topology, options.colliders ?? [], memory);
     this.collisions = c;
     this.lips = options.mouth ? LipContact.find(topology.rest, topology.restNormals, options.mouth) : null;
+    this.mouthHeight = options.mouth ? (options.mouth.left[1] + options.mouth.right[1]) / 2 : null;
     const triangleCount = topology.triangles.length / 3;
     // Rounded up to whole words (see PartArrays.uncheckedWords); the flags past the last triangle stay 0.
     const unchecked = allocate(Uint8Array, 4 * Math.ceil(triangleCount / 4), memory);
@@ -229,6 +232,7 @@ export class SkinSolver {
       this.topology,
       next,
       this.collisions.colliderVertices,
+      this.mouthHeight,
       this.bendPasses,
       this.bendStiffness,
       this.bendGain,
