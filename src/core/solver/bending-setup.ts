@@ -40,9 +40,10 @@ const COARSE_COLLIDER_BENDING_STIFFNESS = 0.4;
 const FINE_COLLIDER_SPACING = 0.0008;
 const COARSE_COLLIDER_SPACING = 0.0012;
 /**
- * Skin within this height (metres) of the mouth's corners, the lips' red, keeps the quarter at any spacing. The red
- * is thin and soft over the lip's muscle and gathers into fine lines when the lips purse (AU18); at the coarse cap it
- * lost a fifth of those folds.
+ * Skin within this height (metres) of the mouth's corners keeps the quarter at any spacing: the lips' red, and the
+ * skin beside the corners at their height. The red is thin and soft over the lip's muscle and gathers into fine lines
+ * when the lips purse (AU18); at the coarse cap it lost a fifth of those folds. A band by height, not a map of the red:
+ * the head carries no such map, and the band's width (5, 7 or 9 mm) moved settling frame counts both ways.
  */
 const RED_REACH = 0.007;
 
