@@ -144,7 +144,8 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
 
   it('AU23 narrows and tightens the red: narrower, the corners drawn in, not pushed out', () => {
     const x = settle('AU23');
-    // 23 % narrower, corners 2.6 mm in, the lip centres 3.7 mm back (25 %, 5.1 and 1.2 before the red rolled in more).
+    // 24 % narrower, corners 1.4 mm in, the lip centres 3.7 mm back (23 %, 2.6 mm and as far back with a sideways
+    // share of 0.3, which buckled the red's margin at the slit into a saw-tooth).
     expect(ACTION_UNIT_MEASURES.AU23.read(lm, rest, x)).toBeGreaterThanOrEqual(20);
     expect(displacement(rest, x, lm.lipCorner).lateral).toBeLessThanOrEqual(-1);
     expect((displacement(rest, x, lm.upperLip).forward + displacement(rest, x, lm.lowerLip).forward) / 2).toBeLessThanOrEqual(0);
@@ -153,7 +154,7 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
   it("AU23 tightens the lips without pursing them: its red crinkles far less than AU18's pucker", () => {
     // FACS tells the tightener from the pucker by the lips' shape: taut and thinned, not gathered into folds. The red's
     // roughness (as for AU15 to AU17): AU18 0.30 mm; AU23 0.28 when its sphincter drew the lips along their length
-    // (sideways share 0.5, back 0.3), 0.14 now that it rolls the red in (0.3, 0.8).
+    // (sideways share 0.5, back 0.3), 0.14 now that it rolls the red in (0.15, 0.8).
     const pucker = redRoughness(rest, normals, sim.triangles, settle('AU18')).rms;
     expect(redRoughness(rest, normals, sim.triangles, settle('AU23')).rms).toBeLessThanOrEqual(0.5 * pucker);
   });
