@@ -114,6 +114,12 @@ describe('Action Units show their FACS appearance changes, medium head', () => {
     expect(scleraAboveIris(cues, settle('fear'))).toBeGreaterThanOrEqual(0.5);
   });
 
+  it("the anger prototype's AU5 raises the upper lid above its rest height, though its AU4 and AU7 push it down", () => {
+    // Anger's glare: the upper lid raised while the lower lid is tensed. With AU5 at C (0.5) against AU4 at E and AU7
+    // the lid sat 0.8 mm below its rest height; at E 0.64 mm above. At least a pixel of the default view (0.25 mm).
+    expect(scleraAboveIris(cues, settle('anger')) - scleraAboveIris(cues, rest)).toBeGreaterThanOrEqual(0.25);
+  });
+
   it('AU7 raises and straightens the lower lid and narrows the eye', () => {
     const x = settle('AU7');
     // The lower margin's sag below the chord of its ends: 1.8 mm at rest, 1.05 with AU7 (held before the cue was measured).
