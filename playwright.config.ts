@@ -1,4 +1,5 @@
 import { defineConfig, devices } from '@playwright/test';
+import { BROWSER_ARGS } from './scripts/browser.mjs';
 import { chromiumPath } from './scripts/chromium-path.mjs';
 
 /**
@@ -31,14 +32,8 @@ export default defineConfig({
     viewport: { width: 1024, height: 768 },
     launchOptions: {
       executablePath: chromiumPath(),
-      // WebGL through SwiftShader, and no background traffic toward hosts this machine cannot reach.
-      args: [
-        '--use-angle=swiftshader',
-        '--enable-unsafe-swiftshader',
-        '--disable-background-networking',
-        '--disable-component-update',
-        '--no-first-run',
-      ],
+      // WebGL through SwiftShader, no background traffic, no address-bar popups (see scripts/browser.mjs).
+      args: BROWSER_ARGS,
     },
   },
   projects: [

@@ -1,4 +1,5 @@
 import { chromium, type Browser } from '@playwright/test';
+import { BROWSER_ARGS } from '../scripts/browser.mjs';
 import { chromiumPath } from '../scripts/chromium-path.mjs';
 
 /**
@@ -9,8 +10,7 @@ export function launchWithFakeCamera(file?: string): Promise<Browser> {
   return chromium.launch({
     executablePath: chromiumPath(),
     args: [
-      '--use-angle=swiftshader',
-      '--enable-unsafe-swiftshader',
+      ...BROWSER_ARGS,
       '--use-fake-ui-for-media-stream',
       '--use-fake-device-for-media-stream',
       ...(file ? [`--use-file-for-fake-video-capture=${file}`] : []),

@@ -1,4 +1,5 @@
 import { defineConfig, devices } from '@playwright/test';
+import { BROWSER_ARGS } from '../browser.mjs';
 import { chromiumPath } from '../chromium-path.mjs';
 
 /**
@@ -23,13 +24,7 @@ export default defineConfig({
     deviceScaleFactor: 1,
     launchOptions: {
       executablePath: chromiumPath(),
-      args: [
-        '--use-angle=swiftshader',
-        '--enable-unsafe-swiftshader',
-        '--disable-background-networking',
-        '--disable-component-update',
-        '--no-first-run',
-      ],
+      args: BROWSER_ARGS,
     },
   },
   webServer: given
