@@ -178,14 +178,18 @@ try {
 
 const hit = (r) => r.meant !== null && r.top === r.meant;
 const mean = (xs) => (xs.length === 0 ? null : xs.reduce((a, b) => a + b, 0) / xs.length);
-/** How a group of presets reads: hits in front, presets read as meant in every view, hits over all views, mean p(meant). */
+/**
+ * How those of a group of presets that were rendered read (`--presets` may leave some out): hits in front, presets read
+ * as meant in every view, hits over all views, mean p(meant).
+ */
 function group(names) {
-  const of = rows.filter((r) => names.includes(r.preset));
+  const shown = names.filter((n) => rows.some((r) => r.preset === n));
+  const of = rows.filter((r) => shown.includes(r.preset));
   const front = of.filter((r) => r.view === 'front');
   return {
-    presets: names,
+    presets: shown,
     frontHits: front.filter(hit).length,
-    allViewsHits: names.filter((n) => of.filter((r) => r.preset === n).every(hit)).length,
+    allViewsHits: shown.filter((n) => of.filter((r) => r.preset === n).every(hit)).length,
     viewHits: of.filter(hit).length,
     views: of.length,
     meanMeantProbability: mean(of.map((r) => r.meantProbability ?? 0)),
