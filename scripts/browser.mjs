@@ -29,7 +29,8 @@ const PLAYWRIGHT_DISABLED_FEATURES = [
 
 /**
  * The address bar's WebUI popups, which Chromium 156 loads into a renderer of their own for every new window, that is
- * for every test's page: 1.5 to 2.9 CPU-seconds each time on the 2-core machine, half again a medium page's start.
+ * for every test's page: 1.4 to 2.9 CPU-seconds each time on the 2-core machine, a fifth to a third of what a medium
+ * page's own start costs.
  */
 const OMNIBOX_POPUPS = ['WebUIOmniboxPopup', 'WebUIOmniboxAimPopup'];
 
