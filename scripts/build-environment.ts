@@ -10,9 +10,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
-import { chromium } from '@playwright/test';
-import { BROWSER_ARGS } from './browser.mjs';
-import { chromiumPath } from './chromium-path.mjs';
+import { launchBrowser } from './browser.mjs';
 import { encodeEnvironment } from '../src/core/baked-environment';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -63,7 +61,7 @@ const server = createServer((req, res) => {
   res.writeHead(200, { 'content-type': 'text/javascript' }).end(body);
 });
 await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
-const browser = await chromium.launch({ executablePath: chromiumPath(), args: BROWSER_ARGS });
+const browser = await launchBrowser();
 try {
   const tab = await browser.newPage();
   tab.on('pageerror', (e) => console.error(`page error: ${e.message}`));
