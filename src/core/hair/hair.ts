@@ -16,6 +16,16 @@ export interface HairStrands {
   corners: Uint32Array;
   /** Per hair, the anchor point's barycentric weights in that triangle. */
   weights: Float32Array;
+  /**
+   * Per hair, three skin vertices (render order) a few millimetres around the anchor that set the hair's frame (see
+   * anchorFrame), or its anchor's corners again where none were found. Absent: the anchors' corners.
+   */
+  frameCorners?: Uint32Array;
+  /**
+   * Per hair, a point (xyz) the hair turns about, or NaN: an eye's centre for a lash, whose tarsal plate slides over
+   * the eyeball, so that the lash's normal is the eyeball's radius through its root (see anchorFrame).
+   */
+  pivots?: Float32Array;
   /** Per vertex, its place in the anchor's frame: along the tangent, the bitangent and the normal, in metres. */
   local: Float32Array;
   /** Per vertex, a brightness factor (hairs differ a little in colour, and tips are lighter than roots). */
@@ -28,9 +38,14 @@ export interface HairStrands {
 export const ROOT_VERTICES = 2;
 
 /**
- * The skin's frame at hair `h`'s anchor, into `out` (12 numbers): the anchor point, the tangent, the bitangent and
- * the unit normal (interpolated from the vertex normals). The tangent is the triangle's first edge made
- * perpendicular to the normal, so the frame turns with the skin patch around the hair.
+ * The skin's frame at hair `h`'s anchor, into `out` (15 numbers): the anchor point, the tangent, the bitangent, the
+ * unit normal and the skin's shading normal there (interpolated from the vertex normals). Where the hair has frame
+ * corners of its own (a triangle a few millimetres across around the anchor, see HairStrands.frameCorners), the frame
+ * is that triangle's: its normal and its first edge, so that skin folding within a millimetre of a lash's root (the
+ * lid margin under AU4 and AU7) does not fling the lash about, while the lid's turn and the brow's move still carry
+ * it. Else the normal is the shading normal and the tangent the anchor triangle's first edge made perpendicular to it.
+ * A hair with a pivot (a lash) takes as its normal the direction from the pivot to its anchor point: a lash grows
+ * from the stiff tarsal plate, which turns about the eye's centre with the lid, however the lid's skin bunches.
  */
 export function anchorFrame(
   h: HairStrands,
@@ -65,9 +80,53 @@ export function anchorFrame(
   nx /= n;
   ny /= n;
   nz /= n;
+  out[12] = nx;
+  out[13] = ny;
+  out[14] = nz;
   let tx = positions[i1] - positions[i0],
     ty = positions[i1 + 1] - positions[i0 + 1],
     tz = positions[i1 + 2] - positions[i0 + 2];
+  const F = h.frameCorners;
+  const own = F !== undefined && (F[3 * hair] !== h.corners[3 * hair] || F[3 * hair + 1] !== h.corners[3 * hair + 1]);
+  if (F && own) {
+    const f0 = 3 * F[3 * hair],
+      f1 = 3 * F[3 * hair + 1],
+      f2 = 3 * F[3 * hair + 2];
+    const ax = positions[f1] - positions[f0],
+      ay = positions[f1 + 1] - positions[f0 + 1],
+      az = positions[f1 + 2] - positions[f0 + 2];
+    const bx = positions[f2] - positions[f0],
+      by = positions[f2 + 1] - positions[f0 + 1],
+      bz = positions[f2 + 2] - positions[f0 + 2];
+    const cx = ay * bz - az * by,
+      cy = az * bx - ax * bz,
+      cz = ax * by - ay * bx;
+    const c = Math.sqrt(cx * cx + cy * cy + cz * cz);
+    // A frame triangle folded flat keeps the shading normal and the anchor's edge.
+    if (c > 1e-12) {
+      nx = cx / c;
+      ny = cy / c;
+      nz = cz / c;
+      tx = ax;
+      ty = ay;
+      tz = az;
+    }
+  }
+  const px = w0 * positions[i0] + w1 * positions[i1] + w2 * positions[i2];
+  const py = w0 * positions[i0 + 1] + w1 * positions[i1 + 1] + w2 * positions[i2 + 1];
+  const pz = w0 * positions[i0 + 2] + w1 * positions[i1 + 2] + w2 * positions[i2 + 2];
+  const P = h.pivots;
+  if (P && !Number.isNaN(P[3 * hair])) {
+    const rx = px - P[3 * hair],
+      ry = py - P[3 * hair + 1],
+      rz = pz - P[3 * hair + 2];
+    const r = Math.sqrt(rx * rx + ry * ry + rz * rz);
+    if (r > 1e-12) {
+      nx = rx / r;
+      ny = ry / r;
+      nz = rz / r;
+    }
+  }
   const along = tx * nx + ty * ny + tz * nz;
   tx -= along * nx;
   ty -= along * ny;
@@ -87,9 +146,9 @@ export function anchorFrame(
   tx /= t;
   ty /= t;
   tz /= t;
-  out[0] = w0 * positions[i0] + w1 * positions[i1] + w2 * positions[i2];
-  out[1] = w0 * positions[i0 + 1] + w1 * positions[i1 + 1] + w2 * positions[i2 + 1];
-  out[2] = w0 * positions[i0 + 2] + w1 * positions[i1 + 2] + w2 * positions[i2 + 2];
+  out[0] = px;
+  out[1] = py;
+  out[2] = pz;
   out[3] = tx;
   out[4] = ty;
   out[5] = tz;
@@ -101,7 +160,7 @@ export function anchorFrame(
   out[11] = nz;
 }
 
-const frame = new Float64Array(12);
+const frame = new Float64Array(15);
 
 /**
  * Poses the first `count` hairs on a skin (positions and normals, xyz per render vertex): writes each ribbon
@@ -132,6 +191,9 @@ export function poseHair(
     const nx = frame[9],
       ny = frame[10],
       nz = frame[11];
+    const sx = frame[12],
+      sy = frame[13],
+      sz = frame[14];
     const end = 3 * (hair + 1) * per;
     for (let o = 3 * hair * per; o < end; o += 3) {
       const lt = local[o],
@@ -140,9 +202,9 @@ export function poseHair(
       outPositions[o] = ax + lt * tx + lb * bx + ln * nx;
       outPositions[o + 1] = ay + lt * ty + lb * by + ln * ny;
       outPositions[o + 2] = az + lt * tz + lb * bz + ln * nz;
-      outNormals[o] = nx;
-      outNormals[o + 1] = ny;
-      outNormals[o + 2] = nz;
+      outNormals[o] = sx;
+      outNormals[o + 1] = sy;
+      outNormals[o + 2] = sz;
     }
   }
 }
@@ -156,6 +218,10 @@ export function strandsAtRest(
   hairs: readonly {
     corners: readonly [number, number, number];
     weights: readonly [number, number, number];
+    /** Three skin vertices around the anchor for the hair's frame (see HairStrands.frameCorners); absent: none. */
+    frame?: readonly [number, number, number];
+    /** The point the hair turns about (see HairStrands.pivots); absent: none. */
+    pivot?: readonly [number, number, number];
     vertices: ArrayLike<number>;
     shade: ArrayLike<number>;
   }[],
@@ -168,6 +234,8 @@ export function strandsAtRest(
     verticesPerHair,
     corners: new Uint32Array(3 * count),
     weights: new Float32Array(3 * count),
+    frameCorners: new Uint32Array(3 * count),
+    pivots: new Float32Array(3 * count).fill(NaN),
     local: new Float32Array(3 * count * verticesPerHair),
     shade: new Float32Array(count * verticesPerHair),
     indices: new Uint32Array(3 * count * ribbon.length),
@@ -175,9 +243,11 @@ export function strandsAtRest(
   hairs.forEach((hair, k) => {
     h.corners.set(hair.corners, 3 * k);
     h.weights.set(hair.weights, 3 * k);
+    h.frameCorners!.set(hair.frame ?? hair.corners, 3 * k);
+    if (hair.pivot) h.pivots!.set(hair.pivot, 3 * k);
     h.shade.set(hair.shade, k * verticesPerHair);
   });
-  const f = new Float64Array(12);
+  const f = new Float64Array(15);
   hairs.forEach((hair, k) => {
     anchorFrame(h, k, rest.positions, rest.normals, f);
     for (let v = 0; v < verticesPerHair; v++) {
