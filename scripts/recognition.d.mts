@@ -48,3 +48,21 @@ export interface Recognizer {
 
 /** Opens the recogniser in a new page of `browser` and loads its networks. */
 export declare function startRecognizer(browser: Browser | BrowserContext, options?: Partial<RecognizerSettings>): Promise<Recognizer>;
+
+/** The turns (degrees) around a view whose readings recognizeView averages. */
+export declare const VIEW_JITTER: readonly number[];
+
+/** One render's own reading in recognizeView: its turn from the view, its top class and probability (null: no face). */
+export interface JitterRead {
+  turn: number;
+  top: Label | null;
+  probability: number | null;
+}
+
+/** What the recogniser reads of a view: the class probabilities averaged over renders turned by `jitter` around `yaw`. */
+export declare function recognizeView(
+  page: Page,
+  recognizer: Recognizer,
+  yaw: number,
+  jitter?: readonly number[],
+): Promise<Recognition & { png: Buffer | null; reads: JitterRead[] }>;

@@ -22,6 +22,8 @@
  *   --light JSON          light options for every render (face.setLight), e.g. '{"keyAzimuth":0}'; default the app's
  *   --appearance JSON     appearance options for every render (face.setAppearance), e.g. '{"lashes":false}'
  *   --presets a,b,...     only these presets (and neutral)
+ *   --jitter -1,0,1       the turns (degrees) around each view whose readings are averaged (default -1,0,1; 0 alone:
+ *                         one render a view; see VIEW_JITTER in recognition.mjs)
  *   --out PATH            where the results go: PATH.json and PATH.md (default bench-results/recognition)
  *   --no-build            serve the last build (dist/) as it is
  */
@@ -37,8 +39,9 @@ import {
   FACE_API_VERSION,
   HIDE_PANELS_CSS,
   VIEWS,
+  VIEW_JITTER,
   meantLabel,
-  renderView,
+  recognizeView,
   showExpression,
   startRecognizer,
 } from './recognition.mjs';
@@ -58,6 +61,9 @@ const sheetFile = option('sheet', null);
 const light = option('light', null);
 const appearance = option('appearance', null);
 const only = option('presets', null)?.split(',');
+const jitter = option('jitter', VIEW_JITTER.join(',')).split(',').map(Number);
+if (!jitter.includes(0) || jitter.some((t) => !Number.isFinite(t) || Math.abs(t) > 10))
+  throw new Error(`--jitter: turns in degrees, within 10 of the view and one of them 0, got ${option('jitter', '')}`);
 const out = option('out', 'bench-results/recognition');
 /** The sheet's tiles: neutral and the seven prototypes, front view. */
 const SHEET_PRESETS = ['neutral', 'happiness', 'sadness', 'surprise', 'fear', 'anger', 'disgust', 'contempt'];
@@ -104,9 +110,9 @@ try {
     const settled = await showExpression(page, preset, SETTLE_MS);
     const meant = meantLabel(preset);
     for (const { view, yaw } of VIEWS) {
-      const png = await renderView(page, yaw);
+      const r = await recognizeView(page, recognizer, yaw, jitter);
+      const png = r.png;
       if (imagesDir) writeFileSync(join(imagesDir, `${preset}_${view}.png`), png);
-      const r = await recognizer.recognize(png);
       if (sheetFile && view === 'front' && SHEET_PRESETS.includes(preset)) fronts.set(preset, { png, r, meant });
       const row = {
         preset,
@@ -120,10 +126,12 @@ try {
         meantProbability: meant && r.expressions ? r.expressions[meant] : null,
         expressions: r.expressions,
         box: r.box,
+        reads: r.reads,
       };
       rows.push(row);
       console.log(
-        `${preset} ${view}: ${r.detected ? `${r.top} ${r.probability.toFixed(2)}` : 'no face found'}${settled ? '' : ' (not settled)'}`,
+        `${preset} ${view}: ${r.detected ? `${r.top} ${r.probability.toFixed(2)}` : 'no face found'}${settled ? '' : ' (not settled)'}` +
+          (jitter.length > 1 ? ` (each: ${r.reads.map((x) => (x.top ? `${x.top} ${x.probability.toFixed(2)}` : 'none')).join(', ')})` : ''),
       );
     }
   }
@@ -240,7 +248,8 @@ const cell = (r) => {
 const presets = rows.map((r) => r.preset).filter((x, i, all) => all.indexOf(x) === i);
 const markdown = [
   "Each cell: the recogniser's top class and its probability, in bold where it is " +
-    "the meant class; otherwise the meant class's probability follows in brackets.",
+    "the meant class; otherwise the meant class's probability follows in brackets. " +
+    `Each view's probabilities are the mean over renders turned ${jitter.map((t) => `${t}°`).join(', ')} from it.`,
   '',
   '| preset | meant | front | 30° left | 30° right |',
   '| --- | --- | --- | --- | --- |',
@@ -254,10 +263,18 @@ const markdown = [
 if (args.includes('--markdown')) console.log(`\n${markdown}`);
 
 const seconds = (performance.now() - started) / 1000;
-console.log(`\n${rows.length} renders in ${Math.round(seconds)} s`);
+console.log(`\n${rows.length} views (${rows.length * jitter.length} renders) in ${Math.round(seconds)} s`);
 mkdirSync(dirname(out), { recursive: true });
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length };
-const recogniser = { faceApi: FACE_API_VERSION, detector, crop, backend, expression: 'FaceExpressionNet', minScore: DEFAULTS.minScore };
+const recogniser = {
+  faceApi: FACE_API_VERSION,
+  detector,
+  crop,
+  backend,
+  expression: 'FaceExpressionNet',
+  minScore: DEFAULTS.minScore,
+  jitter,
+};
 const lightUsed = light ? JSON.parse(light) : 'default';
 writeFileSync(
   `${out}.json`,

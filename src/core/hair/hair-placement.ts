@@ -159,7 +159,7 @@ function anchor(s: HairSurface, hit: FrontHit): Pick<LaidHair, 'corners' | 'weig
   return { corners: [s.triangles[t], s.triangles[t + 1], s.triangles[t + 2]], weights: [hit.w0, hit.w1, hit.w2] };
 }
 
-/** How far from a hair's root (in eye widths) the skin vertices lie that set its frame: about 3 mm. */
+/** How far from a lash's root (in eye widths) the skin vertices lie that set its frame: about 3 mm. */
 const FRAME_REACH = 0.1;
 
 /**
@@ -286,12 +286,10 @@ export function placeBrows(
       const d2 = [Math.cos(rad) * e.u[0] + Math.sin(rad) * e.v[0], Math.cos(rad) * e.u[1] + Math.sin(rad) * e.v[1]];
       const length =
         e.width * (BROW.lengthHead + (BROW.lengthBody - BROW.lengthHead) * smooth(s / 0.3)) * (1 + BROW.lengthSpread * (random() - 0.5));
-      const [xa, ya] = at(e, a - FRAME_REACH, b);
-      const [xb, yb] = at(e, a + FRAME_REACH, b);
-      const [xc, yc] = at(e, a, b + FRAME_REACH);
+      // A brow hair keeps its own triangle's frame: where the skin under the brow folds (AU4 bunches the brow's
+      // head), its hairs tilt with the fold; a frame 3 mm across turned twice as many of them past 45 degrees.
       const laid: LaidHair = {
         ...anchor(surface, hit),
-        frame: frameAround(surface, caster, hit, [xa, ya, xb, yb, xc, yc], 2 * FRAME_REACH * e.width),
         vertices: new Float32Array(3 * VERTICES_PER_HAIR),
         shade: new Float32Array(VERTICES_PER_HAIR),
       };
