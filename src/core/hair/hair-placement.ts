@@ -100,7 +100,7 @@ const MARGIN_STEP = 0.0001;
 interface LaidHair {
   corners: [number, number, number];
   weights: [number, number, number];
-  frame?: [number, number, number];
+  tangentEnds?: [number, number];
   pivot?: [number, number, number];
   vertices: Float32Array;
   shade: Float32Array;
@@ -159,34 +159,23 @@ function anchor(s: HairSurface, hit: FrontHit): Pick<LaidHair, 'corners' | 'weig
   return { corners: [s.triangles[t], s.triangles[t + 1], s.triangles[t + 2]], weights: [hit.w0, hit.w1, hit.w2] };
 }
 
-/** How far from a lash's root (in eye widths) the skin vertices lie that set its frame: about 3 mm. */
-const FRAME_REACH = 0.1;
+/** How far either side of a lash's root (in eye widths) the margin's vertices lie that set its tangent: about 3 mm. */
+const TANGENT_REACH = 0.1;
 
 /**
- * The skin vertices nearest three front-view points around a hair's root (`points`, xy pairs) as a frame triangle
- * (see HairStrands.frameCorners), wound so that its normal points out of the skin at `hit`; undefined where a point
- * misses the skin, falls more than `reach` deeper or shallower than the root (into an eye's opening), or two points
- * find one vertex.
+ * The skin vertices nearest two front-view points either side of a hair's root (`points`, xy pairs), for its tangent
+ * (see HairStrands.tangentEnds); undefined where a point misses the skin, falls more than `reach` deeper or shallower
+ * than the root (into an eye's opening), or both find one vertex.
  */
-function frameAround(s: HairSurface, caster: FrontCaster, hit: FrontHit, points: number[], reach: number): LaidHair['frame'] {
+function tangentEndsAround(s: HairSurface, caster: FrontCaster, hit: FrontHit, points: number[], reach: number): LaidHair['tangentEnds'] {
   const probe: FrontHit = { triangle: 0, w0: 0, w1: 0, w2: 0, z: 0 };
   const found: number[] = [];
-  for (let k = 0; k < 3; k++) {
+  for (let k = 0; k < 2; k++) {
     if (!caster.cast(points[2 * k], points[2 * k + 1], probe) || Math.abs(probe.z - hit.z) > reach) return undefined;
-    const t = 3 * probe.triangle;
     const w = [probe.w0, probe.w1, probe.w2];
-    const nearest = w[0] >= w[1] && w[0] >= w[2] ? 0 : w[1] >= w[2] ? 1 : 2;
-    found.push(s.triangles[t + nearest]);
+    found.push(s.triangles[3 * probe.triangle + (w[0] >= w[1] && w[0] >= w[2] ? 0 : w[1] >= w[2] ? 1 : 2)]);
   }
-  const [a, b, c] = found;
-  if (a === b || b === c || a === c) return undefined;
-  const P = s.positions;
-  const u = [P[3 * b] - P[3 * a], P[3 * b + 1] - P[3 * a + 1], P[3 * b + 2] - P[3 * a + 2]];
-  const v = [P[3 * c] - P[3 * a], P[3 * c + 1] - P[3 * a + 1], P[3 * c + 2] - P[3 * a + 2]];
-  const n = [0, 0, 0];
-  hitNormal(s, hit, n);
-  const side = cross(u, v);
-  return side[0] * n[0] + side[1] * n[1] + side[2] * n[2] >= 0 ? [a, b, c] : [a, c, b];
+  return found[0] === found[1] ? undefined : [found[0], found[1]];
 }
 
 /** The centre of the eye nearest the front-view point (x, y), or undefined without eyes. */
@@ -498,14 +487,13 @@ export function placeLashes(
           line = lidLine(surface, caster, x, y, length, [-up[0] + fan * lateral[0], -up[1] + fan * lateral[1]]);
         }
         if (!line) continue;
-        // The frame: along the margin both ways at the root's inset, and onto the lid's front.
+        // The tangent: along the margin both ways, at the root's inset.
         const inset = b - interpolate(margin.a, margin[lid], a);
-        const [xa, ya] = at(e, a - FRAME_REACH, interpolate(margin.a, margin[lid], a - FRAME_REACH) + inset);
-        const [xb, yb] = at(e, a + FRAME_REACH, interpolate(margin.a, margin[lid], a + FRAME_REACH) + inset);
-        const [xc, yc] = at(e, a, b + sign * FRAME_REACH);
+        const [xa, ya] = at(e, a - TANGENT_REACH, interpolate(margin.a, margin[lid], a - TANGENT_REACH) + inset);
+        const [xb, yb] = at(e, a + TANGENT_REACH, interpolate(margin.a, margin[lid], a + TANGENT_REACH) + inset);
         const laid: LaidHair = {
           ...anchor(surface, hit),
-          frame: frameAround(surface, caster, hit, [xa, ya, xb, yb, xc, yc], 2 * FRAME_REACH * e.width),
+          tangentEnds: tangentEndsAround(surface, caster, hit, [xa, ya, xb, yb], 2 * TANGENT_REACH * e.width),
           pivot: nearestEye(eyes, x, y),
           vertices: new Float32Array(3 * VERTICES_PER_HAIR),
           shade: new Float32Array(VERTICES_PER_HAIR),

@@ -17,10 +17,10 @@ export interface HairStrands {
   /** Per hair, the anchor point's barycentric weights in that triangle. */
   weights: Float32Array;
   /**
-   * Per hair, three skin vertices (render order) a few millimetres around the anchor that set the hair's frame (see
-   * anchorFrame), or its anchor's corners again where none were found. Absent: the anchors' corners.
+   * Per hair, two skin vertices (render order) whose difference sets the hair's tangent (see anchorFrame): for a lash,
+   * the lid margin 3 mm either side of its root; the same vertex twice where there are none. Absent: none.
    */
-  frameCorners?: Uint32Array;
+  tangentEnds?: Uint32Array;
   /**
    * Per hair, a point (xyz) the hair turns about, or NaN: an eye's centre for a lash, whose tarsal plate slides over
    * the eyeball, so that the lash's normal is the eyeball's radius through its root (see anchorFrame).
@@ -39,13 +39,12 @@ export const ROOT_VERTICES = 2;
 
 /**
  * The skin's frame at hair `h`'s anchor, into `out` (15 numbers): the anchor point, the tangent, the bitangent, the
- * unit normal and the skin's shading normal there (interpolated from the vertex normals). Where the hair has frame
- * corners of its own (a triangle a few millimetres across around the anchor, see HairStrands.frameCorners), the frame
- * is that triangle's: its normal and its first edge, so that skin folding within a millimetre of a lash's root (the
- * lid margin under AU4 and AU7) does not fling the lash about, while the lid's turn and the brow's move still carry
- * it. Else the normal is the shading normal and the tangent the anchor triangle's first edge made perpendicular to it.
- * A hair with a pivot (a lash) takes as its normal the direction from the pivot to its anchor point: a lash grows
- * from the stiff tarsal plate, which turns about the eye's centre with the lid, however the lid's skin bunches.
+ * unit normal and the skin's shading normal there (interpolated from the vertex normals). The normal is the shading
+ * normal, or for a hair with a pivot (a lash) the direction from the pivot to the anchor point: a lash grows from the
+ * stiff tarsal plate, which slides over the eyeball and turns about its centre with the lid, however the lid's skin
+ * bunches at the margin (under AU4 and AU7 the margin's own triangles turn over). The tangent is the hair's tangent
+ * ends' difference (a lash's: along the margin, 3 mm either side), or else the anchor triangle's first edge, made
+ * perpendicular to the normal; so the frame turns with the skin patch around the hair.
  */
 export function anchorFrame(
   h: HairStrands,
@@ -86,31 +85,13 @@ export function anchorFrame(
   let tx = positions[i1] - positions[i0],
     ty = positions[i1 + 1] - positions[i0 + 1],
     tz = positions[i1 + 2] - positions[i0 + 2];
-  const F = h.frameCorners;
-  const own = F !== undefined && (F[3 * hair] !== h.corners[3 * hair] || F[3 * hair + 1] !== h.corners[3 * hair + 1]);
-  if (F && own) {
-    const f0 = 3 * F[3 * hair],
-      f1 = 3 * F[3 * hair + 1],
-      f2 = 3 * F[3 * hair + 2];
-    const ax = positions[f1] - positions[f0],
-      ay = positions[f1 + 1] - positions[f0 + 1],
-      az = positions[f1 + 2] - positions[f0 + 2];
-    const bx = positions[f2] - positions[f0],
-      by = positions[f2 + 1] - positions[f0 + 1],
-      bz = positions[f2 + 2] - positions[f0 + 2];
-    const cx = ay * bz - az * by,
-      cy = az * bx - ax * bz,
-      cz = ax * by - ay * bx;
-    const c = Math.sqrt(cx * cx + cy * cy + cz * cz);
-    // A frame triangle folded flat keeps the shading normal and the anchor's edge.
-    if (c > 1e-12) {
-      nx = cx / c;
-      ny = cy / c;
-      nz = cz / c;
-      tx = ax;
-      ty = ay;
-      tz = az;
-    }
+  const E = h.tangentEnds;
+  if (E && E[2 * hair] !== E[2 * hair + 1]) {
+    const e0 = 3 * E[2 * hair],
+      e1 = 3 * E[2 * hair + 1];
+    tx = positions[e1] - positions[e0];
+    ty = positions[e1 + 1] - positions[e0 + 1];
+    tz = positions[e1 + 2] - positions[e0 + 2];
   }
   const px = w0 * positions[i0] + w1 * positions[i1] + w2 * positions[i2];
   const py = w0 * positions[i0 + 1] + w1 * positions[i1 + 1] + w2 * positions[i2 + 1];
@@ -218,8 +199,8 @@ export function strandsAtRest(
   hairs: readonly {
     corners: readonly [number, number, number];
     weights: readonly [number, number, number];
-    /** Three skin vertices around the anchor for the hair's frame (see HairStrands.frameCorners); absent: none. */
-    frame?: readonly [number, number, number];
+    /** Two skin vertices whose difference sets the hair's tangent (see HairStrands.tangentEnds); absent: none. */
+    tangentEnds?: readonly [number, number];
     /** The point the hair turns about (see HairStrands.pivots); absent: none. */
     pivot?: readonly [number, number, number];
     vertices: ArrayLike<number>;
@@ -234,7 +215,7 @@ export function strandsAtRest(
     verticesPerHair,
     corners: new Uint32Array(3 * count),
     weights: new Float32Array(3 * count),
-    frameCorners: new Uint32Array(3 * count),
+    tangentEnds: new Uint32Array(2 * count),
     pivots: new Float32Array(3 * count).fill(NaN),
     local: new Float32Array(3 * count * verticesPerHair),
     shade: new Float32Array(count * verticesPerHair),
@@ -243,7 +224,7 @@ export function strandsAtRest(
   hairs.forEach((hair, k) => {
     h.corners.set(hair.corners, 3 * k);
     h.weights.set(hair.weights, 3 * k);
-    h.frameCorners!.set(hair.frame ?? hair.corners, 3 * k);
+    h.tangentEnds!.set(hair.tangentEnds ?? [hair.corners[0], hair.corners[0]], 2 * k);
     if (hair.pivot) h.pivots!.set(hair.pivot, 3 * k);
     h.shade.set(hair.shade, k * verticesPerHair);
   });
