@@ -6,6 +6,7 @@
  * same head gets the same hairs. Pure: no three.js, no DOM.
  */
 import { clamp01 } from '../math3';
+import { at, eyeFrame, findLidMargin, MARGIN_STEP } from './eye-frame';
 import { FrontCaster, type FrontHit } from './front-caster';
 import { ribbonTriangles, strandsAtRest, type HairStrands } from './hair';
 import { mulberry32 } from '../random';
@@ -91,11 +92,6 @@ const LASHES = {
   seed: 0x1a5e,
 } as const;
 
-/** A ray hit deeper than this behind the column's front falls into the eye's opening (the socket is 3 cm back). */
-const DEEP = 0.005;
-/** Step of the rays that look for the lid margins, in metres. */
-const MARGIN_STEP = 0.0001;
-
 /** A hair laid out in world space at rest, before it is anchored in its triangle's frame. */
 interface LaidHair {
   corners: [number, number, number];
@@ -104,30 +100,6 @@ interface LaidHair {
   pivot?: [number, number, number];
   vertices: Float32Array;
   shade: Float32Array;
-}
-
-/** One eye's frame in the front view: the inner corner, a unit vector along the eye and one up, and the eye's width. */
-interface EyeFrame {
-  x: number;
-  y: number;
-  u: [number, number];
-  v: [number, number];
-  width: number;
-}
-
-function eyeFrame(inner: Vec3, outer: Vec3): EyeFrame {
-  const dx = outer[0] - inner[0],
-    dy = outer[1] - inner[1];
-  const width = Math.hypot(dx, dy);
-  const u: [number, number] = [dx / width, dy / width];
-  // Up: the perpendicular that points to +y, whichever side the eye is on.
-  const v: [number, number] = u[0] >= 0 ? [-u[1], u[0]] : [u[1], -u[0]];
-  return { x: inner[0], y: inner[1], u, v, width };
-}
-
-/** The front-view point at (a, b) eye widths along and up from the inner corner. */
-function at(e: EyeFrame, a: number, b: number): [number, number] {
-  return [e.x + e.width * (a * e.u[0] + b * e.v[0]), e.y + e.width * (a * e.u[1] + b * e.v[1])];
 }
 
 function smooth(t: number): number {
@@ -311,52 +283,6 @@ export function placeBrows(
   return strandsAtRest(surface, shuffle(hairs, random), VERTICES_PER_HAIR, RIBBON);
 }
 
-/** A lid margin as the rays found it: per column across the eye, where along the eye (a) and up (b), in eye widths. */
-export interface LidMargin {
-  a: number[];
-  upper: number[];
-  lower: number[];
-}
-
-/**
- * Finds an eye's lid margins: in columns across the eye, rays from the front step up and down from the corners'
- * line; where they fall deep (into the opening, past the eyeball to the socket, or through nothing) is the opening,
- * and the first ray above and below it that meets the lid's front is the margin.
- */
-function findLidMargin(caster: FrontCaster, e: EyeFrame, columns = 40): LidMargin {
-  const out: LidMargin = { a: [], upper: [], lower: [] };
-  const hit: FrontHit = { triangle: 0, w0: 0, w1: 0, w2: 0, z: 0 };
-  const reach = 0.4 * e.width;
-  const steps = Math.round(reach / MARGIN_STEP);
-  const z = new Float64Array(2 * steps + 1);
-  for (let c = 0; c < columns; c++) {
-    const a = 0.04 + (0.92 * c) / (columns - 1);
-    let front = -Infinity;
-    for (let i = -steps; i <= steps; i++) {
-      const [x, y] = at(e, a, (i * MARGIN_STEP) / e.width);
-      z[i + steps] = caster.cast(x, y, hit) ? hit.z : -Infinity;
-      front = Math.max(front, z[i + steps]);
-    }
-    const deep = (i: number): boolean => z[i + steps] < front - DEEP;
-    // The opening: the run of deep rays nearest the corners' line.
-    let start = NaN;
-    for (let r = 0; r <= steps / 2 && Number.isNaN(start); r++) {
-      if (deep(r)) start = r;
-      else if (deep(-r)) start = -r;
-    }
-    if (Number.isNaN(start)) continue;
-    let top = start,
-      bottom = start;
-    while (top < steps && deep(top + 1)) top++;
-    while (bottom > -steps && deep(bottom - 1)) bottom--;
-    if (top === steps || bottom === -steps) continue;
-    out.a.push(a);
-    out.upper.push(((top + 1) * MARGIN_STEP) / e.width);
-    out.lower.push(((bottom - 1) * MARGIN_STEP) / e.width);
-  }
-  return out;
-}
-
 /**
  * A lash's centre line from `root`: `length` long, leaving at `rootAngle` degrees from forward toward `up` and curling
  * to `tipAngle`, leaning `fan` toward `lateral`; null if a point of it lies behind the skin's front surface (inside the
@@ -505,6 +431,3 @@ export function placeLashes(
   }
   return strandsAtRest(surface, shuffle(hairs, random), VERTICES_PER_HAIR, RIBBON);
 }
-
-/** The eye's frame, for tests and tools that measure along an eye as the placement does. */
-export type { EyeFrame };
