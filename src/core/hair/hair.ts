@@ -1,9 +1,9 @@
 /**
  * Hair that rides a skin: each hair (a brow hair, a lash) is a thin ribbon anchored to one skin triangle by
  * barycentric weights, with its vertices stored in the frame the skin has at the anchor (the surface normal, a
- * tangent along the triangle's first edge, and their cross product). Posing the hair on a solved skin rebuilds each
- * frame from the skin's positions and normals, so a hair follows its patch of skin as it moves, turns and stretches;
- * the solver never sees the hair. Pure: no three.js, no DOM.
+ * tangent along the triangle's first edge, and their cross product; a lash's turns with its lid, see anchorFrame).
+ * Posing the hair on a solved skin rebuilds each frame from the skin's positions and normals, so a hair follows its
+ * patch of skin as it moves, turns and stretches; the solver never sees the hair. Pure: no three.js, no DOM.
  */
 
 /** Strands anchored to a skin: ribbons of `verticesPerHair` vertices each, in the frame of their anchor. */
