@@ -35,7 +35,7 @@ const POINTS = 4;
 function hairsOn(s: ReturnType<typeof sheet>, count: number, seed: number): { strands: HairStrands; world: Float32Array } {
   const random = mulberry32(seed);
   const hairs = [];
-  const frame = new Float64Array(12);
+  const frame = new Float64Array(15);
   for (let k = 0; k < count; k++) {
     const t = Math.floor(random() * (s.triangles.length / 3));
     const w0 = random(),

@@ -210,13 +210,15 @@ export function strandsAtRest(
   ribbon: readonly (readonly [number, number, number])[],
 ): HairStrands {
   const count = hairs.length;
+  const tangentEnds = new Uint32Array(2 * count);
+  const pivots = new Float32Array(3 * count).fill(NaN);
   const h: HairStrands = {
     count,
     verticesPerHair,
     corners: new Uint32Array(3 * count),
     weights: new Float32Array(3 * count),
-    tangentEnds: new Uint32Array(2 * count),
-    pivots: new Float32Array(3 * count).fill(NaN),
+    tangentEnds,
+    pivots,
     local: new Float32Array(3 * count * verticesPerHair),
     shade: new Float32Array(count * verticesPerHair),
     indices: new Uint32Array(3 * count * ribbon.length),
@@ -224,8 +226,8 @@ export function strandsAtRest(
   hairs.forEach((hair, k) => {
     h.corners.set(hair.corners, 3 * k);
     h.weights.set(hair.weights, 3 * k);
-    h.tangentEnds!.set(hair.tangentEnds ?? [hair.corners[0], hair.corners[0]], 2 * k);
-    if (hair.pivot) h.pivots!.set(hair.pivot, 3 * k);
+    tangentEnds.set(hair.tangentEnds ?? [hair.corners[0], hair.corners[0]], 2 * k);
+    if (hair.pivot) pivots.set(hair.pivot, 3 * k);
     h.shade.set(hair.shade, k * verticesPerHair);
   });
   const f = new Float64Array(15);
