@@ -173,7 +173,11 @@ export interface JawMuscle extends MuscleCommon {
    * face uses `lipFade` when it is given.
    */
   fade: number;
-  /** The top face's fade (metres, > 0): short, so the lips part cleanly while the skin around the jaw stretches. */
+  /**
+   * The top face's fade (metres, > 0): short, so the lips part cleanly while the skin around the jaw stretches. Put the
+   * top face between the lips and keep this under their gap, or the lower lip's top turns less than its body and is
+   * pulled long as the jaw opens.
+   */
   lipFade?: number;
 }
 
