@@ -1,7 +1,7 @@
 /**
  * Hair that rides a skin: each hair (a brow hair, a lash) is a thin ribbon anchored to one skin triangle by
  * barycentric weights, with its vertices stored in the frame the skin has at the anchor (the surface normal, a
- * tangent along the triangle's first edge, and their cross product; a lash's turns with its lid, see anchorFrame).
+ * tangent that turns with the triangle, and their cross product; a lash's turns with its lid, see anchorFrame).
  * Posing the hair on a solved skin rebuilds each frame from the skin's positions and normals, so a hair follows its
  * patch of skin as it moves, turns and stretches; the solver never sees the hair. Pure: no three.js, no DOM.
  */
@@ -26,6 +26,13 @@ export interface HairStrands {
    * the eyeball, so that the lash's normal is the eyeball's radius through its root (see anchorFrame).
    */
   pivots?: Float32Array;
+  /**
+   * Per hair, its anchor triangle's first two edges at rest in the rest frame, as 1 / a, c / a and 1 / d for the
+   * first edge's length a along the tangent and the second edge's parts c along the tangent and d along the
+   * bitangent; or NaN: a hair without tangent ends or pivot (a brow hair) then turns with the rotation part of its
+   * triangle's stretch, not with the first edge (see anchorFrame).
+   */
+  restEdges?: Float32Array;
   /** Per vertex, its place in the anchor's frame: along the tangent, the bitangent and the normal, in metres. */
   local: Float32Array;
   /** Per vertex, a brightness factor (hairs differ a little in colour, and tips are lighter than roots). */
@@ -44,7 +51,8 @@ export const ROOT_VERTICES = 2;
  * stiff tarsal plate, which slides over the eyeball and turns about its centre with the lid, however the lid's skin
  * bunches at the margin (under AU4 and AU7 the margin's own triangles turn over). The tangent is the hair's tangent
  * ends' difference (a lash's: along the margin, 3 mm either side), or else the anchor triangle's first edge, made
- * perpendicular to the normal; so the frame turns with the skin patch around the hair.
+ * perpendicular to the normal and, for a hair with `restEdges` (a brow hair), turned back by as much as that edge
+ * turned beyond the triangle's own rotation; so the frame turns with the skin patch around the hair.
  */
 export function anchorFrame(
   h: HairStrands,
@@ -127,6 +135,31 @@ export function anchorFrame(
   tx /= t;
   ty /= t;
   tz /= t;
+  const S = h.restEdges;
+  if (S && !Number.isNaN(S[3 * hair])) {
+    // The skin under a brow stretches a lot (closing the lid pulls it down over the eye) and its triangles shear: their
+    // first edge turns though the patch does not. The rotation part of the triangle's in-plane deformation gradient
+    // F (rest edges to current, in each one's frame; the polar decomposition's angle in 2D) turns the hair instead, as
+    // a stiff follicle in stretching tissue turns.
+    const vx = ny * tz - nz * ty,
+      vy = nz * tx - nx * tz,
+      vz = nx * ty - ny * tx;
+    const ex = positions[i2] - positions[i0],
+      ey = positions[i2 + 1] - positions[i0 + 1],
+      ez = positions[i2 + 2] - positions[i0 + 2];
+    const q = ex * tx + ey * ty + ez * tz;
+    const r = ex * vx + ey * vy + ez * vz;
+    // F = [[t / a, q / d - t c / (a d)], [0, r / d]]; its rotation turns by the angle of (F00 + F11, F10 - F01).
+    const cos = t * S[3 * hair] + r * S[3 * hair + 2];
+    const sin = (t * S[3 * hair + 1] - q) * S[3 * hair + 2];
+    const length = Math.sqrt(cos * cos + sin * sin);
+    if (length > 1e-9) {
+      const k = 1 / length;
+      tx = (cos * tx + sin * vx) * k;
+      ty = (cos * ty + sin * vy) * k;
+      tz = (cos * tz + sin * vz) * k;
+    }
+  }
   out[0] = px;
   out[1] = py;
   out[2] = pz;
@@ -212,6 +245,7 @@ export function strandsAtRest(
   const count = hairs.length;
   const tangentEnds = new Uint32Array(2 * count);
   const pivots = new Float32Array(3 * count).fill(NaN);
+  const restEdges = new Float32Array(3 * count).fill(NaN);
   const h: HairStrands = {
     count,
     verticesPerHair,
@@ -219,6 +253,7 @@ export function strandsAtRest(
     weights: new Float32Array(3 * count),
     tangentEnds,
     pivots,
+    restEdges,
     local: new Float32Array(3 * count * verticesPerHair),
     shade: new Float32Array(count * verticesPerHair),
     indices: new Uint32Array(3 * count * ribbon.length),
@@ -231,8 +266,19 @@ export function strandsAtRest(
     h.shade.set(hair.shade, k * verticesPerHair);
   });
   const f = new Float64Array(15);
+  const P = rest.positions;
   hairs.forEach((hair, k) => {
-    anchorFrame(h, k, rest.positions, rest.normals, f);
+    anchorFrame(h, k, P, rest.normals, f);
+    if (!hair.tangentEnds && !hair.pivot) {
+      const [i0, i1, i2] = hair.corners.map((c) => 3 * c);
+      const e1 = [P[i1] - P[i0], P[i1 + 1] - P[i0 + 1], P[i1 + 2] - P[i0 + 2]];
+      const e2 = [P[i2] - P[i0], P[i2 + 1] - P[i0 + 1], P[i2 + 2] - P[i0 + 2]];
+      const dot = (e: number[], o: number) => e[0] * f[o] + e[1] * f[o + 1] + e[2] * f[o + 2];
+      const d = dot(e2, 6);
+      // A sliver (no second edge across the first) keeps the first edge's frame.
+      const a = dot(e1, 3);
+      if (Math.abs(d) > 1e-9 && a > 1e-9) restEdges.set([1 / a, dot(e2, 3) / a, 1 / d], 3 * k);
+    }
     for (let v = 0; v < verticesPerHair; v++) {
       const dx = hair.vertices[3 * v] - f[0],
         dy = hair.vertices[3 * v + 1] - f[1],
