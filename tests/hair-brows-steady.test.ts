@@ -1,25 +1,10 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { poseHair, type HairStrands } from '../src/core/hair/hair';
+import type { HairStrands } from '../src/core/hair/hair';
 import { placeBrows } from '../src/core/hair/hair-placement';
 import { DEFAULT_LANDMARKS } from '../src/core/head/landmarks';
 import { loadHeadSkin } from './fixtures/head';
+import { rootsAndDirections } from './fixtures/hair';
 import { loadHeadSimulation, resetToRest } from './fixtures/head-simulation';
-
-/** Each hair's unit direction from root to tip, posed on a skin. */
-function directions(h: HairStrands, positions: Float32Array, normals: Float32Array): Float32Array {
-  const out = new Float32Array(3 * h.count * h.verticesPerHair);
-  poseHair(h, positions, normals, out, new Float32Array(out.length));
-  const per = h.verticesPerHair;
-  const d = new Float32Array(3 * h.count);
-  for (let k = 0; k < h.count; k++) {
-    const r = 3 * k * per;
-    const t = 3 * (k * per + per - 2);
-    const v = [0, 1, 2].map((c) => (out[t + c] + out[t + 3 + c] - out[r + c] - out[r + 3 + c]) / 2);
-    const l = Math.hypot(v[0], v[1], v[2]);
-    for (let c = 0; c < 3; c++) d[3 * k + c] = v[c] / l;
-  }
-  return d;
-}
 
 /**
  * A brow hair grows from a follicle held in the skin, which turns it as the skin patch turns. The skin under the brow
@@ -43,7 +28,7 @@ describe('brow hairs under the lids closing and the brows lowered (medium head)'
       for (let r = 0; r < map.length; r++) out.set(values.subarray(3 * map[r], 3 * map[r] + 3), 3 * r);
       return out;
     };
-    rest = directions(brows, render(sim.host.solver.buffers.positions), render(sim.host.solver.buffers.normals));
+    rest = rootsAndDirections(brows, render(sim.host.solver.buffers.positions), render(sim.host.solver.buffers.normals)).directions;
   });
 
   /** The largest turn of a brow hair, degrees, once `expression` at full intensity has settled from rest. */
@@ -54,7 +39,7 @@ describe('brow hairs under the lids closing and the brows lowered (medium head)'
     sim.apply();
     sim.host.run(600);
     expect(sim.host.solver.sleeping).toBe(true);
-    const now = directions(brows, render(sim.host.solver.buffers.positions), render(sim.host.solver.buffers.normals));
+    const now = rootsAndDirections(brows, render(sim.host.solver.buffers.positions), render(sim.host.solver.buffers.normals)).directions;
     let largest = 0;
     for (let k = 0; k < brows.count; k++) {
       const dot = rest[3 * k] * now[3 * k] + rest[3 * k + 1] * now[3 * k + 1] + rest[3 * k + 2] * now[3 * k + 2];

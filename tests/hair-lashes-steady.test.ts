@@ -1,34 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { poseHair, type HairStrands } from '../src/core/hair/hair';
 import { placeLashes } from '../src/core/hair/hair-placement';
 import { DEFAULT_LANDMARKS } from '../src/core/head/landmarks';
 import { loadHeadSkin } from './fixtures/head';
+import { rootsAndDirections } from './fixtures/hair';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
 /** Degrees between two unit vectors stored at `k` in `a` and `b` (xyz each). */
 function angle(a: Float32Array, b: Float32Array, k: number): number {
   const dot = a[3 * k] * b[3 * k] + a[3 * k + 1] * b[3 * k + 1] + a[3 * k + 2] * b[3 * k + 2];
   return (Math.acos(Math.min(1, dot)) * 180) / Math.PI;
-}
-
-/** Each hair's root (midpoint of its first two ribbon vertices) and unit direction from root to tip, posed on a skin. */
-function rootsAndDirections(h: HairStrands, positions: Float32Array, normals: Float32Array) {
-  const out = new Float32Array(3 * h.count * h.verticesPerHair);
-  poseHair(h, positions, normals, out, new Float32Array(out.length));
-  const per = h.verticesPerHair;
-  const roots = new Float32Array(3 * h.count);
-  const directions = new Float32Array(3 * h.count);
-  for (let k = 0; k < h.count; k++) {
-    const r = 3 * k * per;
-    const t = 3 * (k * per + per - 2);
-    const d = [0, 1, 2].map((c) => (out[t + c] + out[t + 3 + c] - out[r + c] - out[r + 3 + c]) / 2);
-    const l = Math.hypot(d[0], d[1], d[2]);
-    for (let c = 0; c < 3; c++) {
-      roots[3 * k + c] = (out[r + c] + out[r + 3 + c]) / 2;
-      directions[3 * k + c] = d[c] / l;
-    }
-  }
-  return { roots, directions };
 }
 
 /**
