@@ -1,3 +1,4 @@
+import type { Mesh } from 'three';
 import { checkObject, refusal } from '../core/check';
 import {
   AXES,
@@ -26,6 +27,7 @@ import type { Identity, NamedIdentity } from '../core/head/identity';
 import { parseRig } from '../core/rig/rig-schema';
 import type { Rig, Vec3 } from '../core/rig/rig-types';
 import { warpRig } from '../core/rig/rig-warp';
+import { fitJawToSkinLips } from '../core/rig/jaw-lips';
 import { fitThinPlate } from '../core/head/thin-plate';
 import { buildLoadedHead, readHeadScene, skinOf, type HeadFile, type PartSources } from '../render/head-import';
 import { disposeHead, loadHeadModel, type HeadModel } from '../render/head-model';
@@ -263,7 +265,18 @@ export async function prepareHead(
     throw error;
   }
   const { head, sources } = built;
-  return { head, level, sources, rig, landmarks, transform, files, options };
+  return { head, level, sources, rig: jawOnLips(rig, head.skin, landmarks), landmarks, transform, files, options };
+}
+
+/**
+ * A carried rig with its jaw's top face put back in the gap between the shown skin's lips at rest (see
+ * `fitJawToLips`); as it is where the lips have no gap at the midline.
+ */
+export function jawOnLips(rig: Rig, skin: Mesh, landmarks: Landmarks): Rig {
+  const geometry = skin.geometry;
+  const positions = geometry.getAttribute('position').array;
+  const normals = geometry.getAttribute('normal').array;
+  return fitJawToSkinLips(rig, positions, normals, landmarks['mouth-l'], landmarks['mouth-r']);
 }
 
 /**

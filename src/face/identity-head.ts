@@ -10,7 +10,7 @@ import { warpRig } from '../core/rig/rig-warp';
 import { headSceneFromSpec } from '../render/head-from-spec';
 import { headModelOf } from '../render/head-model';
 import type { IdentityBuild } from '../sim/main/identity-builder';
-import { LOAD_HEAD_DEFAULTS, type PreparedHead } from './head-loader';
+import { jawOnLips, LOAD_HEAD_DEFAULTS, type PreparedHead } from './head-loader';
 
 /**
  * An identity's head ready to show: the built head as three.js objects, and the rig and landmarks of the default head
@@ -19,13 +19,14 @@ import { LOAD_HEAD_DEFAULTS, type PreparedHead } from './head-loader';
  */
 export function prepareIdentityHead(build: IdentityBuild, named: NamedIdentity, original: Rig, level: HeadLevel): PreparedHead {
   const warp = fitIdentityWarp(build.base, build.moved);
-  const rig = parseRig(warpRig(original, warp), `identity ${named.name}: the rig carried over`);
+  const carried = parseRig(warpRig(original, warp), `identity ${named.name}: the rig carried over`);
   const landmarks = Object.fromEntries(LANDMARK_NAMES.map((n) => [n, warpPoint(warp, DEFAULT_LANDMARKS[n])])) as Landmarks;
   const head = headModelOf(
     headSceneFromSpec(build.head.root, build.head.sceneExtras),
     `identity ${named.name}`,
     identityLook(named.identity),
   );
+  const rig = jawOnLips(carried, head.skin, landmarks);
   return {
     head,
     level,
