@@ -19,8 +19,9 @@ const GAP_SHARE = 0.8;
  */
 export function fitJawToLips(rig: Rig, upper: Vec3, lower: Vec3): Rig {
   if (!rig.muscles.some((m) => m.type === 'jaw')) return rig;
+  // A new document throughout: the input rig shares no muscle with it.
   const out = structuredClone(rig);
-  out.muscles = rig.muscles.map((m) => (m.type === 'jaw' ? jawToLips(m, upper, lower) : m));
+  out.muscles = out.muscles.map((m) => (m.type === 'jaw' ? jawToLips(m, upper, lower) : m));
   return out;
 }
 
@@ -45,7 +46,7 @@ function jawToLips(m: JawMuscle, upper: Vec3, lower: Vec3): JawMuscle {
   if (!(top > bottom)) return m;
   const shift = (top + bottom) / 2;
   const back = m.size[2] / 2;
-  const j = structuredClone(m);
+  const j = { ...m };
   // The hinge stays where it was, also where it was the back face's centre by default.
   j.joint = m.joint ?? [m.center[0] - back * R[2], m.center[1] - back * R[5], m.center[2] - back * R[8]];
   j.center = [m.center[0] + shift * R[1], m.center[1] + shift * R[4], m.center[2] + shift * R[7]].map(roundLength) as Vec3;
