@@ -1,43 +1,7 @@
 import type { Page } from '@playwright/test';
-import { openFace } from './face';
+import { mouthBox, openFace, type Box } from './face';
 import { expect, measurePNG, test } from './fixtures';
 import { stillScreenshot } from './panels';
-
-interface Box {
-  x: number;
-  y: number;
-  width: number;
-  height: number;
-}
-
-/**
- * The mouth's box on the page (client pixels), from points of the rig projected to the screen: centred across on the
- * lips' sphincter, from a little above the lips' parting line to well below it (the jaw opens downward), sized from
- * the distance between the eye sphincters' centres.
- */
-async function mouthBox(page: Page): Promise<Box> {
-  return page.evaluate(() => {
-    const face = window.face;
-    const rig = face.getRig();
-    const centre = (name: string): number[] => {
-      const m = rig.muscles.find((x) => x.name === name);
-      if (!m || m.type === 'linear') throw new Error(`mouthBox: the rig has no sphincter named ${name}`);
-      return m.center;
-    };
-    const at = (name: string) => {
-      const p = face.locateMuscle(name);
-      if (!p) throw new Error(`mouthBox: ${name} is not on the page`);
-      return p;
-    };
-    const mouth = at('orbicularis-oris-tightener');
-    const left = at('orbicularis-oculi-orbital-l');
-    const right = at('orbicularis-oculi-orbital-r');
-    const perMetre =
-      Math.hypot(left.x - right.x, left.y - right.y) /
-      Math.abs(centre('orbicularis-oculi-orbital-l')[0] - centre('orbicularis-oculi-orbital-r')[0]);
-    return { x: mouth.x - 0.028 * perMetre, y: mouth.y - 0.012 * perMetre, width: 0.056 * perMetre, height: 0.04 * perMetre };
-  });
-}
 
 /**
  * Pixels of tooth colour in a box of the page: light and nearly grey (enamel is off-white; skin, lips, gums and

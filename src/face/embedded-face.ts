@@ -7,7 +7,7 @@ import { disposeHead, fetchModel, type HeadModel } from '../render/head-model';
 import { HeadView } from '../render/head-view';
 import { MuscleView } from '../render/muscle-view';
 import { HairView } from '../render/hair-view';
-import { MouthShade, teethShades } from '../render/mouth-shade';
+import { MouthShade } from '../render/mouth-shade';
 import { SkinView } from '../render/skin-view';
 import { HeadExporter } from '../render/gltf-export';
 import { SkinSimulation } from '../sim/main/skin-simulation';
@@ -328,9 +328,10 @@ export class EmbeddedFace {
     skinView.connect(simulation);
     const hair = head.hair;
     if (hair) own.push(skinView.follow(hair));
-    // The teeth and gums darken as the lips close over them.
+    // The teeth, gums and tongue are lit through the lips' opening.
     const landmarks = prepared?.landmarks ?? DEFAULT_LANDMARKS;
-    const mouth = new MouthShade(head.skin, landmarks['mouth-l'], landmarks['mouth-r'], teethShades(head.teeth));
+    const parts = head.tongue ? [...head.teeth, head.tongue] : head.teeth;
+    const mouth = new MouthShade(head.skin, landmarks['mouth-l'], landmarks['mouth-r'], parts);
     own.push(skinView.follow(mouth), () => mouth.dispose());
     own.push(
       this.view.onFrame(() => {

@@ -89,14 +89,16 @@ export function createHeadMaterials(skin: Partial<SkinLookOptions> = {}, iris: P
   const s: Required<SkinLookOptions> = { ...SKIN_LOOK_DEFAULTS, ...skin };
   const pores = poreTexture(poreMapOf(s.poreSeed), s.poreRepeat);
   pores.userData.seed = s.poreSeed;
+  // The teeth, gums and tongue are lit through one opening of the lips.
+  const mouth = createMouthOpeningUniforms(true);
   return {
     skin: createSkinMaterial(s, pores),
     sclera: createScleraMaterial(),
     iris: createIrisMaterial(iris),
     cornea: createCorneaMaterial(),
-    teeth: createTeethMaterial(),
-    gums: createGumsMaterial(),
-    tongue: createTongueMaterial(pores),
+    teeth: createTeethMaterial(mouth),
+    gums: createGumsMaterial(mouth),
+    tongue: createTongueMaterial(pores, mouth),
   };
 }
 
@@ -155,7 +157,7 @@ function createCorneaMaterial(): MeshPhysicalMaterial {
 }
 
 /** Teeth: off-white enamel, glossy, with light wrapping round their edges as through translucent enamel. */
-function createTeethMaterial(): MeshPhysicalMaterial {
+function createTeethMaterial(mouth: MouthOpeningUniforms): MeshPhysicalMaterial {
   const material = new MeshPhysicalMaterial({
     name: 'teeth',
     color: new Color(0.8, 0.75, 0.63),
@@ -163,11 +165,11 @@ function createTeethMaterial(): MeshPhysicalMaterial {
     ior: 1.55,
     side: DoubleSide,
   });
-  return addSubsurface(material, { wrap: [0.45, 0.4, 0.3], normalBlur: [0, 0, 0], cavity: 0 });
+  return addSubsurface(material, { wrap: [0.45, 0.4, 0.3], normalBlur: [0, 0, 0], cavity: 0 }, mouth);
 }
 
 /** Gums: pale coral pink, moist, with a reddish subsurface wrap like the lips'. */
-function createGumsMaterial(): MeshPhysicalMaterial {
+function createGumsMaterial(mouth: MouthOpeningUniforms): MeshPhysicalMaterial {
   const material = new MeshPhysicalMaterial({
     name: 'gums',
     color: new Color(0.62, 0.22, 0.22),
@@ -176,11 +178,11 @@ function createGumsMaterial(): MeshPhysicalMaterial {
     sheenColor: new Color(0.9, 0.55, 0.55),
     side: DoubleSide,
   });
-  return addSubsurface(material, { wrap: [0.5, 0.22, 0.2], normalBlur: [0, 0, 0], cavity: 0 });
+  return addSubsurface(material, { wrap: [0.5, 0.22, 0.2], normalBlur: [0, 0, 0], cavity: 0 }, mouth);
 }
 
 /** Tongue: pinkish red, moist but rough (papillae, from the pore map at a finer scale), with a soft sheen. */
-function createTongueMaterial(pores: Texture): MeshPhysicalMaterial {
+function createTongueMaterial(pores: Texture, mouth: MouthOpeningUniforms): MeshPhysicalMaterial {
   const papillae = pores.clone(); // shares the image and its GPU upload; only the repeat differs
   papillae.repeat.set(24, 24);
   const material = new MeshPhysicalMaterial({
@@ -193,7 +195,7 @@ function createTongueMaterial(pores: Texture): MeshPhysicalMaterial {
     normalMap: papillae,
     normalScale: new Vector2(0.8, 0.8),
   });
-  return addSubsurface(material, { wrap: [0.55, 0.25, 0.2], normalBlur: [0.6, 0.3, 0.2], cavity: 0.2 });
+  return addSubsurface(material, { wrap: [0.55, 0.25, 0.2], normalBlur: [0.6, 0.3, 0.2], cavity: 0.2 }, mouth);
 }
 
 /** The pore map made last, kept for the next head (another person, a second face on the page): read only. */
@@ -239,6 +241,63 @@ const DIRECT_IRRADIANCE = 'vec3 irradiance = dotNL * directLight.color;';
 const SHEEN_COMPENSATION = 'irradiance *= sheenEnergyComp;';
 const DIRECT_DIFFUSE = 'reflectedLight.directDiffuse += irradiance * diffuseBRDF * ( 1.0 - F );';
 
+/**
+ * Of the light that comes through the lips' opening, the share a point inside the mouth gets again after it scattered
+ * off the mouth's walls, for each unit of the opening's view factor: the key light lights what it cannot reach.
+ */
+const MOUTH_BOUNCE = 0.5;
+/** The room's light left deep in a closed mouth (scattered through the lips and cheeks): little. */
+const MOUTH_SCATTER = 0.1;
+/** Light scattered inside the mouth comes off red walls (linear RGB): the teeth in shade turn warm, not grey. */
+const MOUTH_TINT = [1, 0.55, 0.5] as const;
+
+const SUBSURFACE_UNIFORMS = 'uniform vec3 sfWrap;\nuniform vec3 sfNormalBlur;\nuniform float sfCavity;\n';
+
+/**
+ * Light inside the mouth comes in through the lips' opening only (the opening as measured by MouthShade, world space;
+ * `sfMouth` 1 for the teeth, gums and tongue, 0 for every other part). The same sums as core/head/mouth-opening.ts:
+ * the view factor of the opening (room light, and light scattered inside the mouth) and whether a light's ray crosses
+ * it (the key light). Without this the mouth's inside was lit as the face is, a pink, white-toothed cave.
+ */
+const MOUTH_OPENING_GLSL = `uniform float sfMouth;
+uniform vec3 sfMouthCentre;
+uniform vec3 sfMouthAcross;
+uniform vec3 sfMouthUp;
+uniform vec3 sfMouthOut;
+uniform vec2 sfMouthHalf;
+varying vec3 sfWorld;
+float sfMouthView;
+#define MOUTH_BOUNCE ( ${MOUTH_BOUNCE.toFixed(3)} * MOUTH_TINT )
+#define MOUTH_SCATTER ( ${MOUTH_SCATTER.toFixed(3)} * MOUTH_TINT )
+#define MOUTH_TINT vec3( ${MOUTH_TINT.map((c) => c.toFixed(3)).join(', ')} )
+float sfCorner( vec2 e ) {
+	vec2 s = sqrt( 1.0 + e * e );
+	return e.x / s.x * atan( e.y / s.x ) + e.y / s.y * atan( e.x / s.y );
+}
+float sfOpeningView() {
+	if ( sfMouth == 0.0 ) return 1.0;
+	vec3 r = sfWorld - sfMouthCentre;
+	float depth = max( - dot( r, sfMouthOut ), 2e-4 );
+	vec2 foot = vec2( dot( r, sfMouthAcross ), dot( r, sfMouthUp ) );
+	vec2 h = ${Math.sqrt(Math.PI) / 2} * sfMouthHalf;
+	vec2 lo = ( - h - foot ) / depth;
+	vec2 hi = ( h - foot ) / depth;
+	float f = sfCorner( hi ) - sfCorner( vec2( lo.x, hi.y ) ) - sfCorner( vec2( hi.x, lo.y ) ) + sfCorner( lo );
+	return clamp( f / ( 2.0 * PI ), 0.0, 1.0 );
+}
+float sfLightThrough( vec3 viewDirection ) {
+	if ( sfMouth == 0.0 ) return 1.0;
+	vec3 l = normalize( ( vec4( viewDirection, 0.0 ) * viewMatrix ).xyz );
+	vec3 r = sfWorld - sfMouthCentre;
+	float depth = max( - dot( r, sfMouthOut ), 2e-4 );
+	float c = dot( l, sfMouthOut );
+	if ( c < 0.05 ) return 0.0;
+	vec3 hit = r + l * ( depth / c );
+	vec2 q = vec2( dot( hit, sfMouthAcross ), dot( hit, sfMouthUp ) ) / max( sfMouthHalf, vec2( 1e-5 ) );
+	return 1.0 - smoothstep( 0.8, 1.2, length( q ) );
+}
+`;
+
 /** The physical lighting chunk with the wrapped, per-channel diffuse term. */
 const SUBSURFACE_LIGHTS = (() => {
   let chunk = ShaderChunk.lights_physical_pars_fragment;
@@ -250,39 +309,84 @@ const SUBSURFACE_LIGHTS = (() => {
 	// Subsurface look: diffuse light wraps past the terminator, red furthest, and uses a normal blurred toward the smooth one.
 	vec3 sfNL = mix( vec3( dot( geometryNormal, directLight.direction ) ),
 		vec3( dot( sfSmoothNormal, directLight.direction ) ), sfNormalBlur );
-	vec3 sfDiffuseIrradiance = saturate( ( sfNL + sfWrap ) / ( 1.0 + sfWrap ) ) * directLight.color;`,
+	vec3 sfDiffuseIrradiance = saturate( ( sfNL + sfWrap ) / ( 1.0 + sfWrap ) ) * directLight.color;
+	// Inside the mouth: the light through the lips' opening, and what of it the mouth scatters (sfMouthView).
+	float sfDirect = sfLightThrough( directLight.direction );
+	vec3 sfThrough = sfDirect + MOUTH_BOUNCE * sfMouthView * ( 1.0 - sfDirect );
+	irradiance *= sfThrough;
+	sfDiffuseIrradiance *= sfThrough;`,
     )
     .replace(SHEEN_COMPENSATION, `${SHEEN_COMPENSATION} sfDiffuseIrradiance *= sheenEnergyComp;`)
     .replace(DIRECT_DIFFUSE, 'reflectedLight.directDiffuse += sfDiffuseIrradiance * diffuseBRDF * ( 1.0 - F );');
-  const uniforms = 'uniform vec3 sfWrap;\nuniform vec3 sfNormalBlur;\nuniform float sfCavity;\nuniform float sfShade;\n';
-  return `${uniforms}vec3 sfSmoothNormal;\n${chunk}`;
+  return `${SUBSURFACE_UNIFORMS}${MOUTH_OPENING_GLSL}vec3 sfSmoothNormal;\n${chunk}`;
 })();
 
-/** Gives a physical material the subsurface look (wrap lighting, blurred diffuse normal, cavity darkening). */
-function addSubsurface<M extends MeshPhysicalMaterial>(material: M, options: SubsurfaceOptions): M {
+/** The uniforms of the lips' opening that light the inside of the mouth (see MOUTH_OPENING_GLSL), world space. */
+export interface MouthOpeningUniforms {
+  /** 1 for a part inside the mouth, lit through the opening only; 0 for any other. */
+  sfMouth: { value: number };
+  sfMouthCentre: { value: Vector3 };
+  sfMouthAcross: { value: Vector3 };
+  sfMouthUp: { value: Vector3 };
+  sfMouthOut: { value: Vector3 };
+  /** Half width and half height of the opening, metres. */
+  sfMouthHalf: { value: Vector2 };
+}
+
+/**
+ * Uniforms of a mouth opening: wide open in front of the origin until MouthShade measures the lips (so a part that is
+ * never measured, as in a picture without a skin, is lit as before).
+ */
+function createMouthOpeningUniforms(inside: boolean): MouthOpeningUniforms {
+  return {
+    sfMouth: { value: inside ? 1 : 0 },
+    sfMouthCentre: { value: new Vector3(0, 0, 10) },
+    sfMouthAcross: { value: new Vector3(1, 0, 0) },
+    sfMouthUp: { value: new Vector3(0, 1, 0) },
+    sfMouthOut: { value: new Vector3(0, 0, 1) },
+    sfMouthHalf: { value: new Vector2(100, 100) },
+  };
+}
+
+/**
+ * Gives a physical material the subsurface look (wrap lighting, blurred diffuse normal, cavity darkening); `mouth`, for
+ * the parts inside the mouth, is the opening they are lit through (shared by those parts, kept in `userData.mouth`).
+ */
+function addSubsurface<M extends MeshPhysicalMaterial>(material: M, options: SubsurfaceOptions, mouth?: MouthOpeningUniforms): M {
+  const opening = mouth ?? createMouthOpeningUniforms(false);
   const uniforms = {
     sfWrap: { value: new Vector3(...options.wrap) },
     sfNormalBlur: { value: new Vector3(...options.normalBlur) },
     sfCavity: { value: options.cavity },
-    // The light that reaches the part at all, 0..1: 1 but for the teeth and gums behind lips all but closed (MouthShade).
-    sfShade: { value: 1 },
+    ...opening,
   };
   material.userData.subsurface = { wrap: [...options.wrap], normalBlur: [...options.normalBlur], cavity: options.cavity };
-  material.userData.shade = uniforms.sfShade;
+  if (mouth) material.userData.mouth = mouth;
   material.onBeforeCompile = (shader: WebGLProgramParametersWithUniforms) => {
     if (!SUBSURFACE_LIGHTS) throw new Error('the subsurface look does not fit this three.js: its physical lighting chunk changed');
     Object.assign(shader.uniforms, uniforms);
+    shader.vertexShader = `varying vec3 sfWorld;\n${shader.vertexShader}`.replace(
+      '#include <project_vertex>',
+      '#include <project_vertex>\n\tsfWorld = ( modelMatrix * vec4( transformed, 1.0 ) ).xyz;',
+    );
     shader.fragmentShader = shader.fragmentShader
       .replace('#include <lights_physical_pars_fragment>', SUBSURFACE_LIGHTS)
       .replace(
         '#include <normal_fragment_maps>',
         `#include <normal_fragment_maps>
 	sfSmoothNormal = nonPerturbedNormal;
+	sfMouthView = sfOpeningView();
 	#ifdef USE_NORMALMAP_TANGENTSPACE
 		diffuseColor.rgb *= mix( 1.0, texture2D( normalMap, vNormalMapUv ).a, sfCavity );
 	#endif`,
       )
-      .replace('#include <opaque_fragment>', 'outgoingLight *= sfShade;\n#include <opaque_fragment>');
+      .replace(
+        '#include <aomap_fragment>',
+        `#include <aomap_fragment>
+	vec3 sfRoomLight = mix( MOUTH_SCATTER, vec3( 1.0 ), sfMouthView );
+	reflectedLight.indirectDiffuse *= sfRoomLight;
+	reflectedLight.indirectSpecular *= sfRoomLight;`,
+      );
   };
   // One program for every material with the look (their uniforms differ, their code does not).
   material.customProgramCacheKey = () => 'softface-subsurface';
