@@ -21,10 +21,16 @@ const FACING = 0.5;
  * The slit's two vertices for a skin's render `positions` and `normals` (xyz, metres, face toward +z, +y up) and its
  * mouth corners: of the vertices near the midline within REACH of the corners' height and in front of them, the
  * nearest pair of one facing down (the upper lip's underside) and one facing up (the lower lip's top). Null if a lip
- * has no such vertex.
+ * has no such vertex. `across` (metres, toward +x) reads the slit that far to the side of the midline instead.
  */
-export function findLipSlit(positions: ArrayLike<number>, normals: ArrayLike<number>, mouthL: Vec3, mouthR: Vec3): LipSlit | null {
-  const cx = 0.5 * (mouthL[0] + mouthR[0]);
+export function findLipSlit(
+  positions: ArrayLike<number>,
+  normals: ArrayLike<number>,
+  mouthL: Vec3,
+  mouthR: Vec3,
+  across = 0,
+): LipSlit | null {
+  const cx = 0.5 * (mouthL[0] + mouthR[0]) + across;
   const cy = 0.5 * (mouthL[1] + mouthR[1]);
   const cz = 0.5 * (mouthL[2] + mouthR[2]);
   const downs: number[] = [];

@@ -11,17 +11,24 @@ import type { JawMuscle, Rig, Vec3 } from './rig-types';
 
 /** Of the gap between the lips, the most the top face may sit above the lower lip (the rest is the upper lip's). */
 const GAP_SHARE = 0.8;
+/** Largest bend of the top face, metres (the rig's range allows 20 mm; a lip line falls a few). */
+const MAX_DROP = 0.01;
 
 /**
  * The rig with its jaw's top face `lipFade` above the lower lip's top at the midline (or 0.8 of the way to the upper
  * lip where the gap is narrower, the fade shortened to match), its bottom face where it was. `upper` and `lower` are
  * the slit's vertices on the two lips (see findLipSlit); with the lips pressed (no gap) the rig is returned as it is.
+ * `corners`, the mouth's corners, bend the face (`lipDrop`, `lipHalfWidth`) down (or up) to pass through them: a
+ * mouth whose line falls toward its corners otherwise has its corners and the upper lip's sides inside the box, and
+ * the opening jaw pulls the upper lip down with it. The box is levelled first (its hinge kept where it was): the warp turns
+ * it with the face's slope (up to 12 degrees forward and 3.6 of roll on the stock identities), and a tilted top face
+ * cut into the upper lip's inner side behind the slit, a rolled one into one corner.
  */
-export function fitJawToLips(rig: Rig, upper: Vec3, lower: Vec3): Rig {
+export function fitJawToLips(rig: Rig, upper: Vec3, lower: Vec3, corners: readonly Vec3[] = []): Rig {
   if (!rig.muscles.some((m) => m.type === 'jaw')) return rig;
   // A new document throughout: the input rig shares no muscle with it.
   const out = structuredClone(rig);
-  out.muscles = out.muscles.map((m) => (m.type === 'jaw' ? jawToLips(m, upper, lower) : m));
+  out.muscles = out.muscles.map((m) => (m.type === 'jaw' ? jawToLips(m, upper, lower, corners) : m));
   return out;
 }
 
@@ -30,20 +37,28 @@ export function fitJawToSkinLips(rig: Rig, positions: ArrayLike<number>, normals
   const slit = findLipSlit(positions, normals, mouthL, mouthR);
   if (!slit) return rig;
   const at = (v: number): Vec3 => [positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]];
-  return fitJawToLips(rig, at(slit.upper), at(slit.lower));
+  return fitJawToLips(rig, at(slit.upper), at(slit.lower), [mouthL, mouthR]);
 }
 
-function jawToLips(m: JawMuscle, upper: Vec3, lower: Vec3): JawMuscle {
+function jawToLips(carried: JawMuscle, upper: Vec3, lower: Vec3, corners: readonly Vec3[]): JawMuscle {
+  const R0 = new Array<number>(9);
+  eulerMatrix(carried.rotation, R0);
+  const back0 = carried.size[2] / 2;
+  const m: JawMuscle = {
+    ...carried,
+    joint: carried.joint ?? [carried.center[0] - back0 * R0[2], carried.center[1] - back0 * R0[5], carried.center[2] - back0 * R0[8]],
+    rotation: [0, 0, 0],
+  };
   const R = new Array<number>(9);
   eulerMatrix(m.rotation, R);
   // Heights along the box's local y axis (the rotation's second column), from its centre.
   const height = (p: Vec3): number => (p[0] - m.center[0]) * R[1] + (p[1] - m.center[1]) * R[4] + (p[2] - m.center[2]) * R[7];
   const gap = height(upper) - height(lower);
-  if (!(gap > 0)) return m;
+  if (!(gap > 0)) return carried;
   const fade = Math.min(m.lipFade ?? m.fade, GAP_SHARE * gap);
   const top = height(lower) + fade;
   const bottom = -m.size[1] / 2;
-  if (!(top > bottom)) return m;
+  if (!(top > bottom)) return carried;
   const shift = (top + bottom) / 2;
   const back = m.size[2] / 2;
   const j = { ...m };
@@ -52,6 +67,21 @@ function jawToLips(m: JawMuscle, upper: Vec3, lower: Vec3): JawMuscle {
   j.center = [m.center[0] + shift * R[1], m.center[1] + shift * R[4], m.center[2] + shift * R[7]].map(roundLength) as Vec3;
   j.size = [m.size[0], roundLength(top - bottom), m.size[2]];
   j.lipFade = Math.max(1e-6, roundLength(fade));
+  // The bend: the face through the corners, where the lips are one skin (the fade below them turns them part way).
+  // Read halfway to them instead, from the slit there, the face left the upper lip's sides inside the box on most
+  // stock identities (down 13 to 21 mm under AU27; through the corners 1 to 8).
+  if (corners.length > 0) {
+    let drop = 0;
+    let width = 0;
+    for (const c of corners) {
+      drop += top - height(c);
+      width += Math.abs((c[0] - m.center[0]) * R[0] + (c[1] - m.center[1]) * R[3] + (c[2] - m.center[2]) * R[6]);
+    }
+    if (width > 0) {
+      j.lipDrop = roundLength(Math.max(-MAX_DROP, Math.min(MAX_DROP, drop / corners.length)));
+      j.lipHalfWidth = roundLength(width / corners.length);
+    }
+  }
   return j;
 }
 

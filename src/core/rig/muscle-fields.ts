@@ -14,6 +14,7 @@ import {
   FRAME,
   HALF_PI,
   HALF_SIZE,
+  LIP_DROP,
   INVERSE_RADII,
   JAW,
   JOINT,
@@ -225,7 +226,9 @@ export function reaches(P: Float64Array, o: number, margin: number, x: number, y
   if (type === JAW) {
     return (
       Math.abs(qx) <= P[o + HALF_SIZE] + margin &&
-      Math.abs(qy) <= P[o + HALF_SIZE + 1] + margin &&
+      // A top face bent up toward the sides (a negative LIP_DROP) reaches above the box's half height.
+      qy <= P[o + HALF_SIZE + 1] + Math.max(0, -P[o + LIP_DROP]) + margin &&
+      -qy <= P[o + HALF_SIZE + 1] + margin &&
       Math.abs(qz) <= P[o + HALF_SIZE + 2] + margin
     );
   }

@@ -34,6 +34,8 @@ export const INNER_FRACTION = 29; // lid
 export const CURVE = 29; // jaw
 export const FADE = 30; // jaw, metres
 export const LIP_FADE = 31; // jaw, metres: the top face's fade
+export const LIP_DROP = 19; // jaw, metres: how far the top face bends down toward the sides
+export const LIP_INVERSE_HALF_WIDTH = 20; // jaw: 1 / the half width the top face bends over
 
 export const LINEAR = 0;
 export const SPHINCTER = 1;
@@ -97,7 +99,9 @@ export function packMuscle(m: Muscle, P: Float64Array, o: number): void {
     P[o + HALF_SIZE] = hx;
     P[o + HALF_SIZE + 1] = hy;
     P[o + HALF_SIZE + 2] = hz;
-    P[o + BOUND_SQUARED] = hx * hx + hy * hy + hz * hz;
+    // A top face bent up toward the sides (a negative lipDrop) reaches above the box's half height.
+    const hyTop = hy + Math.max(0, -(m.lipDrop ?? 0));
+    P[o + BOUND_SQUARED] = hx * hx + hyTop * hyTop + hz * hz;
     // The real hinge sits well above the lip line, so a box fitted to the moving skin gets its own joint.
     const joint = m.joint ?? [m.center[0] - hz * zx, m.center[1] - hz * zy, m.center[2] - hz * zz];
     P[o + JOINT] = joint[0];
@@ -107,6 +111,8 @@ export function packMuscle(m: Muscle, P: Float64Array, o: number): void {
     P[o + CURVE] = m.curve;
     P[o + FADE] = m.fade;
     P[o + LIP_FADE] = m.lipFade ?? m.fade;
+    P[o + LIP_DROP] = m.lipDrop ?? 0;
+    P[o + LIP_INVERSE_HALF_WIDTH] = 1 / (m.lipHalfWidth ?? hx);
     P[o + STRENGTH] = 1;
     P[o + NORMAL_SHARE] = 1;
   }

@@ -11,6 +11,8 @@ import type { Muscle, Vec3 } from './rig-types';
  * about 0.25 m across; a point kilometres away would make the solver's targets (and the skin) run off to infinity.
  */
 const MAX_RIG_DISTANCE = 10;
+/** Farthest a jaw's top face may bend down (or up) toward the mouth's corners, metres: a lip line, not a new box. */
+const MAX_LIP_DROP = 0.02;
 
 /** The accepted values of one number field (or of each number of an [x, y, z] field), and how the panel offers it. */
 export interface FieldRange {
@@ -114,6 +116,13 @@ export const MUSCLE_RANGES: { readonly [T in Muscle['type']]: Readonly<Record<Nu
     // Positive: without a fade the turn would stop in a step at the box's faces.
     fade: extent({ slider: [0.001, 0.05] }),
     lipFade: extent({ optional: true }),
+    lipDrop: {
+      range: [-MAX_LIP_DROP, MAX_LIP_DROP],
+      expected: `a length within ±${MAX_LIP_DROP} m`,
+      step: 0.0001,
+      optional: true,
+    },
+    lipHalfWidth: extent({ optional: true, slider: [0.005, 0.05] }),
   },
 };
 

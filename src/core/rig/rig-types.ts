@@ -179,6 +179,14 @@ export interface JawMuscle extends MuscleCommon {
    * pulled long as the jaw opens.
    */
   lipFade?: number;
+  /**
+   * How far the top face lies lower `lipHalfWidth` or more to either side of the box's centre line than on it, metres
+   * (negative: higher; default 0, a flat face): a parabola across the mouth, so that the face follows a lip line that
+   * falls (or rises) toward the mouth's corners instead of cutting through the upper lip's sides.
+   */
+  lipDrop?: number;
+  /** Half the width (metres, > 0) over which the top face bends by `lipDrop`; defaults to half the box's width. */
+  lipHalfWidth?: number;
 }
 
 /** A muscle of a rig, of any of the four kinds, told apart by its `type`. */

@@ -39,6 +39,8 @@ function warpMuscle(muscle: Muscle, warp: ThinPlateWarp): Muscle {
     m.size = [roundLength(m.size[0] * stretch[0]), roundLength(m.size[1] * stretch[1]), roundLength(m.size[2] * stretch[2])];
     m.fade = roundLength(m.fade * s);
     if (m.lipFade !== undefined) m.lipFade = roundLength(m.lipFade * s);
+    if (m.lipDrop !== undefined) m.lipDrop = roundLength(m.lipDrop * stretch[1]);
+    if (m.lipHalfWidth !== undefined) m.lipHalfWidth = roundLength(m.lipHalfWidth * stretch[0]);
   } else {
     m.radii = [roundLength(m.radii[0] * stretch[0]), roundLength(m.radii[1] * stretch[1]), roundLength(m.radii[2] * stretch[2])];
     if (m.type === 'sphincter') {

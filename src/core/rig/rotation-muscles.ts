@@ -14,7 +14,9 @@ import {
   JAW,
   JOINT,
   LID,
+  LIP_DROP,
   LIP_FADE,
+  LIP_INVERSE_HALF_WIDTH,
   MAX_ANGLE,
   TYPE,
 } from './muscle-packing';
@@ -79,7 +81,9 @@ function lidFalloff(P: Float64Array, o: number, qx: number, qy: number, qz: numb
  */
 function jawFalloff(P: Float64Array, o: number, qx: number, qy: number, qz: number): number {
   const gx = P[o + HALF_SIZE] - Math.abs(qx);
-  const gy = P[o + HALF_SIZE + 1] - Math.abs(qy);
+  // The top face follows the lip line: lower by LIP_DROP at the lip's half width and beyond, a parabola between.
+  const across = Math.min(1, (qx * P[o + LIP_INVERSE_HALF_WIDTH]) ** 2);
+  const gy = qy > 0 ? P[o + HALF_SIZE + 1] - P[o + LIP_DROP] * across - qy : P[o + HALF_SIZE + 1] + qy;
   const gz = P[o + HALF_SIZE + 2] - Math.abs(qz);
   if (gx <= 0 || gy <= 0 || gz <= 0) return 0;
   const fade = P[o + FADE];
