@@ -1,4 +1,4 @@
-import { Vector3, type BufferAttribute, type Material, type Mesh, type Object3D } from 'three';
+import { Vector3, type BufferAttribute, type Material, type Mesh, type Object3D, type WebGLRenderer } from 'three';
 import type { Vec3 } from '../core/rig/rig-types';
 import { findLipSlit, type LipSlit } from '../core/head/lip-slit';
 import {
@@ -29,7 +29,16 @@ export class MouthShade {
   private readonly opening = new Float64Array(MOUTH_OPENING_SIZE);
   private readonly meshes: Mesh[] = [];
   private readonly openings: MouthOpeningUniforms[] = [];
-  private readonly place = (): void => this.toWorld();
+  /** Hands the opening to the shader before the first of the parts is drawn in a frame (they share it). */
+  private readonly place = (renderer: WebGLRenderer): void => {
+    const frame = renderer.info.render.frame;
+    if (frame === this.placedFrame && renderer === this.placedBy) return;
+    this.placedFrame = frame;
+    this.placedBy = renderer;
+    this.toWorld();
+  };
+  private placedFrame = -1;
+  private placedBy: WebGLRenderer | null = null;
   private readonly axis = new Vector3();
 
   /**
@@ -74,6 +83,7 @@ export class MouthShade {
   dispose(): void {
     for (const mesh of this.meshes) if (mesh.onBeforeRender === this.place) mesh.onBeforeRender = () => {};
     for (const u of this.openings) u.sfMouth.value = 0;
+    this.placedBy = null;
   }
 
   private toWorld(): void {
