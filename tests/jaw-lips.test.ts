@@ -94,6 +94,26 @@ describe("the jaw's top face put between the lips", () => {
     expect(field.displace(1, ...lower, out)).toBeCloseTo(1, 6);
   });
 
+  it("tilts the box to part full lips whose underside falls behind the slit to the lower lip's height", () => {
+    const upper: Vec3 = [0, 0.6622, 0.15];
+    const lower: Vec3 = [0, 0.6612, 0.15];
+    // Behind the slit the upper lip's underside falls 0.9 mm in 3 mm; the lower lip's top falls faster.
+    const band = {
+      upper: [upper, [0, 0.6616, 0.1483], [0, 0.6613, 0.1469]] as Vec3[],
+      lower: [lower, [0, 0.661, 0.1497], [0, 0.6603, 0.1485], [0, 0.6594, 0.1475]] as Vec3[],
+    };
+    const level = new MuscleField(jawOf(fitJawToLips(rigOf(JAW), upper, lower)));
+    const fitted = jawOf(fitJawToLips(rigOf(JAW), upper, lower, [], band));
+    const tilted = new MuscleField(fitted);
+    const out = [0, 0, 0];
+    // Level, the upper lip's deepest underside lies inside the box; tilted back, none of it does.
+    expect(level.displace(1, ...band.upper[2], out)).toBeGreaterThan(0.5);
+    expect(fitted.rotation[0]).toBeLessThan(0);
+    expect(fitted.rotation[0]).toBeGreaterThanOrEqual(-12);
+    for (const p of band.upper) expect(tilted.displace(1, ...p, out)).toBe(0);
+    for (const p of band.lower) expect(tilted.displace(1, ...p, out)).toBeGreaterThan(0.99);
+  });
+
   it('leaves the rig as it is where the lips are pressed (no gap)', () => {
     const rig = rigOf(JAW);
     expect(fitJawToLips(rig, [0, 0.661, 0.15], [0, 0.6612, 0.15])).toEqual(rig);
@@ -122,9 +142,9 @@ describe('the jaw carried to each stock identity (medium head)', () => {
 // The opening jaw must not take the upper lip with it. With the warp's turn of the box kept (up to 12 degrees forward,
 // 3.6 degrees of roll) and a flat top face, under AU27 the upper lip's slit vertex went down 0.5 to 23.2 mm (mean 7.6)
 // and its sides, 0.7 of the way to the corners, 13 to 21 mm on most identities: a wall of red stretched from the nose
-// to the opening. The fit now levels the box and bends its top face through the mouth's corners: the middle 0.1 to
-// 10.5 mm (mean 2.2), the sides 1 to 8. Full lips whose corners lie well below the slit (five of the African
-// identities, 4.1 to 10.5 mm at the middle) still follow the jaw a little: seen, not mended.
+// to the opening. Levelled, its top face bent through the mouth's corners: the middle 0.1 to 10.5 mm (mean 2.2; full
+// lips whose underside falls behind the slit to the lower lip's height dipped in a V), the sides 1 to 8. Tilted to
+// part the lips' facing skin along the midline as well: the middle 0.1 to 0.5 mm, the sides 0.8 to 6.6.
 describe('the upper lip of each stock identity under AU27 (medium head)', () => {
   it('stays where it is on average, and nowhere goes down with the jaw', () => {
     const middles: number[] = [];
@@ -145,11 +165,11 @@ describe('the upper lip of each stock identity under AU27 (medium head)', () => 
       middles.push(middle);
       // The lower lip goes with the jaw (AU27's chin drop is 30 mm or more).
       expect(jaw, name).toBeGreaterThan(25);
-      // Half the lower lip's drop and more would be the upper lip carried as a whole; a quarter at its sides, a wall.
-      expect(middle, name).toBeLessThan(0.5 * jaw);
+      // The upper lip's middle stays (stretched a little at most); a quarter of the jaw's drop at its sides is a wall.
+      expect(middle, name).toBeLessThan(2);
       for (const side of sides) expect(side, name).toBeLessThan(0.25 * jaw);
     }
     console.log(`upper lip's slit vertex down under AU27 (mm): ${middles.map((d) => d.toFixed(1)).join(', ')}`);
-    expect(middles.reduce((s, d) => s + d, 0) / middles.length).toBeLessThan(4);
+    expect(middles.reduce((s, d) => s + d, 0) / middles.length).toBeLessThan(1);
   }, 300_000);
 });
