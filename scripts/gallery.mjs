@@ -26,7 +26,7 @@ const option = (name, fallback) => {
 const resolutions = (args[0] && !args[0].startsWith('--') ? args[0] : 'medium').split(',');
 const resolution = resolutions.join(' and ');
 const only = option('only', '').split(',').filter(Boolean);
-const out = option('out', 'docs/images/gallery.jpg');
+const out = option('out', args.includes('--identities') ? 'docs/images/identities.jpg' : 'docs/images/gallery.jpg');
 const columns = Number(option('columns', '6'));
 /** Page areas (CSS pixels of the 640 x 640 view) framing parts of the face; close-ups are shot at 3x. */
 const REGIONS = {
