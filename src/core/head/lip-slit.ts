@@ -11,11 +11,11 @@ export interface LipSlit {
 }
 
 /** How far from the midline (metres) a vertex may lie and count as on it. */
-const MIDLINE = 0.002;
+export const MIDLINE = 0.002;
 /** How far above and below the mouth corners' height (metres) the lips' vertices are looked for. */
 const REACH = 0.01;
 /** A lip's side of the slit faces the other lip: its normal's vertical part is at least this, down or up. */
-const FACING = 0.5;
+export const FACING = 0.5;
 
 /**
  * The slit's two vertices for a skin's render `positions` and `normals` (xyz, metres, face toward +z, +y up) and its

@@ -5,7 +5,7 @@
  * with the face inside the lower lip, its top band stays behind as the jaw opens and is pulled into a tall red wall.
  * Pure: no three.js, no DOM.
  */
-import { findLipSlit } from '../head/lip-slit';
+import { FACING, MIDLINE, findLipSlit } from '../head/lip-slit';
 import { eulerMatrix } from '../math3';
 import type { JawMuscle, Rig, Vec3 } from './rig-types';
 
@@ -20,10 +20,6 @@ const MAX_TILT = 12;
 const TILT_STEP = 0.25;
 /** How far behind the slit (metres) the lips' facing skin at the midline counts for the tilt. */
 const BAND_DEPTH = 0.004;
-/** How far from the midline (metres) a vertex may lie and count as on it (as for the slit). */
-const MIDLINE = 0.002;
-/** The lips' facing skin: a normal's vertical part at least this, down on the upper lip, up on the lower. */
-const FACING = 0.5;
 
 /** The lips' facing skin along the midline: the upper lip's underside and the lower lip's top, near the slit. */
 export interface LipBand {
@@ -97,10 +93,10 @@ function jawToLips(carried: JawMuscle, upper: Vec3, lower: Vec3, corners: readon
   const R0 = new Array<number>(9);
   eulerMatrix(carried.rotation, R0);
   const back0 = carried.size[2] / 2;
+  // Levelled, then tilted to the lips; the hinge stays where it was, also where it was the back face's centre by default.
   const m: JawMuscle = {
     ...carried,
     joint: carried.joint ?? [carried.center[0] - back0 * R0[2], carried.center[1] - back0 * R0[5], carried.center[2] - back0 * R0[8]],
-    rotation: [0, 0, 0],
   };
   m.rotation = [bandTilt(m, band), 0, 0];
   const R = new Array<number>(9);
@@ -124,10 +120,7 @@ function jawToLips(carried: JawMuscle, upper: Vec3, lower: Vec3, corners: readon
   const bottom = -m.size[1] / 2;
   if (!(top > bottom)) return carried;
   const shift = (top + bottom) / 2;
-  const back = m.size[2] / 2;
   const j = { ...m };
-  // The hinge stays where it was, also where it was the back face's centre by default.
-  j.joint = m.joint ?? [m.center[0] - back * R[2], m.center[1] - back * R[5], m.center[2] - back * R[8]];
   j.center = [m.center[0] + shift * R[1], m.center[1] + shift * R[4], m.center[2] + shift * R[7]].map(roundLength) as Vec3;
   j.size = [m.size[0], roundLength(top - bottom), m.size[2]];
   j.lipFade = Math.max(1e-6, roundLength(fade));
