@@ -47,6 +47,10 @@ export default defineConfig({
     // Vitest's default leaves a core to its main thread, which only waits here: on a 2-core machine that ran the
     // files one at a time.
     maxWorkers: availableParallelism(),
+    // Each worker runs its files one after another in one module graph: the solver's code stays compiled from file to
+    // file, and a file imports nothing again (all 896 tests 207 s instead of 276 here). The files share no state: the
+    // sources keep none at module level that a test changes, and no test mocks a module or stubs a global.
+    isolate: false,
     sequence: { sequencer: SlowFirstSequencer },
   },
 });
