@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 /**
  * Action Units move the skin where FACS says they do. Landmarks are the skin vertices nearest points on the default

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 test('setCamera turns the view about the head and moves it nearer; bad input throws naming it and changes nothing', async ({ page }) => {
   await openFace(page, '/?resolution=low');

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder } from './panels';
 
 test('a face that stands still draws no frames, and a change draws it again', async ({ page }) => {

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder, setSlider } from './panels';
 
 test('an EMFACS face is set by name from the handle and from the Presets folder, and a bad name changes nothing', async ({ page }) => {

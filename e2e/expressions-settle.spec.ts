@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 /**
  * Every Action Unit and every preset at full intensity, on the low-resolution head as the page runs it (solver in the

@@ -1,8 +1,21 @@
 import type { Page } from '@playwright/test';
 import { expect, waitForHead } from './fixtures';
 
+/**
+ * Pages that can show a test the face as a new page at a URL would, without loading it (see shared-app.ts): each
+ * opens the URL its own way and resolves once the face is ready.
+ */
+export const reopeners = new WeakMap<Page, (url: string) => Promise<void>>();
+
 /** Opens the page and waits until the head is shown and `window.face` is ready. */
 export async function openFace(page: Page, url: string): Promise<void> {
+  const reopen = reopeners.get(page);
+  if (reopen) await reopen(url);
+  else await loadFace(page, url);
+}
+
+/** Loads the page at `url` and waits until the head is shown and `window.face` is ready. */
+export async function loadFace(page: Page, url: string): Promise<void> {
   await page.goto(url);
   await waitForHead(page);
   await page.evaluate(() => window.face.ready);

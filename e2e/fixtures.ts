@@ -1,15 +1,22 @@
-import { test as base, expect, type JSHandle, type Page } from '@playwright/test';
+import { test as base, type ConsoleMessage, expect, type JSHandle, type Page } from '@playwright/test';
 
 /** Every test fails if the page logs a console error or throws. */
 export const test = base.extend<{ consoleErrors: string[] }>({
   consoleErrors: [
     async ({ page }, use) => {
       const errors: string[] = [];
-      page.on('console', (m) => {
+      const onConsole = (m: ConsoleMessage): void => {
         if (m.type() === 'error') errors.push(m.text());
-      });
-      page.on('pageerror', (e) => errors.push(e.message));
+      };
+      const onError = (e: Error): void => {
+        errors.push(e.message);
+      };
+      page.on('console', onConsole);
+      page.on('pageerror', onError);
       await use(errors);
+      // The page may outlive the test (see shared-app.ts): the next test counts its own errors.
+      page.off('console', onConsole);
+      page.off('pageerror', onError);
       expect(errors, 'console errors').toEqual([]);
     },
     { auto: true },

@@ -2,7 +2,7 @@ import { readFileSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 import { Mesh, type AnimationClip, type BufferAttribute, type Texture } from 'three';
 import { GLTFLoader, type GLTF } from 'three/examples/jsm/loaders/GLTFLoader.js';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { openFace } from './face';
 import { control, openFolder } from './panels';
 

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 /**
  * The brows and lashes ride the solved skin: after every Action Unit at full intensity, each drawn hair's root (the

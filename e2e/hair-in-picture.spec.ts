@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 /**
  * The brows and lashes are in the pictures the face saves: `savePNG` with them is darker where they grow than with

@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { NodeIO } from '@gltf-transform/core';
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 /**
  * The lashes stay out of the eyeballs and out of the lids' skin: with the lids wide open (AU5), closed (AU43) and at

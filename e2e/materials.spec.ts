@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 test('the skin has a pore normal map, sheen and the subsurface look; eyes, teeth, gums and tongue have their own materials', async ({
   page,

@@ -1,6 +1,7 @@
 import type { Page } from '@playwright/test';
 import { mouthBox, openFace, type Box } from './face';
-import { expect, measurePNG, test } from './fixtures';
+import { measurePNG } from './fixtures';
+import { expect, test } from './shared-app';
 import { stillScreenshot } from './panels';
 
 /**

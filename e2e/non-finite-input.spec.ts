@@ -1,5 +1,5 @@
 import { openFace, pullForehead } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 test('a non-finite input throws a clear error and the skin keeps its last good state', async ({ page }) => {
   test.setTimeout(90_000);

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder } from './panels';
 
 /** A short OpenFace 2 file: its real column names for the units, a few of the others, ", " between cells. */

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, faceCrop, pictureDifference, setSlider, settledSkin, sliderValue } from './panels';
 
 test('moving an Action Unit slider in the panel changes the skin and the picture, and its label shows the grade', async ({ page }) => {

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, faceCrop, openFolder, setSlider } from './panels';
 
 test.beforeEach(async ({ page }) => {

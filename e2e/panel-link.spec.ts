@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, setSlider, sliderValue } from './panels';
 
 test('linked sides move together; unlinked, a slider drives its own side only', async ({ page }) => {

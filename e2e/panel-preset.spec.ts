@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder, setSlider, settledSkin, sliderValue } from './panels';
 
 test('a preset slider sets the Action Units it names (presets add to the sliders), and reset zeroes everything', async ({ page }) => {

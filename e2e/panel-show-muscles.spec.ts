@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, faceCrop, openFolder, pictureDifference } from './panels';
 
 const shown = (page: import('@playwright/test').Page): Promise<string[]> => page.evaluate(() => window.face.describeMuscleDisplay());

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, sliderValue } from './panels';
 
 test.beforeEach(async ({ page }) => {

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, faceCrop, openFolder, pictureDifference } from './panels';
 
 test('the wireframe checkbox draws the head as edges: the background shows through the face', async ({ page }) => {

@@ -1,6 +1,6 @@
 import { readFile } from 'node:fs/promises';
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder } from './panels';
 
 const PNG_MAGIC = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];

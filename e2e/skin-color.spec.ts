@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { faceCrop, pictureDifference } from './panels';
 
 test('setAppearance({ skinColor }) darkens the skin as asked, stays in the link, and the default gives the first picture back', async ({

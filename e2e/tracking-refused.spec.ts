@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 test('a refused camera rejects startTracking with a clear message, and the face keeps its expression', async ({ page }) => {
   await openFace(page, '/?resolution=low');
