@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder } from './panels';
 
 test('the panel adds a muscle in front of the view, duplicates, renames, assigns and deletes it, and undo steps back through it', async ({

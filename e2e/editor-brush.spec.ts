@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control } from './panels';
 
 /** How far AU12 moved the left lip corner once settled (the vertex it moves farthest on the subject's left). */

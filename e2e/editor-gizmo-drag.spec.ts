@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control } from './panels';
 
 /** The left lip corner's settled position: the vertex the smile moved farthest on the subject's left. */

@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder } from './panels';
 
 const DEFAULT_TEXT = readFileSync(new URL('../public/rigs/default.json', import.meta.url), 'utf8');

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control, openFolder } from './panels';
 
 test("a name being typed into the muscle folder survives the face's other changes until Enter renames the muscle", async ({ page }) => {

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 import { control } from './panels';
 
 test('E switches the editor on, a click on a glyph selects it, the panels follow the handle, Escape clears it', async ({ page }) => {

@@ -1,5 +1,5 @@
 import { openFace } from './face';
-import { expect, test } from './fixtures';
+import { expect, test } from './shared-app';
 
 /**
  * Smiles with AU12, then moves the left zygomaticus major's insertion through the handle: the left lip corner comes

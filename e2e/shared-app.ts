@@ -11,9 +11,10 @@ import { test as base } from './fixtures';
  * test can read of that state against what it read when the page was new (see `snapshot`), loading the page after
  * all where anything differs. A test that failed leaves its page to no one.
  *
- * For files whose tests use the page only through the handle, the panels and the pictures: no `context` fixture, no
- * init scripts, routes or exposed functions (which stay with a page), no loaded heads or rig edits (which leave an
- * undo history that nothing can read back).
+ * For files whose tests use the page only through the handle, the panels, the editor and the pictures: no `context`
+ * fixture, no init scripts, routes or exposed functions (which stay with a page), no loaded heads, no reloads (an
+ * edited rig's autosave outlives the page). Rig edits are reverted and their undo history cleared.
+ * `SOFTFACE_E2E_SHARED_LOG=1` prints, for each `openFace`, whether the page was put back or loaded.
  */
 export const test = base.extend<object, { appPage: SharedAppPage }>({
   appPage: [
@@ -85,7 +86,11 @@ class SharedAppPage {
     const opened = this.opened;
     // A URL with a hash sets the face from it at load: only a load does that.
     // A test that navigated the page elsewhere left no face to put back: the restore throws, and the page loads.
-    if (opened && opened.url === url && !url.includes('#') && (await restore(page, opened.snapshot).catch(() => false))) return;
+    if (opened && opened.url === url && !url.includes('#') && (await restore(page, opened.snapshot).catch(() => false))) {
+      if (process.env.SOFTFACE_E2E_SHARED_LOG) console.log(`kept page: restored ${url}`);
+      return;
+    }
+    if (process.env.SOFTFACE_E2E_SHARED_LOG) console.log(`kept page: loaded ${url}${opened ? ` (had ${opened.url})` : ''}`);
     this.opened = null;
     await loadFace(page, url);
     this.opened = { url, snapshot: await snapshot(page) };
@@ -112,6 +117,15 @@ async function restore(page: Page, opened: Snapshot): Promise<boolean> {
     face.setBackground(o.background);
     face.setSkinParameters(o.skin);
     face.setMuscleDisplay(o.muscles);
+    // The editor as it was, and the rig the page started with, with no undo history (reverting is a step itself).
+    face.selectMuscle(null);
+    face.setPreviewContraction(o.editor.preview);
+    face.setGizmoMode(o.editor.mode);
+    face.setEditor(o.editor.on);
+    face.setMirrorEdits(o.mirror);
+    face.setBrush(o.brush);
+    if (face.isRigEdited()) face.revertRig();
+    face.clearRigHistory();
     if (document.activeElement instanceof HTMLElement) document.activeElement.blur();
     await face.settle(30_000);
   }, state);
@@ -143,6 +157,9 @@ interface OpenedOptions {
   background: string;
   skin: Parameters<Face['setSkinParameters']>[0];
   muscles: Parameters<Face['setMuscleDisplay']>[0];
+  editor: ReturnType<Face['describeEditor']>;
+  mirror: boolean;
+  brush: Parameters<Face['setBrush']>[0];
   folders: boolean[];
 }
 

@@ -76,6 +76,25 @@ describe('RigDocument edits', () => {
     expect((doc.muscle('zygomaticus-major-l') as LinearMuscle).insertion).toEqual(start);
   });
 
+  it('clears its history: undo and redo stop at the rig as it is, which stays; refused while an edit is open', () => {
+    const { doc } = open();
+    doc.updateMuscle('risorius-l', { strength: 0.2 });
+    doc.updateMuscle('risorius-l', { strength: 0.3 });
+    doc.undo();
+    const now = JSON.stringify(doc.rig);
+    expect(doc.historySizes()).toEqual({ undo: 1, redo: 1 });
+    doc.clearHistory();
+    expect(doc.historySizes()).toEqual({ undo: 0, redo: 0 });
+    expect(doc.undo()).toBe(false);
+    expect(doc.redo()).toBe(false);
+    expect(JSON.stringify(doc.rig)).toBe(now);
+    doc.begin();
+    doc.updateMuscle('risorius-l', { strength: 0.4 });
+    expect(thrown(() => doc.clearHistory()).message).toMatch(/^clearRigHistory: an edit is open/);
+    doc.end();
+    expect(doc.historySizes()).toEqual({ undo: 1, redo: 0 });
+  });
+
   it('keeps 100 steps of undo, each back to its own state', () => {
     const { doc } = open();
     const states = [JSON.stringify(doc.rig)];

@@ -89,6 +89,16 @@ export class RigController {
     return this.document().redo();
   }
 
+  /**
+   * Forgets the rig's undo and redo steps: undo then stops at the rig as it is now, as an editor's "clear history"
+   * does after a document is saved or loaded. Refused while an edit `beginEdit` started is open.
+   */
+  clearRigHistory(): void {
+    this.document().clearHistory();
+    // The panels' undo and redo counts.
+    this.parts.emit('editor');
+  }
+
   /** The current rig as a JSON document (the text a rig file holds). */
   exportRig(): string {
     return this.document().toJSON();
@@ -115,5 +125,6 @@ export const RIG_METHODS = [
   'endEdit',
   'undo',
   'redo',
+  'clearRigHistory',
   'exportRig',
 ] as const;

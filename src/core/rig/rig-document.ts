@@ -264,6 +264,12 @@ export class RigDocument {
     return this.history.sizes;
   }
 
+  /** Forgets every undo and redo step: undo then stops at the rig as it is now. Refused while an edit is open. */
+  clearHistory(): void {
+    if (this.history.inTransaction) throw new Error('clearRigHistory: an edit is open (beginEdit without endEdit)');
+    this.history.clear();
+  }
+
   /** Goes back one step; returns whether there was one. */
   undo(): boolean {
     const rig = this.history.undo(this.current);
