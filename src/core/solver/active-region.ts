@@ -28,7 +28,8 @@ const ACTIVE_SEED_RINGS = 8;
 export const ACTIVE_GROW = 5e-5;
 /**
  * A vertex no muscle holds leaves the region once it and its neighbours are nearer than this to rest (times the mesh
- * size). Well under ACTIVE_GROW, so that a vertex that left is not pulled straight back in.
+ * size), with enough others (ACTIVE_LEAVE_SHARE). Well under ACTIVE_GROW, so that a vertex that left is not pulled
+ * straight back in.
  */
 const ACTIVE_LEAVE = ACTIVE_GROW / 4;
 /** Rings a vertex that joins brings along: the motion may spread several rings in a frame. */
