@@ -14,7 +14,7 @@ import { test as base } from './fixtures';
  * For files whose tests use the page only through the handle, the panels, the editor and the pictures: no `context`
  * fixture, no init scripts, routes or exposed functions (which stay with a page), no loaded heads, no reloads (an
  * edited rig's autosave outlives the page). Rig edits are reverted and their undo history cleared.
- * `SOFTFACE_E2E_SHARED_LOG=1` prints, for each `openFace`, whether the page was put back or loaded.
+ * `SOFTFACE_E2E_SHARED_LOG=1` prints, for each `openFace`, whether the page was put back or loaded, and what differed.
  */
 export const test = base.extend<object, { appPage: SharedAppPage }>({
   appPage: [
@@ -65,7 +65,6 @@ class SharedAppPage {
       const page = await this.context.newPage();
       reopeners.set(page, (url) => this.open(page, url));
       this.current = page;
-      this.opened = null;
     }
     const size = this.current.viewportSize();
     if (viewport && (size?.width !== viewport.width || size.height !== viewport.height)) await this.current.setViewportSize(viewport);
@@ -131,6 +130,8 @@ async function restore(page: Page, opened: Snapshot): Promise<boolean> {
   }, state);
   // The panels' folders open or closed as they were (a click, as a user would, so that lil-gui knows); the last
   // first, so that a folder is set while the folder it sits in is still open.
+  // Each state is read just before its click: read all at once before the clicks, the panel tests' restores failed
+  // on the folders (a click changes more than its own folder's state).
   const folders = page.locator('.softface-panels .lil-gui > .lil-title');
   for (let i = state.folders.length - 1; i >= 0; i--) {
     const closed = state.folders[i];
@@ -140,10 +141,21 @@ async function restore(page: Page, opened: Snapshot): Promise<boolean> {
   await page.mouse.move(0, 0);
   const until = Date.now() + SETTLE_MS;
   for (;;) {
-    if ((await snapshot(page)) === opened) return true;
-    if (Date.now() > until) return false;
+    const now = await snapshot(page);
+    if (now === opened) return true;
+    if (Date.now() > until) {
+      if (process.env.SOFTFACE_E2E_SHARED_LOG) console.log(`kept page: differs in ${differences(opened, now).join(', ')}`);
+      return false;
+    }
     await page.waitForTimeout(100);
   }
+}
+
+/** The snapshot's top-level entries whose values differ between `a` and `b`. */
+function differences(a: Snapshot, b: Snapshot): string[] {
+  const x = JSON.parse(a) as Record<string, unknown>;
+  const y = JSON.parse(b) as Record<string, unknown>;
+  return Object.keys({ ...x, ...y }).filter((k) => JSON.stringify(x[k]) !== JSON.stringify(y[k]));
 }
 
 type Face = Window['face'];
