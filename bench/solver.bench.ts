@@ -173,10 +173,14 @@ interface RigRow {
   maxFrames: number;
 }
 
-/** Starts `expression` at full intensity from rest on a fresh head simulation, with a partner thread if `workers` is 2. */
+/**
+ * Starts `expression` at full intensity from rest on a fresh head simulation, with a partner thread if `workers` is 2,
+ * after the host's warm-up (which the partner serves too), as the page's worker runs it before the first input.
+ */
 async function startExpression(resolution: Resolution, expression: string, workers: 1 | 2 = 1) {
   const sim = await loadHeadSimulation(resolution, {}, { memory: 'shared' });
-  const partner = workers === 2 ? await startPartnerThread(sim.host.solver) : null;
+  if (workers === 1) for (const _ of sim.host.warmUp());
+  const partner = workers === 2 ? await startPartnerThread(sim.host.solver, sim.host) : null;
   if (/^AU\d/.test(expression)) sim.expression.setActionUnit(expression, 1);
   else sim.expression.applyPreset(expression, 1);
   sim.apply();

@@ -8,7 +8,7 @@
 /**
  * Int32 words: the number of the job posted last (leader), of the job finished last (partner), the job, the part of
  * the lists it is for (for a length job: how many passes), its result; then the barrier's count of arrived threads and its generation (see
- * `meet`).
+ * `meet`); then 1 once the partner takes jobs (see `partnerRunning`).
  */
 export const BOARD_SEQUENCE = 0;
 export const BOARD_DONE = 1;
@@ -17,6 +17,7 @@ export const BOARD_PART = 3;
 export const BOARD_RESULT = 4;
 const BARRIER_COUNT = 5;
 const BARRIER_GENERATION = 6;
+export const BOARD_RUNNING = 7;
 const BOARD_WORDS = 8;
 /** Float64 arguments after the words; after them one Float64 the partner hands back (see Board.value). */
 const BOARD_ARGUMENTS = 3;
@@ -81,6 +82,11 @@ export function boardViews(buffer: SharedArrayBuffer): Board {
     args: new Float64Array(buffer, floats, BOARD_ARGUMENTS),
     value: new Float64Array(buffer, floats + 8 * BOARD_ARGUMENTS, 1),
   };
+}
+
+/** Whether a partner thread takes the board's jobs yet (SolverPartner.run says so as it starts). */
+export function partnerRunning(board: Board): boolean {
+  return Atomics.load(board.words, BOARD_RUNNING) === 1;
 }
 
 /**

@@ -3,6 +3,7 @@ import {
   BOARD_JOB,
   BOARD_PART,
   BOARD_RESULT,
+  BOARD_RUNNING,
   BOARD_SEQUENCE,
   JOB_BENDING,
   JOB_COLLISIONS,
@@ -102,6 +103,7 @@ export class SolverPartner {
     const words = this.board.words;
     const args = this.board.args;
     let done = Atomics.load(words, BOARD_DONE);
+    Atomics.store(words, BOARD_RUNNING, 1);
     for (;;) {
       waitWhile(words, BOARD_SEQUENCE, done);
       const sequence = Atomics.load(words, BOARD_SEQUENCE);

@@ -9,6 +9,9 @@ import { isRestingPose, restingHeadPose } from '../../core/expression/head-pose'
 import { mulberry32 } from '../../core/random';
 import type { Muscle } from '../../core/rig/rig-types';
 import type { Memory } from '../../core/solver/memory';
+import type { PartArrays } from '../../core/solver/part-arrays';
+import { createBoard, partnerRunning, type Board } from '../../core/solver/partner-board';
+import { PartnerLink } from '../../core/solver/partner-link';
 import type { MuscleInputs } from '../../core/solver/muscle-inputs';
 import { SKIN_DEFAULTS, type SkinParameters } from '../../core/solver/skin-parameters';
 import { SkinSolver } from '../../core/solver/solver';
@@ -54,6 +57,22 @@ const WARM_UP_FRAMES = 4;
  * input applies no faster, and each set costs 12 to 30 ms of the worker's time at every page load (docs/page-notes.md).
  */
 const WARM_UP_RIG_SETS = 6;
+/**
+ * How long the warm-up waits for its partner thread to take jobs before it solves without it (ms): the partner's
+ * worker is started with the host, so it usually runs long before the throwaway solver is built.
+ */
+const WARM_UP_PARTNER_WAIT_MS = 500;
+
+/**
+ * The partner thread the warm-up's throwaway solver hands half of its passes to, so that the partner's code is compiled
+ * before the first expression too (cold, it made the first two-thread frame of the high head twice as long).
+ */
+export interface WarmUpPartner {
+  /** Hands the partner thread the throwaway solver's arrays and the board it takes their jobs on. */
+  start(arrays: PartArrays, board: Board): void;
+  /** Called once the throwaway solver is done with the partner (the warm-up's frames are over, or were cut short). */
+  finished(): void;
+}
 
 /**
  * Owns a SkinSolver wherever it runs (worker or main thread): applies published input batches between frames, steps,
@@ -178,13 +197,16 @@ export class SolverHost {
 
   /**
    * Runs the rig and a solver on a throwaway copy of the skin, a piece per `next()`, so that the first expression a
-   * user asks for meets compiled code (cold, the first frames cost about twice their warm time: docs/page-notes.md).
+   * user asks for meets compiled code (cold, the first frames cost about twice their warm time: docs/page-notes.md);
+   * with `partner`, the throwaway solver shares its passes with that thread, which leaves their job loop at the end
+   * (or when the generator is returned early) and may then take the host's solver.
    * This host's solver, rig and colliders are not touched.
    */
-  *warmUp(): Generator<void, void, void> {
+  *warmUp(partner?: WarmUpPartner): Generator<void, void, void> {
     const rig = this.rig;
     if (!rig) return;
-    const buffers = createSolverBuffers(this.topology);
+    const memory: Memory = partner ? 'shared' : 'local';
+    const buffers = createSolverBuffers(this.topology, memory);
     const warm = new Float32Array(rig.muscles.length).fill(WARM_UP_CONTRACTION);
     rig.compute(warm, buffers);
     this.slack?.compute(warm, buffers.unfoldedLengths);
@@ -196,11 +218,27 @@ export class SolverHost {
       colliders,
       mouth: this.mouth,
       activeRegion: this.activeRegion,
+      memory,
     });
     solver.updateMuscles();
-    for (let k = 0; k < WARM_UP_FRAMES; k++) {
-      yield;
-      solver.step();
+    const board = partner ? createBoard() : null;
+    const link = board ? new PartnerLink(board) : null;
+    try {
+      if (board && link) {
+        partner!.start(solver.partArrays(), board);
+        const until = performance.now() + WARM_UP_PARTNER_WAIT_MS;
+        while (!partnerRunning(board) && performance.now() < until) yield;
+        if (partnerRunning(board)) solver.attachPartner(link);
+      }
+      for (let k = 0; k < WARM_UP_FRAMES; k++) {
+        yield;
+        solver.step();
+      }
+    } finally {
+      // A partner that never started leaves its loop at once when it does.
+      solver.attachPartner(null);
+      link?.stop();
+      partner?.finished();
     }
     const random = mulberry32(1);
     const contractions = new Float32Array(rig.muscles.length);

@@ -10,7 +10,8 @@ import { ControlReader } from '../shared/control-reader';
 import { contractionCapacity, controlLayout, controlViews, initControl, slotLayout } from '../shared/layout';
 import type { FromWorker, InitMessage, RunMessage, ToWorker } from '../shared/protocol';
 import { SharedOutput } from './shared-output';
-import { SolverHost } from '../shared/solver-host';
+import { SolverHost, type WarmUpPartner } from '../shared/solver-host';
+import type { PartnerInit } from './partner.worker';
 import { spawnPartnerWorker } from './spawn-partner-worker';
 import { TransferOutput } from './transfer-output';
 
@@ -30,9 +31,11 @@ let scheduled = false;
 /** `stepped` clock: the worker solves only the frames `run` messages ask for (see ClockMessage). */
 let stepped = false;
 /** The host's warm-up (see SolverHost.warmUp): a piece a turn while the skin sleeps, dropped once it solves for real. */
-let warming: Iterator<void> | null = null;
+let warming: Generator<void, void, void> | null = null;
 /** The partner worker, while one takes half of the passes. */
 let partnerWorker: Worker | undefined;
+/** Hands the partner worker the host's solver; null once done, or with no partner. */
+let givePartnerTheSolver: (() => void) | null = null;
 channel.port1.onmessage = tick;
 
 scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
@@ -59,14 +62,14 @@ scope.addEventListener('message', (event: MessageEvent<ToWorker>) => {
 
 function init(m: InitMessage): void {
   const h = new SolverHost({ ...m, memory: m.workers === 2 ? 'shared' : 'local' });
-  if (m.workers === 2) startPartner(h);
+  const partner = m.workers === 2 ? startPartner(h) : undefined;
   const topology = h.topology;
   const rest = topology.rest.slice();
   const triangles = topology.triangles.slice();
   const base = { type: 'ready', vertexCount: topology.vertexCount, edgeCount: topology.restLength.length, rest, triangles } as const;
   const layout = slotLayout(m.renderPositions.length / 3, topology.vertexCount);
   host = h;
-  warming = h.warmUp();
+  warming = h.warmUp(partner);
   if (m.mode === 'shared') {
     const cLayout = controlLayout(topology.vertexCount, contractionCapacity(m.muscles.length));
     const control = new SharedArrayBuffer(cLayout.byteLength);
@@ -85,21 +88,40 @@ function init(m: InitMessage): void {
 }
 
 /**
- * Starts the partner worker on the solver's shared arrays; once it runs, the solver hands it half of each heavy pass
- * (the shape stays the same). Should it fail to start, the solver goes on alone.
+ * Starts the partner worker: it takes the warm-up's throwaway solver first, so that its code is compiled before the
+ * first expression, then the host's solver, which from then on hands it half of each heavy pass (the shape stays the
+ * same). Should it fail to start, the solver goes on alone.
  */
-function startPartner(h: SolverHost): void {
+function startPartner(h: SolverHost): WarmUpPartner {
   const board = createBoard();
   const partner = spawnPartnerWorker();
   partnerWorker = partner;
-  partner.addEventListener('message', () => h.solver.attachPartner(new PartnerLink(board)), { once: true });
+  const init = (message: PartnerInit): void => partner.postMessage(message);
+  partner.addEventListener('message', (event: MessageEvent<PartnerInit['id']>) => {
+    if (event.data === 'solver') h.solver.attachPartner(new PartnerLink(board));
+  });
   partner.addEventListener('error', (event) => {
     event.preventDefault();
     h.solver.attachPartner(null);
     partnerWorker = undefined;
+    givePartnerTheSolver = null;
     console.warn(`the solver's partner worker failed (${event.message || 'it could not be loaded'}); solving on one worker`);
   });
-  partner.postMessage({ arrays: h.solver.partArrays(), board: board.words.buffer });
+  givePartnerTheSolver = () => {
+    givePartnerTheSolver = null;
+    init({ id: 'solver', arrays: h.solver.partArrays(), board: board.words.buffer as SharedArrayBuffer });
+  };
+  return {
+    start: (arrays, warmUpBoard) => init({ id: 'warm-up', arrays, board: warmUpBoard.words.buffer as SharedArrayBuffer }),
+    finished: () => givePartnerTheSolver?.(),
+  };
+}
+
+/** Ends the warm-up, finished or cut short (its partner then takes the host's solver). */
+function endWarmUp(): void {
+  warming?.return();
+  warming = null;
+  givePartnerTheSolver?.();
 }
 
 function schedule(): void {
@@ -116,12 +138,12 @@ function tick(): void {
   try {
     reader?.poll();
     if (host.step()) {
-      warming = null;
+      if (warming || givePartnerTheSolver) endWarmUp();
       sharedOutput?.publish(host);
       transferOutput?.publish();
       schedule();
     } else if (warming && !reader?.hasPending()) {
-      if (warming.next().done) warming = null;
+      if (warming.next().done) endWarmUp();
       schedule();
     } else {
       // `transfer` mode: the next inputs message schedules the next turn.
@@ -140,6 +162,8 @@ function run(m: RunMessage): void {
   const h = host;
   if (!h) return;
   try {
+    // The stepped clock leaves no turns for the warm-up: the partner takes the host's solver now.
+    if (warming || givePartnerTheSolver) endWarmUp();
     reader?.poll();
     if (h.appliedInput < m.seq) {
       setTimeout(() => run(m), 0);
@@ -168,6 +192,8 @@ function failed(error: unknown): void {
   host.solver.attachPartner(null);
   partnerWorker.terminate();
   partnerWorker = undefined;
+  givePartnerTheSolver = null;
+  warming = null;
   console.warn(`${error.message}; solving on one worker`);
   schedule();
 }
