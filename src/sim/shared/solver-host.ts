@@ -224,8 +224,8 @@ export class SolverHost {
     const board = partner ? createBoard() : null;
     const link = board ? new PartnerLink(board) : null;
     try {
-      if (board && link) {
-        partner!.start(solver.partArrays(), board);
+      if (partner && board && link) {
+        partner.start(solver.partArrays(), board);
         const until = performance.now() + WARM_UP_PARTNER_WAIT_MS;
         while (!partnerRunning(board) && performance.now() < until) yield;
         if (partnerRunning(board)) solver.attachPartner(link);
