@@ -336,7 +336,7 @@ export class EmbeddedFace {
     own.push(
       this.view.onFrame(() => {
         simulation.advance();
-        if (skinView.update()) return true;
+        if (skinView.update()) return simulation.moving() ? 'solving' : true;
         if (simulation.awaitsAnswer()) return 'hold';
         return simulation.moving() ? 'moving' : false;
       }),

@@ -60,7 +60,8 @@ export class DrawSchedule {
 
   /**
    * The draw of the animation frame at `now`: `changed` whether a hook or the camera changed what it shows, `hold`
-   * whether a hook holds it (the skin has not answered an input yet), `moving` whether a hook says more of the motion
+   * whether it must wait (a hook holds it, as the skin has not answered an input yet; or the GPU is still at the last
+   * draw), `moving` whether a hook says more of the motion
    * is coming, `reduced` whether the canvas shows a picture drawn lower or without antialiasing, `head` whether the
    * scene shows a head, `fullDrawMs` how long the last full draw held the next frame back.
    */

@@ -35,15 +35,17 @@ import { checkOptions } from '../core/check';
 import { disposeTree } from './dispose-tree';
 import { softwareWebGL } from './software-webgl';
 import { PictureDrawer } from './picture-drawer';
+import { DrawFence } from './draw-fence';
 
 /**
  * Work done at each animation frame while the view is in view; `now` is the frame's timestamp in ms. It returns true
  * when it changed what the frame shows (new skin, turned eyes), so that the view draws it; `hold` when what it shows
  * is about to change (the skin has not answered an input yet), so that the view puts off drawing until it has: the
  * hook bounds how long it holds; `moving` when it has nothing new for this frame but more is coming (the solver still
- * works), so that the view does not take the motion for ended.
+ * works), so that the view does not take the motion for ended; `solving` when it changed what the frame shows and more
+ * is coming from a solver that shares the machine's cores, so that slow draws leave the cores to it (see DrawFence).
  */
-export type FrameHook = (now: number) => boolean | 'hold' | 'moving' | undefined;
+export type FrameHook = (now: number) => boolean | 'hold' | 'moving' | 'solving' | undefined;
 
 /** A fixed-size rendering of the view for a recorder: the render loop holds until `dispose`. */
 export interface ViewCapture {
@@ -94,6 +96,16 @@ export class HeadView {
   private capturing = false;
   /** Draws each picture, antialiased as HeadViewOptions.antialias says. */
   private readonly pictures: PictureDrawer;
+  /** Whether the GPU is still at the last draw. */
+  private readonly fence: DrawFence;
+  /**
+   * Whether the canvas multisamples; what the motion draws' pipelines were made ahead for (see warmMotion): the head,
+   * the environment map and the count of the renderer's programs.
+   */
+  private readonly multisampled: boolean;
+  private warmedHead: HeadModel | undefined;
+  private warmedEnvironment: Texture | null = null;
+  private warmedPrograms = 0;
 
   constructor(
     private readonly container: HTMLElement,
@@ -103,8 +115,10 @@ export class HeadView {
     // With an alpha channel the background can turn transparent later without a new context; an opaque background
     // fills every pixel, so it looks the same as without one.
     const multisampled = o.antialias === 'always' || (o.antialias === 'auto' && !softwareWebGL());
+    this.multisampled = multisampled;
     this.renderer = new WebGLRenderer({ antialias: multisampled, preserveDrawingBuffer: true, alpha: true });
     this.pictures = new PictureDrawer(this.renderer, multisampled);
+    this.fence = new DrawFence(this.renderer.getContext() as WebGL2RenderingContext, o.slowDrawMs);
     this.pixelRatio = Math.min(window.devicePixelRatio, o.maxPixelRatio);
     this.motionResolution = Math.min(1, Math.max(0.25, o.motionResolution));
     this.schedule = new DrawSchedule(this.motionResolution, o.slowDrawMs);
@@ -288,20 +302,30 @@ export class HeadView {
       let changed = false;
       let hold = false;
       let moving = false;
+      let solving = false;
       for (let i = 0; i < this.frameHooks.length; i++) {
         const result = this.frameHooks[i](now);
         if (result === true) changed = true;
+        else if (result === 'solving') changed = solving = true;
         else if (result === 'hold') hold = true;
         else if (result === 'moving') moving = true;
       }
       // True while the camera moves: a drag, or the damping after one.
       if (this.controls.update()) changed = true;
       const reduced = this.reduced || this.pictures.rough;
-      const draw = this.schedule.choose(now, changed, hold, moving, reduced, this.head !== undefined, this.fullDrawMs);
-      if (draw === 'skip') return;
+      // A draw while the GPU is still at the last one would only wait behind it: held like a frame a hook holds.
+      // A solver at work answers a hook every frame, with news ('solving') or without ('moving').
+      const solverWorks = solving || moving;
+      const wait = hold || this.fence.busy(now, solverWorks);
+      const draw = this.schedule.choose(now, changed, wait, moving, reduced, this.head !== undefined, this.fullDrawMs);
+      if (draw === 'skip') {
+        if (!wait) this.warmMotion(now);
+        return;
+      }
       this.setReduced(draw === 'reduced');
       this.drawPicture(draw === 'still');
       this.drawnAt = now;
+      this.fence.drawn(now, solverWorks);
       for (let i = 0; i < this.renderHooks.length; i++) this.renderHooks[i]();
     };
     this.invalidate();
@@ -342,6 +366,7 @@ export class HeadView {
     disposeTree(this.scene);
     this.scene.environment?.dispose();
     this.pictures.dispose();
+    this.fence.dispose();
     this.renderer.dispose();
     // After dispose, which removed the renderer's context-lost listener: this loss is expected and logs nothing.
     this.renderer.forceContextLoss();
@@ -361,6 +386,30 @@ export class HeadView {
   /** Draws the scene to the canvas: a `still` (a face at rest, a picture, a video frame) is always antialiased. */
   private drawPicture(still: boolean): void {
     this.pictures.draw(this.scene, this.camera, still, this.reduced, this.head !== undefined);
+  }
+
+  /**
+   * Draws the shown head once into one pixel of the canvas, where its still already shows the same background, so
+   * that the motion's first draw finds its pipelines made. Where the canvas does not multisample, a still is drawn
+   * into an offscreen target, and the canvas needs pipelines of its own: in software WebGL making them took the first
+   * motion frame 1.0 to 1.3 s of the GPU's time, after the first input (docs/page-notes.md). Done again when the
+   * head, its lighting or the programs change, at an animation frame with nothing to draw.
+   */
+  private warmMotion(now: number): void {
+    const head = this.head;
+    const programs = this.renderer.info.programs?.length ?? 0;
+    const environment = this.scene.environment;
+    if (this.multisampled || !head) return;
+    if (head === this.warmedHead && environment === this.warmedEnvironment && programs === this.warmedPrograms) return;
+    this.warmedHead = head;
+    this.warmedEnvironment = environment;
+    this.warmedPrograms = programs;
+    const renderer = this.renderer;
+    renderer.setScissorTest(true);
+    renderer.setScissor(0, 0, 1, 1);
+    renderer.render(this.scene, this.camera);
+    renderer.setScissorTest(false);
+    this.fence.drawn(now, false);
   }
 
   /** Sets the canvas to the motion's lower resolution or back to full (a new size clears it; the caller draws). */

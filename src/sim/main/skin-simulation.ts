@@ -75,10 +75,13 @@ const PARTNER_MIN_CORES = 4;
 /** Solve time the render loop gives the `main` mode solver per frame, in ms. */
 const MAIN_THREAD_BUDGET_MS = 8;
 /**
- * How long after an input `awaitsAnswer` may say the skin has not answered it, a few times a first frame's usual delay
- * (docs/page-notes.md); a view waits no longer than this for it.
+ * How long after an input `awaitsAnswer` may say the skin has not answered it: twice the delay of the last input's
+ * first answer, within these bounds (docs/page-notes.md); a view waits no longer than this for it. A medium head's
+ * first frame comes 20 to 60 ms after an input in the page, a high head's 170 to 230 in software WebGL, where a
+ * draw of the skin as it was costs the GPU 200 to 600 ms, and the answer's draw waits behind it.
  */
 const ANSWER_WAIT_MS = 150;
+const ANSWER_WAIT_MAX_MS = 600;
 const SETTLE_POLL_MS = 8;
 
 /**
@@ -95,6 +98,9 @@ export class SkinSimulation {
   private disposed = false;
   /** When the newest input batch was published (performance.now()). */
   private publishedAt = -Infinity;
+  /** Whether the newest input has not been answered yet; how long the last input's first answer took (ms). */
+  private answerPending = false;
+  private answerDelayMs = 0;
   /** Rig edits handed to the solver so far. */
   private rigRevision = 0;
   private muscleCount: number;
@@ -116,6 +122,7 @@ export class SkinSimulation {
       rest,
       (seq, changed) => {
         this.publishedAt = performance.now();
+        this.answerPending = true;
         backend.publish(seq, changed);
       },
       muscleCount,
@@ -323,6 +330,10 @@ export class SkinSimulation {
     readSlotBounds(slot, this.bounds);
     this.readFrames = frames;
     this.readMoving = !slotSleeping(slot);
+    if (this.answerPending && slotAppliedInput(slot) >= this.staging.publishedSeq()) {
+      this.answerPending = false;
+      this.answerDelayMs = performance.now() - this.publishedAt;
+    }
     return true;
   }
 
@@ -332,11 +343,12 @@ export class SkinSimulation {
   }
 
   /**
-   * Whether the newest frame is older than the newest input, published less than ANSWER_WAIT_MS ago: the skin is about
+   * Whether the newest frame is older than the newest input, published less than the answer's wait ago: the skin is about
    * to answer it (a view holds its drawing meanwhile, see FrameHook).
    */
   awaitsAnswer(): boolean {
-    if (this.disposed || performance.now() - this.publishedAt > ANSWER_WAIT_MS) return false;
+    const wait = Math.min(ANSWER_WAIT_MAX_MS, Math.max(ANSWER_WAIT_MS, 2 * this.answerDelayMs));
+    if (this.disposed || performance.now() - this.publishedAt > wait) return false;
     return slotAppliedInput(this.backend.latest()) < this.staging.publishedSeq();
   }
 

@@ -1,0 +1,73 @@
+/** How long the GPU may take over a draw before the view takes its fence for lost (a lost context never signals). */
+export const FENCE_GIVE_UP_MS = 3_000;
+
+/**
+ * After a slow draw made while a solver works, the view waits this many times the draw's time before it draws
+ * again, so that the GPU takes at most a quarter of the time. In software WebGL the GPU's threads share the cores with
+ * the solver's worker: the high head's happiness came within 2 % in the page after 1.33 to 1.55 s with a wait of twice
+ * the draw, 1.46 to 1.58 with once, 1.79 to 1.89 drawing whenever the GPU was done (docs/page-notes.md).
+ */
+export const QUIET_AFTER_SLOW_DRAW = 3;
+
+/** The parts of a WebGL2 context a DrawFence uses. */
+export type FenceContext = Pick<
+  WebGL2RenderingContext,
+  'fenceSync' | 'getSyncParameter' | 'deleteSync' | 'flush' | 'SYNC_GPU_COMMANDS_COMPLETE' | 'SYNC_STATUS' | 'SIGNALED'
+>;
+
+/**
+ * Tells a view's render loop whether the GPU is still at the loop's last draw, or resting after a slow one. A draw made
+ * while the GPU has not done the one before waits in its queue: in software WebGL, where a draw of the high head
+ * takes 100 to 300 ms of the cores the solver uses, the page queued up to three motion frames and showed each 0.4 to
+ * 0.8 s after it drew it. A WebGL fence after each draw says when the GPU is done, at the first animation frame after.
+ * On a GPU that keeps up, the fence has signalled by the next animation frame and nothing changes.
+ */
+export class DrawFence {
+  private sync: WebGLSync | null = null;
+  /** When the fenced draw was made, and whether a solver was at work then. */
+  private drawnAt = 0;
+  private solving = false;
+  /** The loop draws nothing before this time (ms): the rest after a slow draw. */
+  private quietUntil = 0;
+
+  /** `slowMs`: a draw the GPU takes longer over is slow. */
+  constructor(
+    private readonly gl: FenceContext,
+    private readonly slowMs: number,
+  ) {}
+
+  /** Marks the draw just made at animation-frame time `now`; `solving` says a solver still works on what it showed. */
+  drawn(now: number, solving: boolean): void {
+    if (this.sync) this.gl.deleteSync(this.sync);
+    this.sync = this.gl.fenceSync(this.gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    // Sent now, not at the task's end, so that the GPU starts on it and the fence can signal.
+    this.gl.flush();
+    this.drawnAt = now;
+    this.solving = solving;
+  }
+
+  /**
+   * Whether the loop should not draw at animation-frame time `now` while a solver works (`solving`): the GPU is at the
+   * last draw, or resting after it. With no solver at work (a camera drag, the eyes, the solver's last frame) it never
+   * is: each change is drawn at the next animation frame, as the rest of the page expects, and the solver's last frame
+   * is shown at once.
+   */
+  busy(now: number, solving: boolean): boolean {
+    const gl = this.gl;
+    if (this.sync) {
+      const took = now - this.drawnAt;
+      const signalled = gl.getSyncParameter(this.sync, gl.SYNC_STATUS) === gl.SIGNALED;
+      if (!signalled && took < FENCE_GIVE_UP_MS) return solving;
+      gl.deleteSync(this.sync);
+      this.sync = null;
+      if (signalled && this.solving && took > this.slowMs) this.quietUntil = now + took * QUIET_AFTER_SLOW_DRAW;
+    }
+    return solving && now < this.quietUntil;
+  }
+
+  /** Frees the fence. */
+  dispose(): void {
+    if (this.sync) this.gl.deleteSync(this.sync);
+    this.sync = null;
+  }
+}
