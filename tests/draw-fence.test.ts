@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DrawFence, FENCE_GIVE_UP_MS, QUIET_AFTER_SLOW_DRAW, type FenceContext } from '../src/render/draw-fence';
+import { DrawFence, FENCE_GIVE_UP_MS, QUIET_AFTER_SLOW_DRAW, QUIET_MAX_MS, type FenceContext } from '../src/render/draw-fence';
 
 /** A context whose GPU finishes the fenced work when the test says so; counts the fences alive. */
 class FakeGPU implements FenceContext {
@@ -61,10 +61,32 @@ describe('the render loop waiting for the GPU (DrawFence)', () => {
     expect(fence.busy(restUntil, true)).toBe(false);
   });
 
+  it('rests at most QUIET_MAX_MS after a draw of over a second (pipelines made at a first motion)', () => {
+    const gpu = new FakeGPU();
+    const fence = new DrawFence(gpu, SLOW_MS);
+    fence.drawn(0, true);
+    for (let t = 16; t < 1_200; t += 16) expect(fence.busy(t, true)).toBe(true);
+    gpu.finish();
+    expect(fence.busy(1_200, true)).toBe(true);
+    expect(fence.busy(1_200 + QUIET_MAX_MS - 1, true)).toBe(true);
+    expect(fence.busy(1_200 + QUIET_MAX_MS, true)).toBe(false);
+  });
+
+  it('does not rest when the fence was not read for a while (the view hidden, or a recorder holding the loop)', () => {
+    const gpu = new FakeGPU();
+    const fence = new DrawFence(gpu, SLOW_MS);
+    fence.drawn(0, true);
+    expect(fence.busy(16, true)).toBe(true);
+    gpu.finish();
+    // Read again 5 s later: the draw did not take 5 s.
+    expect(fence.busy(5_016, true)).toBe(false);
+  });
+
   it("ends the rest with the solver's last frame, which is drawn at once", () => {
     const gpu = new FakeGPU();
     const fence = new DrawFence(gpu, SLOW_MS);
     fence.drawn(0, true);
+    expect(fence.busy(100, true)).toBe(true);
     gpu.finish();
     expect(fence.busy(150, true)).toBe(true);
     expect(fence.busy(166, false)).toBe(false);

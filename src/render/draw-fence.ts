@@ -9,6 +9,18 @@ export const FENCE_GIVE_UP_MS = 3_000;
  */
 export const QUIET_AFTER_SLOW_DRAW = 3;
 
+/**
+ * The longest rest (ms): the first draw of a head's motion can take the GPU over a second (SwiftShader making
+ * pipelines), and the motion should still show within about a second.
+ */
+export const QUIET_MAX_MS = 1_000;
+
+/**
+ * A fence is read at every animation frame while the view is in view; read after a longer gap (the view was hidden, or
+ * a recorder held the loop), the time it took says nothing of the draw, and no rest follows.
+ */
+const READ_GAP_MS = 500;
+
 /** The parts of a WebGL2 context a DrawFence uses. */
 export type FenceContext = Pick<
   WebGL2RenderingContext,
@@ -29,6 +41,8 @@ export class DrawFence {
   private solving = false;
   /** The loop draws nothing before this time (ms): the rest after a slow draw. */
   private quietUntil = 0;
+  /** When `busy` was last asked (ms). */
+  private readAt = -Infinity;
 
   /** `slowMs`: a draw the GPU takes longer over is slow. */
   constructor(
@@ -54,13 +68,17 @@ export class DrawFence {
    */
   busy(now: number, solving: boolean): boolean {
     const gl = this.gl;
+    const continuous = now - this.readAt <= READ_GAP_MS;
+    this.readAt = now;
     if (this.sync) {
       const took = now - this.drawnAt;
       const signalled = gl.getSyncParameter(this.sync, gl.SYNC_STATUS) === gl.SIGNALED;
       if (!signalled && took < FENCE_GIVE_UP_MS) return solving;
       gl.deleteSync(this.sync);
       this.sync = null;
-      if (signalled && this.solving && took > this.slowMs) this.quietUntil = now + took * QUIET_AFTER_SLOW_DRAW;
+      if (signalled && continuous && this.solving && took > this.slowMs) {
+        this.quietUntil = now + Math.min(QUIET_MAX_MS, took * QUIET_AFTER_SLOW_DRAW);
+      }
     }
     return solving && now < this.quietUntil;
   }

@@ -316,7 +316,9 @@ export class HeadView {
       // A draw while the GPU is still at the last one would only wait behind it: held like a frame a hook holds.
       // A solver at work answers a hook every frame, with news ('solving') or without ('moving').
       const solverWorks = solving || moving;
-      const wait = hold || this.fence.busy(now, solverWorks);
+      // Asked at every frame, held or not, so that it times the GPU's draws.
+      const busy = this.fence.busy(now, solverWorks);
+      const wait = hold || busy;
       const draw = this.schedule.choose(now, changed, wait, moving, reduced, this.head !== undefined, this.fullDrawMs);
       if (draw === 'skip') {
         if (!wait) this.warmMotion(now);

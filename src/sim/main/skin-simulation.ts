@@ -76,7 +76,7 @@ const PARTNER_MIN_CORES = 4;
 const MAIN_THREAD_BUDGET_MS = 8;
 /**
  * How long after an input `awaitsAnswer` may say the skin has not answered it: twice the delay of the last input's
- * first answer, within these bounds (docs/page-notes.md); a view waits no longer than this for it. A medium head's
+ * first answer (the most before the first), within these bounds (docs/page-notes.md); a view waits no longer. A medium head's
  * first frame comes 20 to 60 ms after an input in the page, a high head's 170 to 230 in software WebGL, where a
  * draw of the skin as it was costs the GPU 200 to 600 ms, and the answer's draw waits behind it.
  */
@@ -98,9 +98,12 @@ export class SkinSimulation {
   private disposed = false;
   /** When the newest input batch was published (performance.now()). */
   private publishedAt = -Infinity;
-  /** Whether the newest input has not been answered yet; how long the last input's first answer took (ms). */
+  /**
+   * Whether the newest input has not been answered yet; how long the last input's first answer took (ms): until one
+   * was measured, the longest wait.
+   */
   private answerPending = false;
-  private answerDelayMs = 0;
+  private answerDelayMs = ANSWER_WAIT_MAX_MS / 2;
   /** Rig edits handed to the solver so far. */
   private rigRevision = 0;
   private muscleCount: number;
@@ -337,9 +340,12 @@ export class SkinSimulation {
     return true;
   }
 
-  /** Whether the frame last read by readFrame came from a solver still at work: more frames of the motion are coming. */
+  /**
+   * Whether more frames are coming: the frame last read by readFrame came from a solver still at work, or the newest
+   * input has not been answered yet (its first frame not read).
+   */
   moving(): boolean {
-    return this.readMoving && !this.disposed;
+    return (this.readMoving || this.answerPending) && !this.disposed;
   }
 
   /**
