@@ -4,7 +4,7 @@ import { expect, test } from './fixtures';
 /**
  * Where the canvas does not multisample (software WebGL, as here), a face at rest is drawn into an offscreen target,
  * and its first motion would make the canvas's pipelines: the view draws the head once into one pixel of the canvas
- * after its first picture instead (HeadView.warmMotion), which must leave that picture as it was.
+ * after its first picture instead (PictureDrawer.warmMotion), which must leave that picture as it was.
  */
 
 /** Share of the pixels that may differ by more than 16 levels between the canvas and `savePNG` (0 measured). */

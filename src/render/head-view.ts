@@ -98,14 +98,6 @@ export class HeadView {
   private readonly pictures: PictureDrawer;
   /** Whether the GPU is still at the last draw. */
   private readonly fence: DrawFence;
-  /**
-   * Whether the canvas multisamples; what the motion draws' pipelines were made ahead for (see warmMotion): the head,
-   * the environment map and the count of the renderer's programs.
-   */
-  private readonly multisampled: boolean;
-  private warmedHead: HeadModel | undefined;
-  private warmedEnvironment: Texture | null = null;
-  private warmedPrograms = 0;
 
   constructor(
     private readonly container: HTMLElement,
@@ -115,7 +107,6 @@ export class HeadView {
     // With an alpha channel the background can turn transparent later without a new context; an opaque background
     // fills every pixel, so it looks the same as without one.
     const multisampled = o.antialias === 'always' || (o.antialias === 'auto' && !softwareWebGL());
-    this.multisampled = multisampled;
     this.renderer = new WebGLRenderer({ antialias: multisampled, preserveDrawingBuffer: true, alpha: true });
     this.pictures = new PictureDrawer(this.renderer, multisampled);
     this.fence = new DrawFence(this.renderer.getContext() as WebGL2RenderingContext, o.slowDrawMs);
@@ -321,7 +312,8 @@ export class HeadView {
       const wait = hold || busy;
       const draw = this.schedule.choose(now, changed, wait, moving, reduced, this.head !== undefined, this.fullDrawMs);
       if (draw === 'skip') {
-        if (!wait) this.warmMotion(now);
+        // At a frame with nothing to draw: the motion's pipelines, made ahead where they are not yet.
+        if (!wait && this.head && this.pictures.warmMotion(this.scene, this.camera, this.head)) this.fence.drawn(now, false);
         return;
       }
       this.setReduced(draw === 'reduced');
@@ -388,30 +380,6 @@ export class HeadView {
   /** Draws the scene to the canvas: a `still` (a face at rest, a picture, a video frame) is always antialiased. */
   private drawPicture(still: boolean): void {
     this.pictures.draw(this.scene, this.camera, still, this.reduced, this.head !== undefined);
-  }
-
-  /**
-   * Draws the shown head once into one pixel of the canvas, where its still already shows the same background, so
-   * that the motion's first draw finds its pipelines made. Where the canvas does not multisample, a still is drawn
-   * into an offscreen target, and the canvas needs pipelines of its own: in software WebGL making them took the first
-   * motion frame 1.0 to 1.3 s of the GPU's time, after the first input (docs/page-notes.md). Done again when the
-   * head, its lighting or the programs change, at an animation frame with nothing to draw.
-   */
-  private warmMotion(now: number): void {
-    const head = this.head;
-    const programs = this.renderer.info.programs?.length ?? 0;
-    const environment = this.scene.environment;
-    if (this.multisampled || !head) return;
-    if (head === this.warmedHead && environment === this.warmedEnvironment && programs === this.warmedPrograms) return;
-    this.warmedHead = head;
-    this.warmedEnvironment = environment;
-    this.warmedPrograms = programs;
-    const renderer = this.renderer;
-    renderer.setScissorTest(true);
-    renderer.setScissor(0, 0, 1, 1);
-    renderer.render(this.scene, this.camera);
-    renderer.setScissorTest(false);
-    this.fence.drawn(now, false);
   }
 
   /** Sets the canvas to the motion's lower resolution or back to full (a new size clears it; the caller draws). */

@@ -4,6 +4,7 @@ import {
   PMREMGenerator,
   type Scene,
   SRGBColorSpace,
+  type Texture,
   ShaderMaterial,
   Vector2,
   WebGLRenderTarget,
@@ -24,6 +25,10 @@ export class PictureDrawer {
   /** The offscreen multisampled target a still is drawn into, and its copy to the canvas (made at the first still). */
   private still: { target: WebGLRenderTarget; copy: FullScreenQuad } | null = null;
   private readonly size = new Vector2();
+  /** What the canvas's pipelines were made ahead for (see warmMotion): the head, its environment map, the programs. */
+  private warmedHead: object | undefined;
+  private warmedEnvironment: Texture | null = null;
+  private warmedPrograms = 0;
 
   /** `multisampled`: whether the renderer's canvas multisamples. */
   constructor(
@@ -57,6 +62,29 @@ export class PictureDrawer {
     const quality = reduced || this.rough ? 'motion' : 'full';
     const canvas = this.renderer.domElement;
     if (canvas.dataset.quality !== quality) canvas.dataset.quality = quality;
+  }
+
+  /**
+   * Draws `scene` once into one pixel of the canvas, where the still already shows the same background, so that the
+   * motion's first draw finds its pipelines made; returns whether it drew. Where the canvas does not multisample, a
+   * still is drawn into an offscreen target, and the canvas needs pipelines of its own: in software WebGL making them
+   * took the first motion frame 1.0 to 1.6 s of the GPU's time, after the first input (docs/page-notes.md). Done
+   * again for another `head`, environment map or set of programs.
+   */
+  warmMotion(scene: Scene, camera: Camera, head: object): boolean {
+    const programs = this.renderer.info.programs?.length ?? 0;
+    const environment = scene.environment;
+    if (this.multisampled) return false;
+    if (head === this.warmedHead && environment === this.warmedEnvironment && programs === this.warmedPrograms) return false;
+    this.warmedHead = head;
+    this.warmedEnvironment = environment;
+    this.warmedPrograms = programs;
+    const renderer = this.renderer;
+    renderer.setScissorTest(true);
+    renderer.setScissor(0, 0, 1, 1);
+    renderer.render(scene, camera);
+    renderer.setScissorTest(false);
+    return true;
   }
 
   /** Frees the still's target and copy. */
