@@ -61,9 +61,9 @@ export class DrawSchedule {
   /**
    * The draw of the animation frame at `now`: `changed` whether a hook or the camera changed what it shows, `hold`
    * whether it must wait (a hook holds it, as the skin has not answered an input yet; or the GPU is still at the last
-   * draw), `moving` whether a hook says more of the motion
-   * is coming, `reduced` whether the canvas shows a picture drawn lower or without antialiasing, `head` whether the
-   * scene shows a head, `fullDrawMs` how long the last full draw held the next frame back.
+   * draw), `moving` whether a hook says more of the motion is coming, `reduced` whether the canvas shows a picture
+   * drawn lower or without antialiasing, `head` whether the scene shows a head, `fullDrawMs` how long the last full
+   * draw held the next frame back.
    */
   choose(now: number, changed: boolean, hold: boolean, moving: boolean, reduced: boolean, head: boolean, fullDrawMs: number): FrameDraw {
     const news = changed || this.drawPending || this.drawFrames > 0 || performance.now() < this.drawUntil;
