@@ -4,8 +4,9 @@ export const FENCE_GIVE_UP_MS = 3_000;
 /**
  * After a slow draw made while a solver works, the view waits this many times the draw's time before it draws
  * again, so that the GPU takes at most a quarter of the time. In software WebGL the GPU's threads share the cores with
- * the solver's worker: the high head's happiness came within 2 % in the page after 1.33 to 1.55 s with a wait of twice
- * the draw, 1.46 to 1.58 with once, 1.79 to 1.89 drawing whenever the GPU was done (docs/page-notes.md).
+ * the solver's worker: the high head's happiness came within 2 % in the page after 1.58 to 1.77 s at the median with
+ * three times, 1.33 to 1.78 with twice, 1.46 to 1.58 with once, 1.70 to 2.64 with the fence alone and 1.66 to 1.89
+ * drawing whenever something was new (docs/page-notes.md). Three keeps about two frames a second of motion.
  */
 export const QUIET_AFTER_SLOW_DRAW = 3;
 
