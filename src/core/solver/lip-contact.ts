@@ -80,11 +80,19 @@ export class LipContact {
     const upper: number[] = [];
     const lower: number[] = [];
     const direction: number[] = [];
+    // Squared distances: Math.hypot in this loop took a tenth of a second of the fine head's start.
     const nearest = (v: number, among: number[]): number => {
       let best = -1;
-      let bestDistance = PAIR_REACH;
-      for (const w of among) {
-        const d = Math.hypot(rest[3 * v] - rest[3 * w], rest[3 * v + 1] - rest[3 * w + 1], rest[3 * v + 2] - rest[3 * w + 2]);
+      let bestDistance = PAIR_REACH * PAIR_REACH;
+      const x = rest[3 * v];
+      const y = rest[3 * v + 1];
+      const z = rest[3 * v + 2];
+      for (let k = 0; k < among.length; k++) {
+        const w = among[k];
+        const dx = x - rest[3 * w];
+        const dy = y - rest[3 * w + 1];
+        const dz = z - rest[3 * w + 2];
+        const d = dx * dx + dy * dy + dz * dz;
         if (d < bestDistance) {
           bestDistance = d;
           best = w;

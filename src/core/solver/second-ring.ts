@@ -83,20 +83,22 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
   const found = new Uint32Array(most);
   let count = 0;
   const ratio = new Float32Array(n);
-  // Breadth-first two rings out; `mark` holds the last vertex whose search reached each vertex.
+  // Breadth-first two rings out; `mark` holds the last vertex whose search reached each vertex. The distances are
+  // written out, not a closure's: the closure took a third of the fine head's stencils' time.
   const mark = new Int32Array(n).fill(-1);
-  const distance = (v: number, u: number): number => {
-    const dx = X[3 * u] - X[3 * v];
-    const dy = X[3 * u + 1] - X[3 * v + 1];
-    const dz = X[3 * u + 2] - X[3 * v + 2];
-    return Math.sqrt(dx * dx + dy * dy + dz * dz);
-  };
   for (let v = 0; v < n; v++) {
     mark[v] = v;
+    const x = X[3 * v];
+    const y = X[3 * v + 1];
+    const z = X[3 * v + 2];
     let first = 0;
     for (let j = start[v]; j < start[v + 1]; j++) {
-      mark[nb[j]] = v;
-      first += distance(v, nb[j]);
+      const u = nb[j];
+      mark[u] = v;
+      const dx = X[3 * u] - x;
+      const dy = X[3 * u + 1] - y;
+      const dz = X[3 * u + 2] - z;
+      first += Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
     const from = count;
     let second = 0;
@@ -108,7 +110,10 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
         if (mark[w] === v) continue;
         mark[w] = v;
         found[count++] = 3 * w;
-        second += distance(v, w);
+        const dx = X[3 * w] - x;
+        const dy = X[3 * w + 1] - y;
+        const dz = X[3 * w + 2] - z;
+        second += Math.sqrt(dx * dx + dy * dy + dz * dz);
         if (N[3 * v] * N[3 * w] + N[3 * v + 1] * N[3 * w + 1] + N[3 * v + 2] * N[3 * w + 2] < CREASE_COSINE) flat = false;
       }
     }
@@ -179,9 +184,11 @@ export function setSecondRingShares(ring: SecondRing, topology: SkinTopology, ne
   // Capped at a whole share, the first ring folds at 2 pi h (C s_p)^(-1/4) by the small-slope balance.
   const cappedFold = (h: number): number => twoPi * h * c ** -0.25;
   const capped = (h: number): boolean => next.wrinkleSpacing > 0 && h > 0 && c * (next.wrinkleSpacing / (twoPi * h)) ** 4 > 1;
-  const folds: number[] = [];
-  for (let v = 0; v < n; v++) if (capped(topology.spacing[v])) folds.push(cappedFold(topology.spacing[v]));
-  folds.sort((a, b) => a - b);
+  // A typed array's numeric sort: a plain array's sort with a comparator took most of this function's time.
+  const all = new Float64Array(n);
+  let capCount = 0;
+  for (let v = 0; v < n; v++) if (capped(topology.spacing[v])) all[capCount++] = cappedFold(topology.spacing[v]);
+  const folds = all.subarray(0, capCount).sort();
   const fine = folds.length > 0 && folds[folds.length >> 1] < SHORTEST_WRINKLES;
   gain.fill(0);
   reach.fill(0);
