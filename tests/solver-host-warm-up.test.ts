@@ -69,4 +69,20 @@ describe('the solver host warm-up', () => {
     expect(partner.threads).toBe(2);
     expect(compare(cold.positions, partner.positions).largest).toBeLessThanOrEqual(1e-6 * partner.size);
   });
+
+  it('sees no skin solved in the frames of a reset at rest, and skin solved in the first frame of an expression', async () => {
+    // The worker ends its warm-up at the first frame that solved skin: a script's reset of the neutral face at the
+    // page's start must not end it, an expression must.
+    const sim = await loadHeadSimulation('low');
+    sim.expression.reset();
+    sim.apply();
+    const reset: boolean[] = [];
+    while (sim.host.step()) reset.push(sim.host.solvedSkin);
+    expect(reset.length).toBeGreaterThan(0);
+    expect(reset).not.toContain(true);
+    sim.expression.setActionUnit('AU12', 1);
+    sim.apply();
+    expect(sim.host.step()).toBe(true);
+    expect(sim.host.solvedSkin).toBe(true);
+  });
 });

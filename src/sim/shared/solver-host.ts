@@ -196,6 +196,15 @@ export class SolverHost {
   }
 
   /**
+   * Whether the last frame solved any skin: false for the frames of an input that changed nothing at rest (a reset of
+   * the neutral face solves two frames of an empty active region). The worker ends its warm-up only at a frame that
+   * did (see warmUp).
+   */
+  get solvedSkin(): boolean {
+    return this.solver.activeVertexCount > 0;
+  }
+
+  /**
    * Runs the rig and a solver on a throwaway copy of the skin, a piece per `next()`, so that the first expression a
    * user asks for meets compiled code (cold, the first frames cost about twice their warm time: docs/page-notes.md);
    * with `partner`, the throwaway solver shares its passes with that thread, which leaves their job loop at the end

@@ -138,7 +138,9 @@ function tick(): void {
   try {
     reader?.poll();
     if (host.step()) {
-      if (warming || givePartnerTheSolver) endWarmUp();
+      // A frame of no skin (an input that changed nothing at rest, as a script's reset at the page's start) leaves the
+      // warm-up to go on: dropped there, it left the first expression cold (docs/page-notes.md, "Warm-up").
+      if ((warming || givePartnerTheSolver) && host.solvedSkin) endWarmUp();
       sharedOutput?.publish(host);
       transferOutput?.publish();
       schedule();
