@@ -1,5 +1,5 @@
 import { addFaces, openEmbedPage } from './embed';
-import { expect, test } from './fixtures';
+import { expect, installPixelReader, test } from './fixtures';
 
 /**
  * `antialias: "still"` (what `auto` picks in software WebGL, as here): a moving face is drawn without multisampling,
@@ -12,6 +12,7 @@ const DIFFERING = 0.001;
 const SIZE = 360;
 
 test('antialias "still" draws a moving face without multisampling, and a face at rest and savePNG as "always" does', async ({ page }) => {
+  await page.addInitScript(installPixelReader);
   await openEmbedPage(page);
   await addFaces(
     page,
@@ -27,21 +28,8 @@ test('antialias "still" draws a moving face without multisampling, and a face at
       const faces = window.faces;
       const canvas = (name: string) => document.querySelector(`#${name} canvas`) as HTMLCanvasElement;
       const multisampled = (name: string) => canvas(name).getContext('webgl2')!.getContextAttributes()!.antialias;
-      const pixels = async (source: HTMLCanvasElement | Blob): Promise<Uint8ClampedArray> => {
-        const image = await createImageBitmap(source);
-        const c = new OffscreenCanvas(image.width, image.height);
-        const g = c.getContext('2d')!;
-        g.drawImage(image, 0, 0);
-        return g.getImageData(0, 0, image.width, image.height).data;
-      };
-      /** Share of the pixels whose colour differs by more than 16 levels in a channel. */
-      const differing = (a: Uint8ClampedArray, b: Uint8ClampedArray): number => {
-        let n = 0;
-        for (let i = 0; i < a.length; i += 4) {
-          if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 16) n++;
-        }
-        return n / (a.length / 4);
-      };
+      const pixels = window.readPixels;
+      const differing = window.differingShare;
       const frame = () => new Promise((resolve) => requestAnimationFrame(resolve));
       for (const name of ['always', 'still']) faces[name].applyPreset('happiness', 1);
       await Promise.all([faces.always.settle(), faces.still.settle()]);

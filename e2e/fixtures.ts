@@ -1,5 +1,35 @@
 import { test as base, type ConsoleMessage, expect, type JSHandle, type Page } from '@playwright/test';
 
+declare global {
+  interface Window {
+    /** RGBA of a canvas's or an image's pixels, read in the page (see installPixelReader). */
+    readPixels: (source: HTMLCanvasElement | Blob) => Promise<Uint8ClampedArray>;
+    /** Share of the pixels of two same-size pictures whose colour differs by more than 16 levels in a channel. */
+    differingShare: (a: Uint8ClampedArray, b: Uint8ClampedArray) => number;
+  }
+}
+
+/**
+ * Gives the page `readPixels` and `differingShare` before its own scripts run: `page.addInitScript(installPixelReader)`
+ * before it loads. It runs in the page, so it uses nothing from here.
+ */
+export function installPixelReader(): void {
+  window.readPixels = async (source) => {
+    const image = await createImageBitmap(source);
+    const c = new OffscreenCanvas(image.width, image.height);
+    const g = c.getContext('2d')!;
+    g.drawImage(image, 0, 0);
+    return g.getImageData(0, 0, image.width, image.height).data;
+  };
+  window.differingShare = (a, b) => {
+    let n = 0;
+    for (let i = 0; i < a.length; i += 4) {
+      if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 16) n++;
+    }
+    return n / (a.length / 4);
+  };
+}
+
 /** Every test fails if the page logs a console error or throws. */
 export const test = base.extend<{ consoleErrors: string[] }>({
   consoleErrors: [

@@ -1,5 +1,5 @@
 import { addFaces, openEmbedPage } from './embed';
-import { expect, test } from './fixtures';
+import { expect, installPixelReader, test } from './fixtures';
 
 /**
  * Where the canvas does not multisample (software WebGL, as here), a face at rest is drawn into an offscreen target,
@@ -13,6 +13,7 @@ const DIFFERING = 0.001;
 test('a face whose canvas does not multisample draws once into one pixel of it after its first picture, which stays the same', async ({
   page,
 }) => {
+  await page.addInitScript(installPixelReader);
   await openEmbedPage(page);
   await page.evaluate(() => {
     const log: { scissored: boolean; canvas: boolean; box: number[] }[] = [];
@@ -35,13 +36,6 @@ test('a face whose canvas does not multisample draws once into one pixel of it a
       const canvas = document.querySelector('#face canvas') as HTMLCanvasElement;
       const log = (window as unknown as { drawLog: { scissored: boolean; canvas: boolean; box: number[] }[] }).drawLog;
       const frame = (): Promise<number> => new Promise((resolve) => requestAnimationFrame(resolve));
-      const pixels = async (source: HTMLCanvasElement | Blob): Promise<Uint8ClampedArray> => {
-        const image = await createImageBitmap(source);
-        const c = new OffscreenCanvas(image.width, image.height);
-        const g = c.getContext('2d')!;
-        g.drawImage(image, 0, 0);
-        return g.getImageData(0, 0, image.width, image.height).data;
-      };
       await face.settle();
       // The one-pixel draw comes at an animation frame with nothing to draw, once the GPU has done the first picture.
       const warm = () => log.filter((d) => d.scissored && d.canvas && d.box[2] <= 2 && d.box[3] <= 2).length;
@@ -53,20 +47,15 @@ test('a face whose canvas does not multisample draws once into one pixel of it a
       const quietUntil = performance.now() + 1_000;
       while (performance.now() < quietUntil) await frame();
       const drawsWhileAtRest = log.length - drawsBefore;
-      const shown = await pixels(canvas);
-      const still = await pixels(await face.savePNG());
-      let differing = 0;
-      for (let i = 0; i < shown.length; i += 4) {
-        const d = Math.max(Math.abs(shown[i] - still[i]), Math.abs(shown[i + 1] - still[i + 1]), Math.abs(shown[i + 2] - still[i + 2]));
-        if (d > 16) differing++;
-      }
+      const shown = await window.readPixels(canvas);
+      const still = await window.readPixels(await face.savePNG());
       // The pixel the view drew into (the canvas's bottom left corner), against the picture a still gives.
       const corner = (shown.length / 4 - canvas.width) * 4;
       return {
         multisampled: canvas.getContext('webgl2')!.getContextAttributes()!.antialias,
         warmDraws,
         drawsWhileAtRest,
-        differing: differing / (shown.length / 4),
+        differing: window.differingShare(shown, still),
         sameSize: shown.length === still.length,
         corner: [...shown.slice(corner, corner + 4)],
         stillCorner: [...still.slice(corner, corner + 4)],
