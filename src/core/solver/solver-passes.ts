@@ -21,7 +21,7 @@ import {
 } from './partner-board';
 import type { PartnerLink } from './partner-link';
 import type { SkinParameters } from './skin-parameters';
-import { ORIENTATION_SHOWN_FLOOR, UNTANGLE_PASSES } from './solver-schedule';
+import { UNTANGLE_FLOOR, UNTANGLE_PASSES } from './solver-schedule';
 import { ALONE, LEADER, runShare } from './solver-partner';
 import { projectBendingPart } from './solver-kernels';
 import { computeNormals } from './topology';
@@ -127,8 +127,8 @@ export class FramePasses {
 
   /**
    * Still skin with a sliver turned over (the fans at the mouth's corners under AU20, fear and disgust on the high
-   * head): orientation passes alone, up to UNTANGLE_PASSES at ORIENTATION_SHOWN_FLOOR of the bound, lift the fan back
-   * (a tenth of a millimetre or so), so that the skin sleeps untangled. Waiting for the frames to do it took hundreds
+   * head): orientation passes alone, up to UNTANGLE_PASSES at UNTANGLE_FLOOR of the bound, turn the slivers back (a
+   * few hundredths of a millimetre), so that the skin sleeps untangled. Waiting for the frames to do it took hundreds
    * of them, the fan's vertices slowed by the relaxation to a sixteenth of their moves and less (docs/solver-notes.md,
    * "Untangling as the skin comes to rest"). If a triangle stays turned over, the `count` region vertices go back to
    * where the frame left them. `keep` is scratch, 3 floats a vertex.
@@ -142,7 +142,7 @@ export class FramePasses {
       keep[i + 1] = x[i + 1];
       keep[i + 2] = x[i + 2];
     }
-    this.orientationRounds(UNTANGLE_PASSES, ORIENTATION_SHOWN_FLOOR);
+    this.orientationRounds(UNTANGLE_PASSES, UNTANGLE_FLOOR);
     if (!this.turnedOver()) return;
     for (let k = 0; k < count; k++) {
       const i = 3 * V[k];
