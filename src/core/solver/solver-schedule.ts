@@ -77,8 +77,8 @@ export const UNTANGLE_PASSES = 200;
 /**
  * The share of the orientation bound the untangling passes hold (see FramePasses.untangle): enough to turn a sliver
  * back, not to lift it to the bound. At ORIENTATION_SHOWN_FLOOR the high head's anger stood still with one sliver
- * turned over for 77 frames, 76 tries failing, and each lift moved the skin up to 0.19 mm; at a tenth every still
- * frame with a sliver untangles at its first try, moving the skin at most 0.045 mm (docs/solver-notes.md,
+ * turned over for 77 frames, 76 tries failing, and each lift moved the skin up to 0.19 mm; at a tenth each of the
+ * high head's expressions measured untangles at its first try, moving the skin at most 0.045 mm (docs/solver-notes.md,
  * "Untangling to a tenth of the bound").
  */
 export const UNTANGLE_FLOOR = 0.1;
