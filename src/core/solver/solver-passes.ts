@@ -127,11 +127,11 @@ export class FramePasses {
 
   /**
    * Still skin with a sliver turned over (the fans at the mouth's corners under AU20, fear and disgust on the high
-   * head): orientation passes alone, up to UNTANGLE_PASSES at UNTANGLE_FLOOR of the bound, turn the slivers back (a
-   * few hundredths of a millimetre), so that the skin sleeps untangled. Waiting for the frames to do it took hundreds
-   * of them, the fan's vertices slowed by the relaxation to a sixteenth of their moves and less (docs/solver-notes.md,
-   * "Untangling as the skin comes to rest"). If a triangle stays turned over, the `count` region vertices go back to
-   * where the frame left them. `keep` is scratch, 3 floats a vertex.
+   * head, the pressed lips' slit under anger): orientation passes alone, up to UNTANGLE_PASSES at UNTANGLE_FLOOR of
+   * the bound, turn the slivers back (a few hundredths of a millimetre), so that the skin sleeps untangled. Waiting for
+   * the frames to do it took hundreds of them, the fan's vertices slowed by the relaxation to a sixteenth of their
+   * moves and less (docs/solver-notes.md, "Untangling as the skin comes to rest"). If a triangle stays turned over, the
+   * `count` region vertices go back to where the frame left them. `keep` is scratch, 3 floats a vertex.
    */
   untangle(count: number, keep: Float32Array): void {
     const x = this.parts.positions;
