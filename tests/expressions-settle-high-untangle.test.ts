@@ -6,7 +6,8 @@ import { loadHeadSimulation, MAX_SETTLE_FRAMES, settleExpression } from './fixtu
 // Anger on the high head comes to stillness with one sliver turned over where the pressed lips meet. Untangled at half
 // the orientation bound, 76 tries in 77 still frames failed and the lift then moved the skin 0.165 mm (the preset slept
 // after 290 frames); held to a tenth of the bound (UNTANGLE_FLOOR), the first try turns it back with a move of 0.015 mm
-// (214 frames). docs/solver-notes.md, "Untangling to a tenth of the bound".
+// (214 frames; 153 since the loop test looks every half window). docs/solver-notes.md, "Untangling to a tenth of the
+// bound".
 describe('untangling still skin on the high head', () => {
   let sim: Awaited<ReturnType<typeof loadHeadSimulation>>;
   beforeAll(async () => {

@@ -68,7 +68,7 @@ export interface PartArrays {
   restart: Uint8Array;
   /** Frames since each vertex last turned back, up to 255 (see relaxPart). */
   calm: Uint8Array;
-  /** Each vertex's way (the sum of its moves) since the loop window began (see Relaxation.breakLoops). */
+  /** Each vertex's way (the sum of its moves) since Relaxation.breakLoops last looked. */
   path: Float32Array;
   /**
    * The colliders, and their current shapes (`COLLIDER_SHAPE` values each), which the leader updates when an input

@@ -26,14 +26,18 @@ export class Relaxation {
   readonly restart: Uint8Array;
   /** Frames since each vertex last turned back, up to 255 (see relaxPart). */
   readonly calm: Uint8Array;
-  /** Each vertex's way (the sum of its moves) since the loop window began (see breakLoops). */
+  /** Each vertex's way (the sum of its moves) since breakLoops last looked (see LOOP_STEP). */
   readonly path: Float32Array;
   /** Frames solved since the last input or parameter change. */
   motionFrames = 0;
   /** Scratch marks of the vertices breakLoops slows. */
   private readonly looping: Uint8Array;
-  /** The longest way a vertex went in the last loop window. */
-  private lastLongest = 0;
+  /** Each vertex's way in the LOOP_STEP frames before the last look: with `path`, its way over a whole window. */
+  private readonly stepPath: Float32Array;
+  /** The longest way a vertex went over the window that ended at the last look. */
+  private longestStepAgo = 0;
+  /** The longest way a vertex went over the window that ended a whole window ago: the one a way is weighed against. */
+  private longestWindowAgo = 0;
 
   constructor(n: number, memory: Memory) {
     this.share = allocate(Float32Array, n, memory).fill(1);
@@ -41,6 +45,7 @@ export class Relaxation {
     this.calm = allocate(Uint8Array, n, memory).fill(255);
     this.path = allocate(Float32Array, n, memory);
     this.looping = new Uint8Array(n);
+    this.stepPath = new Float32Array(n);
   }
 
   /** A new motion (new inputs or parameters): every vertex may take whole steps again. */
@@ -49,7 +54,9 @@ export class Relaxation {
     this.share.fill(1);
     this.calm.fill(255);
     this.path.fill(0);
-    this.lastLongest = 0;
+    this.stepPath.fill(0);
+    this.longestStepAgo = 0;
+    this.longestWindowAgo = 0;
   }
 
   /** Counts a relaxed frame and returns the cap on every share in it: 1, shrinking each frame after LATE_MOTION. */
@@ -59,38 +66,47 @@ export class Relaxation {
   }
 
   /**
-   * Every LOOP_WINDOW frames, over the region's vertices `V[0..count]`: if the longest way a vertex went in the window
-   * is not clearly shorter than in the one before, the skin has stalled: it circles (a smooth loop of a few dozen
-   * frames a turn, where no move turns back on the one before, so the relaxation does not see it) or chatters at its
-   * least share where the hard constraints take turns. The vertices that went far (over STALL_PART of the longest
-   * way) and their neighbours (the loop is a mode of the patch: slowing one vertex moves the loop next to it) take a
-   * quarter of their moves from then on (LOOP_SLOWING). An under-relaxed step has the same fixed points, so where the
-   * constraints have one the skin converges to it; where they only chatter, the patch slows until it sleeps, long
-   * before the safety net (see LATE_MOTION). Skin that converges shortens its way by more than a tenth a window (a
+   * Every LOOP_STEP frames, over the region's vertices `V[0..count]`: if the longest way a vertex went in the last
+   * LOOP_WINDOW frames is not clearly shorter than in the window before, the skin has stalled: it circles (a smooth loop
+   * of a few dozen frames a turn, where no move turns back on the one before, so the relaxation does not see it) or
+   * chatters at its least share where the hard constraints take turns. The vertices that went far (over STALL_PART of
+   * the longest way) and their neighbours (the loop is a mode of the patch: slowing one vertex moves the loop next to
+   * it) take a quarter of their moves from then on (LOOP_SLOWING). An under-relaxed step has the same fixed points, so
+   * where the constraints have one the skin converges to it; where they only chatter, the patch slows until it sleeps,
+   * long before the safety net (see LATE_MOTION). Skin that converges shortens its way by more than a tenth a window (a
    * third of a per cent a frame) and is left alone (the threshold's choice: docs/solver-notes.md, "Relaxation and
-   * loops").
+   * loops"). The windows slide by half their length: a loop is found as soon as with a window of 12 frames, while the
+   * way is weighed over 24, so slow but sure convergence is not taken for a loop (docs/solver-notes.md, "A sliding
+   * loop window").
    */
   breakLoops(V: Uint32Array, count: number, topology: SkinTopology): void {
     const path = this.path;
+    const stepPath = this.stepPath;
     const mark = this.looping;
     const share = this.share;
     let longest = 0;
-    for (let k = 0; k < count; k++) if (path[V[k]] > longest) longest = path[V[k]];
+    for (let k = 0; k < count; k++) {
+      const way = path[V[k]] + stepPath[V[k]];
+      if (way > longest) longest = way;
+    }
     // Skin going less than STILL_MOVE a frame is about to come to rest.
     const least = LOOP_WINDOW * STILL_MOVE * topology.size;
-    const stalled = this.motionFrames > LOOP_WINDOW && longest > least && longest > STALL * this.lastLongest;
-    this.lastLongest = longest;
+    // Two whole windows must lie behind: the first look's way covers only a step.
+    const stalled = this.motionFrames >= 2 * LOOP_WINDOW && longest > least && longest > STALL * this.longestWindowAgo;
+    this.longestWindowAgo = this.longestStepAgo;
+    this.longestStepAgo = longest;
     const far = Math.max(least, STALL_PART * longest);
     const start = topology.neighbourStart;
     const nb = topology.neighbours;
     let marked = 0;
     for (let k = 0; k < count; k++) {
       const v = V[k];
-      if (stalled && path[v] > far) {
+      if (stalled && path[v] + stepPath[v] > far) {
         mark[v] = 1;
         for (let j = start[v]; j < start[v + 1]; j++) mark[nb[j]] = 1;
         marked++;
       }
+      stepPath[v] = path[v];
       path[v] = 0;
     }
     if (marked === 0) return;

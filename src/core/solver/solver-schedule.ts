@@ -30,9 +30,15 @@ export const LATE_SLOWING = 0.98;
 /**
  * Frames over which the skin's ways are weighed against the window before (see Relaxation.breakLoops). A loop is
  * found two windows after it starts at the soonest; 24 let the rig's expressions sleep after the fewest frames of 16 to
- * 32 on both heads (docs/solver-notes.md, "Relaxation and loops").
+ * 32 on both heads (docs/solver-notes.md, "Relaxation and loops"), and a shorter window takes slow convergence for a
+ * loop ("A shorter loop window").
  */
 export const LOOP_WINDOW = 24;
+/**
+ * Frames between two looks of breakLoops: half a window, so that a loop is found up to half a window sooner, weighed
+ * over the whole one (docs/solver-notes.md, "A sliding loop window").
+ */
+export const LOOP_STEP = LOOP_WINDOW / 2;
 /**
  * The stillness the solver was tuned at: no vertex moving more than this in a frame, relative to the mesh size (the
  * sleep tolerance before 1e-5). Two things keep it however loose `sleepTolerance` is (docs/solver-notes.md, "Sleep

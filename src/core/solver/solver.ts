@@ -41,7 +41,7 @@ import {
   FOLD_CHOICE_FRAMES,
   FOLD_CHOICE_MOMENTUM,
   LATE_MOTION,
-  LOOP_WINDOW,
+  LOOP_STEP,
   ORIENTATION_PASSES,
   ORIENTATION_SHOWN_FLOOR,
   ORIENTATION_SHOWN_PASSES,
@@ -396,8 +396,7 @@ export class SkinSolver {
     time.orientation += now() - untangle;
     // The frame's true move, after every pass: what the sleep test and the relaxation see.
     this.lastMove = this.passes.recordSteps(this.region.count);
-    if (this.relaxation.motionFrames % LOOP_WINDOW === 0)
-      this.relaxation.breakLoops(this.region.vertices, this.region.count, this.topology);
+    if (this.relaxation.motionFrames % LOOP_STEP === 0) this.relaxation.breakLoops(this.region.vertices, this.region.count, this.topology);
     this.frames++;
     const size = this.topology.size;
     const still = !this.inputsChanged && this.lastMove <= p.sleepTolerance * size;
