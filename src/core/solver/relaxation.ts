@@ -15,7 +15,17 @@
  * shrinks each frame.
  */
 import { allocate, type Memory } from './memory';
-import { LATE_MOTION, LATE_SLOWING, LOOP_LEAST_SHARE, LOOP_SLOWING, LOOP_WINDOW, STALL, STALL_PART, STILL_MOVE } from './solver-schedule';
+import {
+  LATE_MOTION,
+  LATE_SLOWING,
+  LOOP_LEAST_SHARE,
+  LOOP_SLOWING,
+  LOOP_WINDOW,
+  STALL,
+  STALL_PART,
+  STALL_STEP,
+  STILL_MOVE,
+} from './solver-schedule';
 import type { SkinTopology } from './topology';
 
 /** A SkinSolver's relaxation shares, turn marks and ways per vertex, and the age of its motion. */
@@ -38,6 +48,8 @@ export class Relaxation {
   private longestStepAgo = 0;
   /** The longest way a vertex went over the window that ended a whole window ago: the one a way is weighed against. */
   private longestWindowAgo = 0;
+  /** The motion frame breakLoops last slowed skin at. */
+  private slowedAt = -LOOP_WINDOW;
 
   constructor(n: number, memory: Memory) {
     this.share = allocate(Float32Array, n, memory).fill(1);
@@ -57,6 +69,7 @@ export class Relaxation {
     this.stepPath.fill(0);
     this.longestStepAgo = 0;
     this.longestWindowAgo = 0;
+    this.slowedAt = -LOOP_WINDOW;
   }
 
   /** Counts a relaxed frame and returns the cap on every share in it: 1, shrinking each frame after LATE_MOTION. */
@@ -76,8 +89,9 @@ export class Relaxation {
    * long before the safety net (see LATE_MOTION). Skin that converges shortens its way by more than a tenth a window (a
    * third of a per cent a frame) and is left alone (the threshold's choice: docs/solver-notes.md, "Relaxation and
    * loops"). The windows slide by half their length: a loop is found as soon as with a window of 12 frames, while the
-   * way is weighed over 24, so slow but sure convergence is not taken for a loop (docs/solver-notes.md, "A sliding
-   * loop window").
+   * way is weighed over 24, so slow but sure convergence is not taken for a loop; a window after a slowing, the two
+   * steps since it are weighed (see stepStalled), so a loop the slowing did not stop is found a window sooner
+   * (docs/solver-notes.md, "A sliding loop window").
    */
   breakLoops(V: Uint32Array, count: number, topology: SkinTopology): void {
     const path = this.path;
@@ -92,7 +106,10 @@ export class Relaxation {
     // Skin going less than STILL_MOVE a frame is about to come to rest.
     const least = LOOP_WINDOW * STILL_MOVE * topology.size;
     // Two whole windows must lie behind: the first look's way covers only a step.
-    const stalled = this.motionFrames >= 2 * LOOP_WINDOW && longest > least && longest > STALL * this.longestWindowAgo;
+    let stalled = this.motionFrames >= 2 * LOOP_WINDOW && longest > least && longest > STALL * this.longestWindowAgo;
+    // A window after a slowing, both windows weighed above still hold moves from before it, so a loop the slowing did
+    // not stop would be found only a window later: weigh the two steps since the slowing instead.
+    if (this.motionFrames === this.slowedAt + LOOP_WINDOW && !stalled) stalled = this.stepStalled(V, count, least / 2);
     this.longestWindowAgo = this.longestStepAgo;
     this.longestStepAgo = longest;
     const far = Math.max(least, STALL_PART * longest);
@@ -110,11 +127,26 @@ export class Relaxation {
       path[v] = 0;
     }
     if (marked === 0) return;
+    this.slowedAt = this.motionFrames;
     // Only the region's shares change: a marked neighbour outside it is at rest and joins, if ever, with a whole share.
     for (let k = 0; k < count; k++) {
       const v = V[k];
       if (mark[v] === 1 && share[v] > LOOP_LEAST_SHARE) share[v] *= LOOP_SLOWING;
     }
     mark.fill(0);
+  }
+
+  /** Whether the longest way of the last step is not clearly shorter than the step before's (STALL_STEP). */
+  private stepStalled(V: Uint32Array, count: number, least: number): boolean {
+    const path = this.path;
+    const stepPath = this.stepPath;
+    let last = 0;
+    let before = 0;
+    for (let k = 0; k < count; k++) {
+      const v = V[k];
+      if (path[v] > last) last = path[v];
+      if (stepPath[v] > before) before = stepPath[v];
+    }
+    return last > least && last > STALL_STEP * before;
   }
 }

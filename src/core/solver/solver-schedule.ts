@@ -50,6 +50,8 @@ export const LOOP_STEP = LOOP_WINDOW / 2;
 export const STILL_MOVE = 2e-6;
 /** Skin whose longest way in a window is more than this share of the last window's has stalled. */
 export const STALL = 0.9;
+/** The same over a step (LOOP_STEP), as weighed a window after a slowing: as large a share a frame as STALL's. */
+export const STALL_STEP = 0.95;
 /** In stalled skin, the vertices that went more than this share of the longest way are slowed, with their neighbours. */
 export const STALL_PART = 0.25;
 /**
