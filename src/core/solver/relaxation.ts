@@ -72,6 +72,12 @@ export class Relaxation {
     this.slowedAt = -LOOP_WINDOW;
   }
 
+  /** Skin that left the region (`inside[v]` 0) is at rest: it carries no way into a later look (see restOutside). */
+  restOutside(inside: Uint8Array): void {
+    const stepPath = this.stepPath;
+    for (let v = 0; v < inside.length; v++) if (inside[v] === 0) stepPath[v] = 0;
+  }
+
   /** Counts a relaxed frame and returns the cap on every share in it: 1, shrinking each frame after LATE_MOTION. */
   nextCap(): number {
     const late = this.motionFrames++ - LATE_MOTION;
@@ -88,8 +94,8 @@ export class Relaxation {
    * where the constraints have one the skin converges to it; where they only chatter, the patch slows until it sleeps,
    * long before the safety net (see LATE_MOTION). Skin that converges shortens its way by more than a tenth a window (a
    * third of a per cent a frame) and is left alone (the threshold's choice: docs/solver-notes.md, "Relaxation and
-   * loops"). The windows slide by half their length: a loop is found as soon as with a window of 12 frames, while the
-   * way is weighed over 24, so slow but sure convergence is not taken for a loop; a window after a slowing, the two
+   * loops"). The windows slide by half their length: a loop is looked for twice a window, while the way is still
+   * weighed over a whole one, so slow but sure convergence is not taken for a loop; a window after a slowing, the two
    * steps since it are weighed (see stepStalled), so a loop the slowing did not stop is found a window sooner
    * (docs/solver-notes.md, "A sliding loop window").
    */

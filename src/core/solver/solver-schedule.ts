@@ -48,7 +48,7 @@ export const LOOP_STEP = LOOP_WINDOW / 2;
  * untangle some 270 frames later), and where it never does (the high head's densest fans) the solver stops where it did.
  */
 export const STILL_MOVE = 2e-6;
-/** Skin whose longest way in a window is more than this share of the last window's has stalled. */
+/** Skin whose longest way in a window is more than this share of the window before's has stalled. */
 export const STALL = 0.9;
 /** The same over a step (LOOP_STEP), as weighed a window after a slowing: as large a share a frame as STALL's. */
 export const STALL_STEP = 0.95;

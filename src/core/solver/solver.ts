@@ -467,7 +467,10 @@ export class SkinSolver {
     watched.fill(0);
     for (let t = 0; t < places.length; t++) if (places[t] >= 0) watched[places[t]] = kept[t];
     this.listedRevision = this.region.revision;
-    if (this.region.enabled) restOutside(this.parts, this.region.inside);
+    if (this.region.enabled) {
+      restOutside(this.parts, this.region.inside);
+      this.relaxation.restOutside(this.region.inside);
+    }
     this.collisions.listCandidates(this.region);
   }
 
