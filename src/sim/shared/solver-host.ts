@@ -8,7 +8,7 @@ import { NeckCarry } from '../../core/rig/neck-carry';
 import { isRestingPose, restingHeadPose } from '../../core/expression/head-pose';
 import { mulberry32 } from '../../core/random';
 import type { Muscle } from '../../core/rig/rig-types';
-import type { Memory } from '../../core/solver/memory';
+import { touchReachablePages, type Memory } from '../../core/solver/memory';
 import type { PartArrays } from '../../core/solver/part-arrays';
 import { createBoard, partnerRunning, type Board } from '../../core/solver/partner-board';
 import { PartnerLink } from '../../core/solver/partner-link';
@@ -209,9 +209,12 @@ export class SolverHost {
    * user asks for meets compiled code (cold, the first frames cost about twice their warm time: docs/page-notes.md);
    * with `partner`, the throwaway solver shares its passes with that thread, which leaves their job loop at the end
    * (or when the generator is returned early) and may then take the host's solver.
-   * This host's solver, rig and colliders are not touched.
+   * This host's solver, rig and colliders are not changed; the first piece maps the pages of the solver's arrays (see
+   * touchReachablePages), which the first input would otherwise wait for.
    */
   *warmUp(partner?: WarmUpPartner): Generator<void, void, void> {
+    touchReachablePages(this.solver);
+    yield;
     const rig = this.rig;
     if (!rig) return;
     const memory: Memory = partner ? 'shared' : 'local';

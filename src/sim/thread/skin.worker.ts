@@ -4,6 +4,7 @@
  * inputs from and writes frames to SharedArrayBuffers; `transfer` mode
  * gets inputs as messages and passes two frame buffers back and forth.
  */
+import { touchPages } from '../../core/solver/memory';
 import { createBoard, PartnerTimeoutError } from '../../core/solver/partner-board';
 import { PartnerLink } from '../../core/solver/partner-link';
 import { ControlReader } from '../shared/control-reader';
@@ -69,7 +70,7 @@ function init(m: InitMessage): void {
   const base = { type: 'ready', vertexCount: topology.vertexCount, edgeCount: topology.restLength.length, rest, triangles } as const;
   const layout = slotLayout(m.renderPositions.length / 3, topology.vertexCount);
   host = h;
-  warming = h.warmUp(partner);
+  warming = warmUp(h, partner);
   if (m.mode === 'shared') {
     const cLayout = controlLayout(topology.vertexCount, contractionCapacity(m.muscles.length));
     const control = new SharedArrayBuffer(cLayout.byteLength);
@@ -115,6 +116,16 @@ function startPartner(h: SolverHost): WarmUpPartner {
     start: (arrays, warmUpBoard) => init({ id: 'warm-up', arrays, board: warmUpBoard.words.buffer as SharedArrayBuffer }),
     finished: () => givePartnerTheSolver?.(),
   };
+}
+
+/**
+ * The host's warm-up (see SolverHost.warmUp), after a turn that maps the pages of the shared output's slots: the first
+ * frame of the first input wrote its fresh slot for 15 to 20 ms on the high head (docs/page-notes.md).
+ */
+function* warmUp(h: SolverHost, partner: WarmUpPartner | undefined): Generator<void, void, void> {
+  if (sharedOutput) touchPages(sharedOutput.buffer);
+  yield;
+  yield* h.warmUp(partner);
 }
 
 /** Ends the warm-up, finished or cut short (its partner then takes the host's solver). */
