@@ -22,25 +22,24 @@ export function touchPages(buffer: ArrayBufferLike): void {
 }
 
 /**
- * Touches the pages (see touchPages) of every typed array reachable from `root` through its own fields, arrays and
- * nested objects, at most `depth` objects deep; each buffer once. Returns the bytes of the buffers touched.
+ * The buffers of every typed array reachable from `root` through its own fields, arrays and nested objects, at most
+ * `depth` objects deep, each once: what touchPages should map for a solver.
  */
-export function touchReachablePages(root: object, depth = 3): number {
+export function reachableBuffers(root: object, depth = 3): ArrayBufferLike[] {
   const seen = new Set<unknown>();
-  let bytes = 0;
+  const buffers: ArrayBufferLike[] = [];
   const visit = (value: unknown, level: number): void => {
     if (value === null || typeof value !== 'object' || seen.has(value)) return;
     seen.add(value);
     if (ArrayBuffer.isView(value)) {
       if (seen.has(value.buffer)) return;
       seen.add(value.buffer);
-      touchPages(value.buffer);
-      bytes += value.buffer.byteLength;
+      buffers.push(value.buffer);
       return;
     }
     if (level >= depth) return;
     for (const field of Object.values(value)) visit(field, level + 1);
   };
   visit(root, 0);
-  return bytes;
+  return buffers;
 }

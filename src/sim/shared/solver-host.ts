@@ -8,7 +8,7 @@ import { NeckCarry } from '../../core/rig/neck-carry';
 import { isRestingPose, restingHeadPose } from '../../core/expression/head-pose';
 import { mulberry32 } from '../../core/random';
 import type { Muscle } from '../../core/rig/rig-types';
-import { touchReachablePages, type Memory } from '../../core/solver/memory';
+import { reachableBuffers, touchPages, type Memory } from '../../core/solver/memory';
 import type { PartArrays } from '../../core/solver/part-arrays';
 import { createBoard, partnerRunning, type Board } from '../../core/solver/partner-board';
 import { PartnerLink } from '../../core/solver/partner-link';
@@ -62,6 +62,11 @@ const WARM_UP_RIG_SETS = 6;
  * worker is started with the host, so it usually runs long before the throwaway solver is built.
  */
 const WARM_UP_PARTNER_WAIT_MS = 500;
+/**
+ * Bytes of the solver's arrays whose pages a warm-up piece maps (see touchPages): about 10 ms of the page's worker
+ * where fresh pages are slow, so that an input waits no longer for the piece than for a frame.
+ */
+const WARM_UP_TOUCH_BYTES = 4 * 1024 * 1024;
 
 /**
  * The partner thread the warm-up's throwaway solver hands half of its passes to, so that the partner's code is compiled
@@ -209,11 +214,19 @@ export class SolverHost {
    * user asks for meets compiled code (cold, the first frames cost about twice their warm time: docs/page-notes.md);
    * with `partner`, the throwaway solver shares its passes with that thread, which leaves their job loop at the end
    * (or when the generator is returned early) and may then take the host's solver.
-   * This host's solver, rig and colliders are not changed; the first piece maps the pages of the solver's arrays (see
-   * touchReachablePages), which the first input would otherwise wait for.
+   * This host's solver, rig and colliders are not changed; the first pieces map the pages of the solver's arrays (see
+   * touchPages), which the first input would otherwise wait for, a few megabytes a piece (the high head's 53 MB took
+   * the page's worker 107 ms in one piece).
    */
   *warmUp(partner?: WarmUpPartner): Generator<void, void, void> {
-    touchReachablePages(this.solver);
+    let touched = 0;
+    for (const buffer of reachableBuffers(this.solver)) {
+      touchPages(buffer);
+      touched += buffer.byteLength;
+      if (touched < WARM_UP_TOUCH_BYTES) continue;
+      touched = 0;
+      yield;
+    }
     yield;
     const rig = this.rig;
     if (!rig) return;
