@@ -23,6 +23,14 @@ const FACING = 0.5;
 const SLIT_REACH = 0.003;
 /** Facing vertices of the two lips closer than this at rest (metres) are paired across the slit. */
 const PAIR_REACH = 0.004;
+/**
+ * The share of a pair's crossing each outer iteration takes back (see SkinSolver.step for the whole step after them).
+ * Taken back whole in every iteration, the pressed lips' slit under anger stood still for 50 frames on the high head
+ * and then slid, its pairs handing the skin back and forth with the sphincters and the orientation bound (153 frames to
+ * sleep); at a half, with a whole step once the iterations are done, 110, the lips crossing as little (0.12 mm;
+ * docs/solver-notes.md, "The lips' contact at a half").
+ */
+export const LIP_CONTACT_SHARE = 0.5;
 
 /**
  * Pairs of skin vertices across the mouth's slit, one on each lip: a vertex of one lip and the nearest vertex of the
@@ -141,10 +149,11 @@ export class LipContact {
   }
 
   /**
-   * Pushes each pair that has passed through its plane back onto it, half each; a vertex outside the solved region
-   * (`inside[v]` 0) stays, and its partner takes the whole push. Allocates nothing.
+   * Pushes each pair that has passed through its plane back toward it by `share` of the crossing (1: onto it), half
+   * each; a vertex outside the solved region (`inside[v]` 0) stays, and its partner takes the whole push. Allocates
+   * nothing.
    */
-  project(x: Float32Array, inside: Uint8Array): void {
+  project(x: Float32Array, inside: Uint8Array, share = 1): void {
     const U = this.upper;
     const Lw = this.lower;
     const D = this.direction;
@@ -154,8 +163,9 @@ export class LipContact {
       const dx = D[3 * k];
       const dy = D[3 * k + 1];
       const dz = D[3 * k + 2];
-      const short = -((x[u] - x[l]) * dx + (x[u + 1] - x[l + 1]) * dy + (x[u + 2] - x[l + 2]) * dz);
-      if (short <= 0) continue;
+      const crossing = -((x[u] - x[l]) * dx + (x[u + 1] - x[l + 1]) * dy + (x[u + 2] - x[l + 2]) * dz);
+      if (crossing <= 0) continue;
+      const short = share * crossing;
       const upIn = inside[U[k]];
       const lowIn = inside[Lw[k]];
       if (upIn === 0 && lowIn === 0) continue;

@@ -3,7 +3,7 @@
  * and half there at the same time, with the same result (see solver-partner.ts): what SkinSolver.step runs.
  */
 import type { ActiveRegion } from './active-region';
-import type { LipContact } from './lip-contact';
+import { LIP_CONTACT_SHARE, type LipContact } from './lip-contact';
 import type { FrameTimings } from './solver-buffers';
 import { PART_EVEN, PART_EVEN_SEAM, PART_ODD, PART_ODD_SEAM, PARTS } from './constraint-lists';
 import { anyTurnedOver, ORIENT_AGAIN, ORIENT_FULL, projectOrientationPart } from './orientation-kernel';
@@ -194,6 +194,11 @@ export class FramePasses {
   projectCollisions(): void {
     this.share(JOB_COLLISIONS, 0);
     // Then the lips' contact, on this thread alone with the partner idle between jobs: a few hundred pairs.
+    this.lips?.project(this.parts.positions, this.inside, LIP_CONTACT_SHARE);
+  }
+
+  /** The lips' contact taken back whole (see LIP_CONTACT_SHARE), on this thread alone. */
+  closeLips(): void {
     this.lips?.project(this.parts.positions, this.inside);
   }
 

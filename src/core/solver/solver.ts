@@ -382,6 +382,8 @@ export class SkinSolver {
     // A motion's first frame from rest checks every triangle and so starts the watched set (see ORIENT_WATCH).
     this.passes.iterate(p, this.maxBendPasses, this.region.count, this.watchFresh ? ORIENT_FULL : ORIENT_WATCHED, time);
     this.watchFresh = false;
+    // The iterations take back half of each crossing of the lips; what is shown keeps them apart (see LIP_CONTACT_SHARE).
+    this.passes.closeLips();
     // Dense fans (the mouth's corners) need a few passes to untangle. After the relaxation, which blends two shapes
     // and so could turn a sliver over, the passes hold only half the bound: whole-bound passes there undid the
     // relaxation in the fans, where the corrections then took turns with the other constraints until the safety net
