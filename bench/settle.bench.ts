@@ -13,9 +13,8 @@ import { ACTION_UNITS } from '../src/core/expression/facs';
 import { LATE_MOTION } from '../src/core/solver/solver-schedule';
 import { loadDefaultRig, loadHeadSimulation, MAX_SETTLE_FRAMES, resetToRest, type Resolution } from '../tests/fixtures/head-simulation';
 import { startPartnerThread } from '../tests/fixtures/partner';
+import { largestDistance, median, NEAR_FINAL } from './shape-measures';
 
-/** The shape is "there" once no vertex is farther from its final place than this share of the largest move. */
-const NEAR_FINAL = 0.02;
 /** What the issue asks of every item on two workers (ms to sleep). */
 const SLEEP_BUDGET_MS = 3000;
 
@@ -68,9 +67,8 @@ for (const item of items.length > 0 ? items : every) {
   for (let i = 0; i < x.length; i += 3)
     largest = Math.max(largest, Math.hypot(final[i] - rest[i], final[i + 1] - rest[i + 1], final[i + 2] - rest[i + 2]));
   let near = shapes.length;
-  while (near > 0 && farthest(shapes[near - 1], final) <= NEAR_FINAL * largest) near--;
+  while (near > 0 && largestDistance(shapes[near - 1], final) <= NEAR_FINAL * largest) near--;
   const sum = (count: number): number => times.slice(0, count).reduce((a, b) => a + b, 0);
-  const sorted = [...times].sort((a, b) => a - b);
   rows.push({
     item,
     // The frame after the last one farther than NEAR_FINAL (frames count from 1).
@@ -80,20 +78,12 @@ for (const item of items.length > 0 ? items : every) {
     msSolved: sum(times.length),
     converged: solver.sleeping && times.length < LATE_MOTION,
     turnedOver: solver.turnedOverCount(),
-    medianFrameMs: sorted[sorted.length >> 1] ?? 0,
+    medianFrameMs: times.length > 0 ? median(times) : 0,
   });
   sim.expression.reset();
   console.log(`${item}: ${times.length} frames`);
 }
 await partner?.stop();
-
-/** The largest distance of a vertex of `a` from its place in `b`. */
-function farthest(a: Float32Array, b: Float32Array): number {
-  let worst = 0;
-  for (let i = 0; i < a.length; i += 3)
-    worst = Math.max(worst, (a[i] - b[i]) ** 2 + (a[i + 1] - b[i + 1]) ** 2 + (a[i + 2] - b[i + 2]) ** 2);
-  return Math.sqrt(worst);
-}
 
 const within = rows.filter((r) => r.converged && r.turnedOver === 0 && r.msSolved <= SLEEP_BUDGET_MS).length;
 const table = [

@@ -19,6 +19,7 @@ import { SkinSolver } from '../src/core/solver/solver';
 import { buildTopology, type SkinTopology } from '../src/core/solver/topology';
 import { loadHeadSimulation, type Resolution } from '../tests/fixtures/head-simulation';
 import { startPartnerThread } from '../tests/fixtures/partner';
+import { largestDistance, median, NEAR_FINAL, quantile } from './shape-measures';
 
 const RESOLUTIONS = [
   { name: 'low', frames: 120 },
@@ -59,13 +60,6 @@ function expression(t: SkinTopology): { vertices: number[]; targets: number[] } 
   }
   return { vertices, targets };
 }
-
-const quantile = (sorted: number[], q: number): number => sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
-const median = (xs: number[]): number =>
-  quantile(
-    [...xs].sort((a, b) => a - b),
-    0.5,
-  );
 
 interface Row {
   resolution: string;
@@ -150,9 +144,6 @@ const DRAG_CASES: { resolution: Resolution; expression: string }[] = [
 const DRAG_FRAMES = 60;
 const DRAG_RUNS = 3;
 
-/** "Within 2 % of the final shape": every vertex nearer its final place than this share of the largest final move. */
-const NEAR_FINAL = 0.02;
-
 interface RigRow {
   resolution: string;
   expression: string;
@@ -185,15 +176,6 @@ async function startExpression(resolution: Resolution, expression: string, worke
   else sim.expression.applyPreset(expression, 1);
   sim.apply();
   return { ...sim, partner };
-}
-
-function largestDistance(a: Float32Array, b: Float32Array): number {
-  let worst = 0;
-  for (let i = 0; i < a.length; i += 3) {
-    const d = (a[i] - b[i]) ** 2 + (a[i + 1] - b[i + 1]) ** 2 + (a[i + 2] - b[i + 2]) ** 2;
-    if (d > worst) worst = d;
-  }
-  return Math.sqrt(worst);
 }
 
 const rigRows: RigRow[] = [];
