@@ -16,6 +16,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, platform } from 'node:os';
 import { NodeIO } from '@gltf-transform/core';
 import { SkinSolver } from '../src/core/solver/solver';
+import { createSolverBuffers } from '../src/core/solver/solver-buffers';
 import { buildTopology, type SkinTopology } from '../src/core/solver/topology';
 import { loadHeadSimulation, type Resolution } from '../tests/fixtures/head-simulation';
 import { startPartnerThread } from '../tests/fixtures/partner';
@@ -26,11 +27,16 @@ const RESOLUTIONS = [
   { name: 'medium', frames: 60 },
   { name: 'high', frames: 20 },
 ] as const;
-/** Length iterations and solver threads of the loop rows (two threads: a partner thread, see SolverPartner). */
+/**
+ * Length iterations, solver threads (two: a partner thread, see SolverPartner) and the edges' loops (the WebAssembly
+ * kernel, wasm-lengths.ts, or the JavaScript loops it stands in for) of the loop rows.
+ */
 const LOOP_CASES = [
-  { lengthIterations: 3, workers: 1 },
-  { lengthIterations: 3, workers: 2 },
-  { lengthIterations: 10, workers: 1 },
+  { lengthIterations: 3, workers: 1, lengths: 'wasm' },
+  { lengthIterations: 3, workers: 1, lengths: 'js' },
+  { lengthIterations: 3, workers: 2, lengths: 'wasm' },
+  { lengthIterations: 3, workers: 2, lengths: 'js' },
+  { lengthIterations: 10, workers: 1, lengths: 'wasm' },
 ] as const;
 const WARMUP_FRAMES = 5;
 
@@ -68,6 +74,8 @@ interface Row {
   lengthIterations: number;
   positionIterations: number;
   workers: number;
+  /** What projects the edges: the WebAssembly kernel or the JavaScript loops. */
+  lengths: string;
   frames: number;
   medianFrameMs: number;
   p90FrameMs: number;
@@ -81,9 +89,10 @@ const rows: Row[] = [];
 for (const { name, frames } of RESOLUTIONS) {
   const topology = await loadSkin(name);
   const { vertices, targets } = expression(topology);
-  for (const { lengthIterations, workers } of LOOP_CASES) {
+  for (const { lengthIterations, workers, lengths: kernel } of LOOP_CASES) {
     // The whole mesh, as before the active region: these rows measure the loops.
-    const solver = new SkinSolver(topology, { parameters: { lengthIterations }, activeRegion: false, memory: 'shared' });
+    const buffers = createSolverBuffers(topology, 'shared', kernel === 'wasm');
+    const solver = new SkinSolver(topology, { parameters: { lengthIterations }, buffers, activeRegion: false, memory: 'shared' });
     const partner = workers === 2 ? await startPartnerThread(solver) : null;
     solver.setMuscleTargets(vertices, targets, 1, 0);
     const total: number[] = [];
@@ -112,6 +121,7 @@ for (const { name, frames } of RESOLUTIONS) {
       lengthIterations,
       positionIterations: p.positionIterations,
       workers,
+      lengths: kernel,
       frames,
       medianFrameMs: quantile(sorted, 0.5),
       p90FrameMs: quantile(sorted, 0.9),
@@ -276,7 +286,7 @@ for (const { resolution, expression: name } of DRAG_CASES) {
 
 const machine = { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, platform: platform(), node: process.version };
 const header =
-  '| head | vertices | edges | length iterations | workers | median ms/frame | ' +
+  '| head | vertices | edges | length iterations | workers | edge loops | median ms/frame | ' +
   'p90 ms/frame | ns/edge projection | normals ms | bending ms | orientation ms |';
 const lines = rows.map(
   (r) =>
@@ -286,6 +296,7 @@ const lines = rows.map(
       r.edges.toLocaleString('en-US'),
       r.lengthIterations,
       r.workers,
+      r.lengths,
       r.medianFrameMs.toFixed(1),
       r.p90FrameMs.toFixed(1),
       r.nsPerEdgeProjection.toFixed(1),

@@ -12,6 +12,7 @@
  * the order. The vertices are in reverse Cuthill-McKee order (see topology.ts): the blocks are bands a few rings wide
  * across the mesh, so any moving patch spans many of them, about as many even as odd.
  */
+import type { KernelMemory } from './kernel-memory';
 import { allocate, type Memory } from './memory';
 import type { SkinTopology } from './topology';
 
@@ -57,14 +58,17 @@ export const EDGE_KINDS = 3;
 /** Words per listed edge (see EdgeLists). */
 export const EDGE_RECORD = 4;
 
-/** Edge lists with room for every edge of the topology. */
-export function createEdgeLists(topology: SkinTopology, memory: Memory = 'local'): EdgeLists {
+/**
+ * Edge lists with room for every edge of the topology; their records in `kernel` when it has room (the length kernel
+ * reads them there, see wasm-lengths.ts).
+ */
+export function createEdgeLists(topology: SkinTopology, memory: Memory = 'local', kernel: KernelMemory | null = null): EdgeLists {
   const m = topology.restLength.length;
   const colours = topology.colourStart.length - 1;
-  const records = allocate(Uint32Array, EDGE_RECORD * m, memory);
+  const records = kernel?.allocate(Uint32Array, EDGE_RECORD * m) ?? allocate(Uint32Array, EDGE_RECORD * m, memory);
   return {
     ends: records,
-    rest: new Float32Array(records.buffer),
+    rest: new Float32Array(records.buffer, records.byteOffset, records.length),
     runs: allocate(Uint32Array, EDGE_KINDS * colours + 1, memory),
     sorting: allocate(Uint32Array, m, memory),
   };

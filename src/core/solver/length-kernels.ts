@@ -1,8 +1,10 @@
 /** Length constraints (thesis 4.3.3) as part loops (see solver-kernels.ts): free edges, edges a muscle holds and unfolding edges. */
 import { EDGE_KINDS, EDGE_RECORD } from './constraint-lists';
+import type { KernelMemory } from './kernel-memory';
 import { allocate, type Memory } from './memory';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
+import { lengthKernel } from './wasm-lengths';
 import type { SkinTopology } from './topology';
 
 /**
@@ -25,6 +27,9 @@ export function projectLengths(
   const { ends, rest, runs } = a.edges;
   const x = a.positions;
   const K = EDGE_KINDS;
+  // The kernel reads the positions, the records and the directions by their places in its memory.
+  const directions = a.bulgeDirections;
+  const kernel = a.kernelMemory && x.buffer === ends.buffer && x.buffer === directions.buffer ? lengthKernel(a.kernelMemory) : null;
   for (let c = 0; K * c + K < runs.length; c++) {
     let f0 = runs[K * c];
     let f1 = runs[K * c + 1];
@@ -47,8 +52,12 @@ export function projectLengths(
       }
     }
     if (pretension > 0) projectBandEdges(x, ends, rest, stiffness, 1 - pretension, f0, f1);
+    else if (kernel) kernel.free(x.byteOffset, ends.byteOffset, 2 * stiffness, EDGE_RECORD * f0, EDGE_RECORD * f1);
     else projectFreeEdges(x, ends, rest, stiffness, f0, f1);
-    projectHeldEdges(x, ends, rest, a.bulgeDirections, stiffness, bulge, 1 - pretension, h0, h1);
+    if (kernel) {
+      const r = EDGE_RECORD;
+      kernel.held(x.byteOffset, ends.byteOffset, directions.byteOffset, 0.5 * stiffness, bulge, 1 - pretension, r * h0, r * h1);
+    } else projectHeldEdges(x, ends, rest, directions, stiffness, bulge, 1 - pretension, h0, h1);
     if (u1 > u0) projectBandEdges(x, ends, rest, stiffness, 1 - pretension, u0, u1);
     if (board) meet(board);
   }
@@ -198,9 +207,9 @@ function projectHeldEdges(
  * buckles at the wavelength the skin prefers; its positive mean makes folds rise rather than sink. A larger mean lifts
  * the whole patch in one bulge instead of folding it.
  */
-export function createBulgeDirections(topology: SkinTopology, memory: Memory): Float32Array {
+export function createBulgeDirections(topology: SkinTopology, memory: Memory, kernel: KernelMemory | null = null): Float32Array {
   const n = topology.vertexCount;
-  const directions = allocate(Float32Array, 3 * n, memory);
+  const directions = kernel?.allocate(Float32Array, 3 * n) ?? allocate(Float32Array, 3 * n, memory);
   for (let v = 0; v < n; v++) {
     const seed = hash01(v) - 0.25;
     for (let k = 3 * v; k < 3 * v + 3; k++) directions[k] = seed * topology.restNormals[k];

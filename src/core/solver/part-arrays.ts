@@ -28,6 +28,11 @@ export interface PartArrays {
   vertexTriangles: Uint32Array;
   edges: EdgeLists;
   /**
+   * The WebAssembly memory the positions and the edge records lie in, where the length kernel runs (see
+   * wasm-lengths.ts); null: the JavaScript loops project the edges.
+   */
+  kernelMemory: WebAssembly.Memory | null;
+  /**
    * Per vertex, at its xyz offset: the way a compressed held edge pushes it per unit of compression and of muscle
    * weight, its rest normal times its bulge seed (see SkinSolver).
    */

@@ -1,4 +1,5 @@
 /** The typed arrays a SkinSolver reads and writes, and what it reports of a frame (timings, constraint counts). */
+import { KernelMemory } from './kernel-memory';
 import { allocate, type Memory } from './memory';
 import type { SkinTopology } from './topology';
 
@@ -30,16 +31,23 @@ export interface SolverBuffers {
   unfoldedLengths: Float32Array;
 }
 
-/** Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). */
-export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local'): SolverBuffers {
+/**
+ * Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). With
+ * `kernel` (the default), the positions lie in a KernelMemory where the length kernel can run, and a SkinSolver on these
+ * buffers projects its edges there; without, in JavaScript.
+ */
+export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local', kernel = true): SolverBuffers {
   const n = topology.vertexCount;
+  const room = kernel ? KernelMemory.forSkin(topology, memory) : null;
+  const positions = room?.allocate(Float32Array, 3 * n) ?? allocate(Float32Array, 3 * n, memory);
+  positions.set(topology.rest);
   const copy = (from: Float32Array): Float32Array => {
     const to = allocate(Float32Array, from.length, memory);
     to.set(from);
     return to;
   };
   return {
-    positions: copy(topology.rest),
+    positions,
     normals: copy(topology.restNormals),
     targets: copy(topology.rest),
     weights: allocate(Float32Array, n, memory),

@@ -25,6 +25,7 @@ import {
   type TriangleLists,
 } from './constraint-lists';
 import { restOutside } from './frame-kernels';
+import { KernelMemory } from './kernel-memory';
 import { createBulgeDirections } from './length-kernels';
 import { allocate, type Memory } from './memory';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from './muscle-inputs';
@@ -150,10 +151,14 @@ export class SkinSolver {
     this.bendStiffness = new Float32Array(n);
     this.bendGain = allocate(Float32Array, n, memory);
     this.bendPasses = allocate(Uint8Array, n, memory);
-    this.bulgeDirections = createBulgeDirections(topology, memory);
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.carriedFrames = new CarriedFrames(topology.rest, topology.restNormals, topology.triangles, this.triangleFrames);
-    this.edgeLists = createEdgeLists(topology, memory);
+    // The length kernel runs where the positions lie in a kernel memory with room for the edge records too.
+    const kernel = KernelMemory.of(this.buffers.positions);
+    this.edgeLists = createEdgeLists(topology, memory, kernel);
+    this.bulgeDirections = createBulgeDirections(topology, memory, kernel);
+    const inKernel = (a: ArrayBufferView): boolean => kernel !== null && KernelMemory.of(a) === kernel;
+    const kernelMemory = kernel && inKernel(this.edgeLists.ends) && inKernel(this.bulgeDirections) ? kernel.memory : null;
     this.triangleLists = createTriangleLists(topology, memory);
     this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
@@ -184,6 +189,7 @@ export class SkinSolver {
       vertexTriangleStart: topology.vertexTriangleStart,
       vertexTriangles: topology.vertexTriangles,
       edges: this.edgeLists,
+      kernelMemory,
       bulgeDirections: this.bulgeDirections,
       triangles: this.triangleLists,
       bending: createBendingLists(n, memory),

@@ -1,0 +1,236 @@
+/**
+ * Writes the solver's WebAssembly kernels: the text below, compiled with wabt, as bytes in
+ * src/core/solver/wasm-lengths-bytes.ts (committed, so that neither the app nor Node needs a compiler). `--check`
+ * compiles and fails if the committed bytes differ (the unit tests run it).
+ *
+ * The length kernel projects four edges of a colour at a time in 32-bit float lanes: the edges of a colour share no
+ * vertex, so the four gathers and scatters never meet (see projectFreeEdges in length-kernels.ts, which it mirrors).
+ */
+import { readFileSync, writeFileSync } from 'node:fs';
+import wabtInit from 'wabt';
+
+const OUT = new URL('../src/core/solver/wasm-lengths-bytes.ts', import.meta.url);
+const LANES = [0, 1, 2, 3];
+/** Words per edge record (EDGE_RECORD in constraint-lists.ts): two ends (xyz offsets), the rest length, a spare. */
+const RECORD_BYTES = 16;
+
+/** f32x4 of the float at byte `offset` from each lane's address local `$<name><lane>`. */
+function gather(name, offset) {
+  let e = `(f32x4.splat (f32.load offset=${offset} (local.get $${name}0)))`;
+  for (const l of LANES.slice(1)) e = `(f32x4.replace_lane ${l} ${e} (f32.load offset=${offset} (local.get $${name}${l})))`;
+  return e;
+}
+
+/** The length error's share, 2 s (d⁴ - r⁴) / (5 d⁴ + 10 d² r² + r⁴): the Padé form of projectFreeEdges. */
+function share(kind, s, d2, r2) {
+  const g = (n) => `(local.get $${n})`;
+  const c = (v) => (kind === 'f32x4' ? `(f32x4.splat (f32.const ${v}))` : `(f32.const ${v})`);
+  const op = (o, a, b) => `(${kind}.${o} ${a} ${b})`;
+  const d4 = op('mul', g(d2), g(d2));
+  const r4 = op('mul', g(r2), g(r2));
+  const top = op('mul', g(s), op('sub', d4, r4));
+  const bottom = op('add', op('add', op('mul', op('mul', c(5), g(d2)), g(d2)), op('mul', op('mul', c(10), g(d2)), g(r2))), r4);
+  return op('div', top, bottom);
+}
+
+function lengthKernel(shared) {
+  const one = `
+  ;; One edge at record address $p: the loop's tail.
+  (func $one (param $xp i32) (param $p i32) (param $s f32)
+    (local $ia i32) (local $ib i32) (local $ax f32) (local $ay f32) (local $az f32) (local $bx f32) (local $by f32)
+    (local $bz f32) (local $dx f32) (local $dy f32) (local $dz f32) (local $d2 f32) (local $r0 f32) (local $r2 f32)
+    (local $k f32)
+    (local.set $ia (i32.add (local.get $xp) (i32.shl (i32.load (local.get $p)) (i32.const 2))))
+    (local.set $ib (i32.add (local.get $xp) (i32.shl (i32.load offset=4 (local.get $p)) (i32.const 2))))
+    (local.set $ax (f32.load (local.get $ia)))
+    (local.set $ay (f32.load offset=4 (local.get $ia)))
+    (local.set $az (f32.load offset=8 (local.get $ia)))
+    (local.set $bx (f32.load (local.get $ib)))
+    (local.set $by (f32.load offset=4 (local.get $ib)))
+    (local.set $bz (f32.load offset=8 (local.get $ib)))
+    (local.set $dx (f32.sub (local.get $bx) (local.get $ax)))
+    (local.set $dy (f32.sub (local.get $by) (local.get $ay)))
+    (local.set $dz (f32.sub (local.get $bz) (local.get $az)))
+    (local.set $d2 (f32.add (f32.add (f32.mul (local.get $dx) (local.get $dx)) (f32.mul (local.get $dy) (local.get $dy)))
+      (f32.mul (local.get $dz) (local.get $dz))))
+    (local.set $r0 (f32.load offset=8 (local.get $p)))
+    (local.set $r2 (f32.mul (local.get $r0) (local.get $r0)))
+    (local.set $k ${share('f32', 's', 'd2', 'r2')})
+    (f32.store (local.get $ia) (f32.add (local.get $ax) (f32.mul (local.get $k) (local.get $dx))))
+    (f32.store offset=4 (local.get $ia) (f32.add (local.get $ay) (f32.mul (local.get $k) (local.get $dy))))
+    (f32.store offset=8 (local.get $ia) (f32.add (local.get $az) (f32.mul (local.get $k) (local.get $dz))))
+    (f32.store (local.get $ib) (f32.sub (local.get $bx) (f32.mul (local.get $k) (local.get $dx))))
+    (f32.store offset=4 (local.get $ib) (f32.sub (local.get $by) (f32.mul (local.get $k) (local.get $dy))))
+    (f32.store offset=8 (local.get $ib) (f32.sub (local.get $bz) (f32.mul (local.get $k) (local.get $dz)))))`;
+  /** Lane `l`'s end `e` (a or b): the byte address of its xyz, from the record's word `word`. */
+  const end = (e, l, word) =>
+    `        (local.set $${e}${l} (i32.add (local.get $xp)\n` +
+    `          (i32.shl (i32.load offset=${RECORD_BYTES * l + 4 * word} (local.get $p)) (i32.const 2))))\n`;
+  const ends = LANES.map((l) => end('a', l, 0) + end('b', l, 1)).join('');
+  let rest = '(f32x4.splat (f32.load offset=8 (local.get $p)))';
+  for (const l of LANES.slice(1)) rest = `(f32x4.replace_lane ${l} ${rest} (f32.load offset=${RECORD_BYTES * l + 8} (local.get $p)))`;
+  const axes = [
+    ['x', 0],
+    ['y', 4],
+    ['z', 8],
+  ];
+  const loads = axes
+    .map(([c, o]) => `        (local.set $a${c} ${gather('a', o)})\n        (local.set $b${c} ${gather('b', o)})\n`)
+    .join('');
+  const stores = axes
+    .map(
+      ([c, o]) =>
+        `        (local.set $t (f32x4.add (local.get $a${c}) (f32x4.mul (local.get $k) (local.get $d${c}))))\n` +
+        LANES.map((l) => `        (f32.store offset=${o} (local.get $a${l}) (f32x4.extract_lane ${l} (local.get $t)))\n`).join('') +
+        `        (local.set $t (f32x4.sub (local.get $b${c}) (f32x4.mul (local.get $k) (local.get $d${c}))))\n` +
+        LANES.map((l) => `        (f32.store offset=${o} (local.get $b${l}) (f32x4.extract_lane ${l} (local.get $t)))\n`).join(''),
+    )
+    .join('');
+  return `(module
+  (import "env" "memory" (memory 1 65536${shared ? ' shared' : ''}))${one}
+  ;; Free edges: positions at byte $xp, records at byte $rp, words $j0..$j1 of them (four a record), share $s.
+  (func (export "free") (param $xp i32) (param $rp i32) (param $s0 f32) (param $j0 i32) (param $j1 i32)
+    (local $j i32) (local $p i32) ${LANES.map((l) => `(local $a${l} i32) (local $b${l} i32)`).join(' ')}
+    (local $ax v128) (local $ay v128) (local $az v128) (local $bx v128) (local $by v128) (local $bz v128) (local $dx v128)
+    (local $dy v128) (local $dz v128) (local $d2 v128) (local $r2 v128) (local $k v128) (local $s v128) (local $t v128)
+    (local.set $s (f32x4.splat (local.get $s0)))
+    (local.set $j (local.get $j0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.gt_u (i32.add (local.get $j) (i32.const ${LANES.length * 4})) (local.get $j1)))
+        (local.set $p (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))))
+${ends}${loads}        (local.set $dx (f32x4.sub (local.get $bx) (local.get $ax)))
+        (local.set $dy (f32x4.sub (local.get $by) (local.get $ay)))
+        (local.set $dz (f32x4.sub (local.get $bz) (local.get $az)))
+        (local.set $d2 (f32x4.add (f32x4.add (f32x4.mul (local.get $dx) (local.get $dx)) (f32x4.mul (local.get $dy) (local.get $dy)))
+          (f32x4.mul (local.get $dz) (local.get $dz))))
+        (local.set $t ${rest})
+        (local.set $r2 (f32x4.mul (local.get $t) (local.get $t)))
+        (local.set $k ${share('f32x4', 's', 'd2', 'r2')})
+${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length * 4})))
+        (br $next)))
+    (block $end
+      (loop $tail
+        (br_if $end (i32.ge_u (local.get $j) (local.get $j1)))
+        (call $one (local.get $xp) (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))) (local.get $s0))
+        (local.set $j (i32.add (local.get $j) (i32.const 4)))
+        (br $tail))))${heldKernel()}
+)
+`;
+}
+
+/**
+ * Held edges (projectHeldEdges in length-kernels.ts): the exact length error outside the slack band, and a push along
+ * each end's bulge direction (directions at byte $dp) by the bulge times the compression past the band times the
+ * edge's muscle weight (the record's fourth word). An edge of zero length is left as it is.
+ */
+function heldKernel() {
+  const v = (n) => `(local.get $${n})`;
+  const ends = LANES.map(
+    (l) =>
+      `        (local.set $a${l} (i32.shl (i32.load offset=${RECORD_BYTES * l} (local.get $p)) (i32.const 2)))\n` +
+      `        (local.set $b${l} (i32.shl (i32.load offset=${RECORD_BYTES * l + 4} (local.get $p)) (i32.const 2)))\n`,
+  ).join('');
+  const word = (o) => {
+    let e = `(f32x4.splat (f32.load offset=${o} (local.get $p)))`;
+    for (const l of LANES.slice(1)) e = `(f32x4.replace_lane ${l} ${e} (f32.load offset=${RECORD_BYTES * l + o} (local.get $p)))`;
+    return e;
+  };
+  /** f32x4 of the float at byte offset `o` past base `base` plus each lane's end offset `$<name><lane>`. */
+  const at = (name, base, o) => {
+    let e = `(f32x4.splat (f32.load offset=${o} (i32.add (local.get $${base}) (local.get $${name}0))))`;
+    for (const l of LANES.slice(1))
+      e = `(f32x4.replace_lane ${l} ${e} (f32.load offset=${o} (i32.add (local.get $${base}) (local.get $${name}${l}))))`;
+    return e;
+  };
+  const axes = [
+    ['x', 0],
+    ['y', 4],
+    ['z', 8],
+  ];
+  const loads = axes
+    .map(([c, o]) => `        (local.set $a${c} ${at('a', 'xp', o)})\n        (local.set $b${c} ${at('b', 'xp', o)})\n`)
+    .join('');
+  /** Lane `l`'s store at byte `o` of end `e` (a or b); lanes past the list's end (l >= $n) are not stored. */
+  const store = (e, l, o) => {
+    const put = `(f32.store offset=${o} (i32.add (local.get $xp) (local.get $${e}${l})) (f32x4.extract_lane ${l} (local.get $t)))`;
+    return `        ${l === 0 ? put : `(if (i32.gt_u (local.get $n) (i32.const ${l})) (then ${put}))`}\n`;
+  };
+  /** End `e`'s new coordinate `c`: its place, plus (a) or minus (b) k times the edge, plus the push along its seed. */
+  const moved = (e, c, o) =>
+    `        (local.set $t (f32x4.add (f32x4.${e === 'a' ? 'add' : 'sub'} ${v(e + c)} (f32x4.mul ${v('k')} ${v(`d${c}`)}))\n` +
+    `          (f32x4.mul ${v('push')} ${at(e, 'dp', o)})))\n`;
+  const stores = axes.map(([c, o]) => ['a', 'b'].map((e) => moved(e, c, o) + LANES.map((l) => store(e, l, o)).join('')).join('')).join('');
+  const half = '(f32x4.splat (f32.const 0.5))';
+  return `
+  ;; Held edges: positions at byte $xp, records at byte $rp, directions at byte $dp, words $j0..$j1 of the records,
+  ;; half the stiffness $s0, the bulge $g0, the band's lower end $w0 (1 - pretension). Lanes past $j1 are not stored.
+  (func (export "held") (param $xp i32) (param $rp i32) (param $dp i32) (param $s0 f32) (param $g0 f32) (param $w0 f32)
+    (param $j0 i32) (param $j1 i32)
+    (local $j i32) (local $p i32) (local $n i32) ${LANES.map((l) => `(local $a${l} i32) (local $b${l} i32)`).join(' ')}
+    (local $ax v128) (local $ay v128) (local $az v128) (local $bx v128) (local $by v128) (local $bz v128) (local $dx v128)
+    (local $dy v128) (local $dz v128) (local $len v128) (local $r0 v128) (local $over v128) (local $under v128)
+    (local $short v128) (local $k v128) (local $push v128) (local $live v128) (local $t v128)
+    (local.set $j (local.get $j0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $j) (local.get $j1)))
+        (local.set $p (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))))
+        ;; Records past the end (the last group's) read as edges of zero length from vertex 0 to itself: never stored.
+        (local.set $n (i32.shr_u (i32.sub (local.get $j1) (local.get $j)) (i32.const 2)))
+${ends}        (if (i32.lt_u (local.get $n) (i32.const 4)) (then
+          (local.set $a3 (i32.const 0)) (local.set $b3 (i32.const 0))
+          (if (i32.lt_u (local.get $n) (i32.const 3)) (then (local.set $a2 (i32.const 0)) (local.set $b2 (i32.const 0))))
+          (if (i32.lt_u (local.get $n) (i32.const 2)) (then (local.set $a1 (i32.const 0)) (local.set $b1 (i32.const 0))))))
+${loads}        (local.set $dx (f32x4.sub ${v('bx')} ${v('ax')}))
+        (local.set $dy (f32x4.sub ${v('by')} ${v('ay')}))
+        (local.set $dz (f32x4.sub ${v('bz')} ${v('az')}))
+        (local.set $len (f32x4.sqrt (f32x4.add (f32x4.add (f32x4.mul ${v('dx')} ${v('dx')}) (f32x4.mul ${v('dy')} ${v('dy')}))
+          (f32x4.mul ${v('dz')} ${v('dz')}))))
+        (local.set $r0 ${word(8)})
+        (local.set $over (f32x4.sub ${v('len')} ${v('r0')}))
+        (local.set $under (f32x4.sub ${v('len')} (f32x4.mul (f32x4.splat ${v('w0')}) ${v('r0')})))
+        (local.set $short (f32x4.mul (f32x4.sub ${v('under')} (f32x4.abs ${v('under')})) ${half}))
+        ;; Lanes of zero length (and those past the end) move nothing: k and the push masked to 0.
+        (local.set $live (f32x4.gt ${v('len')} (f32x4.splat (f32.const 0))))
+        (local.set $k (v128.and ${v('live')} (f32x4.div (f32x4.mul (f32x4.splat ${v('s0')})
+          (f32x4.add (f32x4.mul (f32x4.add ${v('over')} (f32x4.abs ${v('over')})) ${half}) ${v('short')})) ${v('len')})))
+        (local.set $push (v128.and ${v('live')} (f32x4.mul (f32x4.mul (f32x4.splat (f32.neg ${v('g0')})) ${word(12)}) ${v('short')})))
+${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length * 4})))
+        (br $next))))`;
+}
+
+/** The TypeScript module that carries the kernel's bytes. */
+async function source() {
+  const wabt = await wabtInit();
+  const constant = (name, doc, shared) => {
+    const module = wabt.parseWat('lengths.wat', lengthKernel(shared), { simd: true, threads: true });
+    const { buffer } = module.toBinary({});
+    module.destroy();
+    const lines = Buffer.from(buffer)
+      .toString('base64')
+      .match(/.{1,100}/g)
+      .map((l) => `  '${l}',`);
+    return [`/** ${doc} */`, `export const ${name} = [`, ...lines, "].join('');"];
+  };
+  return [
+    '// Made by scripts/build-kernels.mjs (npm run build:kernels) from the text it holds; do not edit.',
+    '',
+    ...constant('LENGTH_KERNEL', 'The length kernel (see wasm-lengths.ts) on a plain memory, as base64 of its binary.', false),
+    '',
+    ...constant('SHARED_LENGTH_KERNEL', 'The same on a shared memory (the memory import is all that differs).', true),
+    '',
+  ].join('\n');
+}
+
+if (process.argv.includes('--print')) {
+  process.stdout.write(lengthKernel(false));
+  process.exit(0);
+}
+const text = await source();
+if (process.argv.includes('--check')) {
+  if (readFileSync(OUT, 'utf8') !== text) {
+    console.error('build-kernels: src/core/solver/wasm-lengths-bytes.ts differs from its source; run npm run build:kernels');
+    process.exit(1);
+  }
+} else writeFileSync(OUT, text);

@@ -1,0 +1,66 @@
+/**
+ * The length kernel in WebAssembly: projectFreeEdges (length-kernels.ts) four edges at a time in 128-bit lanes of
+ * 32-bit floats, about twice as fast as the JavaScript loop (docs/solver-notes.md, "The length kernel in
+ * WebAssembly"). Its bytes come from scripts/build-kernels.mjs. Where WebAssembly, its lanes or its compilation are not
+ * allowed (an old browser, a page whose content security policy forbids it), the solver keeps the JavaScript loop.
+ */
+import { LENGTH_KERNEL, SHARED_LENGTH_KERNEL } from './wasm-lengths-bytes';
+
+/** The kernel's entry points, on one memory. */
+export interface LengthKernel {
+  /**
+   * Projects the free edges whose records are the words `j0..j1` (four a record) of the records at byte `records`,
+   * on the positions at byte `positions`, each end moving by `share` (twice the stiffness) times the Padé error.
+   */
+  free(positions: number, records: number, share: number, j0: number, j1: number): void;
+  /**
+   * Projects the held edges of records `j0..j1` as projectHeldEdges does: `half` is half the stiffness, `bulge` the
+   * skin's, `slack` the band's lower end (1 - pretension); the bulge directions lie at byte `directions`.
+   */
+  held(positions: number, records: number, directions: number, half: number, bulge: number, slack: number, j0: number, j1: number): void;
+}
+
+/** The compiled modules for a plain and a shared memory; null where they cannot be compiled, undefined before. */
+const modules: (WebAssembly.Module | null | undefined)[] = [undefined, undefined];
+/** Each memory's instance, made once per thread. */
+const instances = new WeakMap<WebAssembly.Memory, LengthKernel>();
+
+/** Whether `memory` is a shared WebAssembly memory (its buffer a SharedArrayBuffer). */
+function isSharedMemory(memory: WebAssembly.Memory): boolean {
+  return typeof SharedArrayBuffer !== 'undefined' && memory.buffer instanceof SharedArrayBuffer;
+}
+
+/** The length kernel's module for a plain or shared memory; null where this runtime cannot compile it. */
+export function lengthKernelModule(shared: boolean): WebAssembly.Module | null {
+  const k = shared ? 1 : 0;
+  if (modules[k] !== undefined) return modules[k];
+  modules[k] = null;
+  try {
+    if (typeof WebAssembly === 'undefined' || typeof atob === 'undefined') return null;
+    const text = atob(shared ? SHARED_LENGTH_KERNEL : LENGTH_KERNEL);
+    const bytes = new Uint8Array(text.length);
+    for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+    // A small module compiles synchronously on any thread; validate first so that a runtime without the lanes says
+    // so instead of throwing.
+    if (WebAssembly.validate(bytes)) modules[k] = new WebAssembly.Module(bytes);
+  } catch {
+    modules[k] = null;
+  }
+  return modules[k];
+}
+
+/** The length kernel on `memory` (made on first use in this thread); null where it cannot be made. */
+export function lengthKernel(memory: WebAssembly.Memory): LengthKernel | null {
+  const known = instances.get(memory);
+  if (known) return known;
+  const module = lengthKernelModule(isSharedMemory(memory));
+  if (!module) return null;
+  try {
+    const instance = new WebAssembly.Instance(module, { env: { memory } });
+    const kernel = instance.exports as unknown as LengthKernel;
+    instances.set(memory, kernel);
+    return kernel;
+  } catch {
+    return null;
+  }
+}

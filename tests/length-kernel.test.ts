@@ -1,0 +1,54 @@
+import { execFileSync } from 'node:child_process';
+import { describe, expect, it } from 'vitest';
+import { mulberry32 } from '../src/core/random';
+import { KernelMemory } from '../src/core/solver/kernel-memory';
+import { SkinSolver } from '../src/core/solver/solver';
+import { createSolverBuffers } from '../src/core/solver/solver-buffers';
+import { buildTopology } from '../src/core/solver/topology';
+import { triangleGrid } from './fixtures/grids';
+
+// The length kernel in WebAssembly (wasm-lengths.ts) against the JavaScript loops it stands in for.
+const grid = triangleGrid(0.03, 0.03, 0.0015);
+const topology = buildTopology(grid.positions, grid.indices);
+
+/** A solver on the patch, its edges projected by the kernel or not, after one frame from a seeded scramble. */
+function oneFrame(kernel: boolean): { moved: number; positions: Float32Array; usesKernel: boolean } {
+  const buffers = createSolverBuffers(topology, 'local', kernel);
+  const random = mulberry32(5);
+  // A muscle holds the left half, so that both kinds of edges (free and held) are projected; the patch is squeezed
+  // to 0.8 of its width with a seeded relief, so that held edges are compressed and push along their bulge seeds.
+  for (let v = 0; v < topology.vertexCount; v++) {
+    if (topology.rest[3 * v] < 0) buffers.weights[v] = 0.5;
+  }
+  const x = buffers.positions;
+  for (let i = 0; i < x.length; i++) x[i] = (i % 3 === 0 ? 0.8 : 1) * x[i] + (random() - 0.5) * 0.0003;
+  const start = Float32Array.from(x);
+  const s = new SkinSolver(topology, { buffers, activeRegion: false, parameters: { momentum: 0, startMomentum: 0, foldMomentum: 0 } });
+  s.wake();
+  s.step();
+  let moved = 0;
+  for (let i = 0; i < x.length; i++) moved = Math.max(moved, Math.abs(x[i] - start[i]));
+  return { moved, positions: Float32Array.from(x), usesKernel: KernelMemory.of(x) !== null };
+}
+
+describe('length kernel', () => {
+  it('runs in Node, where the solver keeps its positions in the kernel memory by default', () => {
+    expect(oneFrame(true).usesKernel).toBe(true);
+    expect(oneFrame(false).usesKernel).toBe(false);
+  });
+
+  it('moves the skin as the JavaScript loops do, to within single-precision rounding', () => {
+    const a = oneFrame(true);
+    const b = oneFrame(false);
+    let worst = 0;
+    for (let i = 0; i < a.positions.length; i++) worst = Math.max(worst, Math.abs(a.positions[i] - b.positions[i]));
+    // The frame moves the scrambled skin by a tenth of a millimetre or more; the two differ by float rounding only
+    // (the kernel computes in single precision, the loops in double).
+    expect(b.moved).toBeGreaterThan(1e-4);
+    expect(worst).toBeLessThan(1e-5 * b.moved);
+  });
+
+  it('is built from the text in scripts/build-kernels.mjs', () => {
+    expect(() => execFileSync(process.execPath, ['scripts/build-kernels.mjs', '--check'], { stdio: 'pipe' })).not.toThrow();
+  });
+});
