@@ -203,28 +203,29 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
 /** The TypeScript module that carries the kernel's bytes. */
 async function source() {
   const wabt = await wabtInit();
-  const constant = (name, doc, shared) => {
-    const module = wabt.parseWat('lengths.wat', lengthKernel(shared), { simd: true, threads: true });
-    const { buffer } = module.toBinary({});
-    module.destroy();
-    const lines = Buffer.from(buffer)
-      .toString('base64')
-      .match(/.{1,100}/g)
-      .map((l) => `  '${l}',`);
-    return [`/** ${doc} */`, `export const ${name} = [`, ...lines, "].join('');"];
-  };
+  const module = wabt.parseWat('lengths.wat', lengthKernel(true), { simd: true, threads: true });
+  const { buffer } = module.toBinary({});
+  module.destroy();
+  const lines = Buffer.from(buffer)
+    .toString('base64')
+    .match(/.{1,100}/g)
+    .map((l) => `  '${l}',`);
   return [
     '// Made by scripts/build-kernels.mjs (npm run build:kernels) from the text it holds; do not edit.',
     '',
-    ...constant('LENGTH_KERNEL', 'The length kernel (see wasm-lengths.ts) on a plain memory, as base64 of its binary.', false),
-    '',
-    ...constant('SHARED_LENGTH_KERNEL', 'The same on a shared memory (the memory import is all that differs).', true),
+    '/**',
+    ' * The length kernel (see wasm-lengths.ts) on a shared memory, as base64 of its binary; the same on a plain memory',
+    " * differs in one byte, the memory import's flags.",
+    ' */',
+    'export const LENGTH_KERNEL = [',
+    ...lines,
+    "].join('');",
     '',
   ].join('\n');
 }
 
 if (process.argv.includes('--print')) {
-  process.stdout.write(lengthKernel(false));
+  process.stdout.write(lengthKernel(true));
   process.exit(0);
 }
 const text = await source();

@@ -4,7 +4,7 @@
  * WebAssembly"). Its bytes come from scripts/build-kernels.mjs. Where WebAssembly, its lanes or its compilation are not
  * allowed (an old browser, a page whose content security policy forbids it), the solver keeps the JavaScript loop.
  */
-import { LENGTH_KERNEL, SHARED_LENGTH_KERNEL } from './wasm-lengths-bytes';
+import { LENGTH_KERNEL } from './wasm-lengths-bytes';
 
 /** The kernel's entry points, on one memory. */
 export interface LengthKernel {
@@ -37,9 +37,16 @@ export function lengthKernelModule(shared: boolean): WebAssembly.Module | null {
   modules[k] = null;
   try {
     if (typeof WebAssembly === 'undefined' || typeof atob === 'undefined') return null;
-    const text = atob(shared ? SHARED_LENGTH_KERNEL : LENGTH_KERNEL);
+    const text = atob(LENGTH_KERNEL);
     const bytes = new Uint8Array(text.length);
     for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+    if (!shared) {
+      // The binary imports a shared memory; a plain one differs only in the import's limits flags (shared and a
+      // maximum, 3, against a maximum alone, 1), which follow the import's name and kind (2, a memory).
+      const at = importFlags(bytes);
+      if (at < 0) return null;
+      bytes[at] = 1;
+    }
     // A small module compiles synchronously on any thread; validate first so that a runtime without the lanes says
     // so instead of throwing.
     if (WebAssembly.validate(bytes)) modules[k] = new WebAssembly.Module(bytes);
@@ -47,6 +54,17 @@ export function lengthKernelModule(shared: boolean): WebAssembly.Module | null {
     modules[k] = null;
   }
   return modules[k];
+}
+
+/** The byte of the memory import's limits flags in a module's binary: after `memory` and its kind; -1 if none. */
+function importFlags(bytes: Uint8Array): number {
+  const name = [6, 0x6d, 0x65, 0x6d, 0x6f, 0x72, 0x79, 2, 3];
+  for (let i = 0; i + name.length <= bytes.length; i++) {
+    let k = 0;
+    while (k < name.length && bytes[i + k] === name[k]) k++;
+    if (k === name.length) return i + name.length - 1;
+  }
+  return -1;
 }
 
 /** The length kernel on `memory` (made on first use in this thread); null where it cannot be made. */
