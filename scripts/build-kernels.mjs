@@ -1,15 +1,16 @@
 /**
  * Writes the solver's WebAssembly kernels: the text below, compiled with wabt, as bytes in
- * src/core/solver/wasm-lengths-bytes.ts (committed, so that neither the app nor Node needs a compiler). `--check`
+ * src/core/solver/wasm-kernels-bytes.ts (committed, so that neither the app nor Node needs a compiler). `--check`
  * compiles and fails if the committed bytes differ (the unit tests run it).
  *
- * The length kernel projects four edges of a colour at a time in 32-bit float lanes: the edges of a colour share no
- * vertex, so the four gathers and scatters never meet (see projectFreeEdges in length-kernels.ts, which it mirrors).
+ * The length kernels project four edges of a colour at a time in 32-bit float lanes: the edges of a colour share no
+ * vertex, so the four gathers and scatters never meet (see projectFreeEdges and projectHeldEdges in length-kernels.ts,
+ * which they mirror). The bending kernel is projectBendingPart's loop, one vertex at a time, as it computes.
  */
 import { readFileSync, writeFileSync } from 'node:fs';
 import wabtInit from 'wabt';
 
-const OUT = new URL('../src/core/solver/wasm-lengths-bytes.ts', import.meta.url);
+const OUT = new URL('../src/core/solver/wasm-kernels-bytes.ts', import.meta.url);
 const LANES = [0, 1, 2, 3];
 /** Words per edge record (EDGE_RECORD in constraint-lists.ts): two ends (xyz offsets), the rest length, a spare. */
 const RECORD_BYTES = 16;
@@ -114,7 +115,7 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
         (br_if $end (i32.ge_u (local.get $j) (local.get $j1)))
         (call $one (local.get $xp) (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))) (local.get $s0))
         (local.set $j (i32.add (local.get $j) (i32.const 4)))
-        (br $tail))))${heldKernel()}
+        (br $tail))))${heldKernel()}${bendKernel()}
 )
 `;
 }
@@ -200,6 +201,76 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
         (br $next))))`;
 }
 
+/**
+ * Bending (projectBendingPart in solver-kernels.ts): the first ring's constraints of the bending list's vertices
+ * `$r0..$r1` in pass `$pass`, in the loop's order and in its double-precision arithmetic on the single-precision
+ * positions, so that the result is the loop's to the bit. Arrays at bytes: positions `$xp`, rest normals `$np`, the
+ * neighbours' CSR starts `$sp` and xyz offsets `$op`, the constraint at rest `$ap` (doubles), the gains `$gp`, the
+ * inverse degrees `$wp`, the passes `$pp` (bytes), the list `$lp`.
+ */
+function bendKernel() {
+  return `
+  (func (export "bend") (param $xp i32) (param $np i32) (param $sp i32) (param $op i32) (param $ap i32) (param $gp i32)
+    (param $wp i32) (param $pp i32) (param $lp i32) (param $r0 i32) (param $r1 i32) (param $pass i32)
+    (local $r i32) (local $v i32) (local $g f64) (local $j i32) (local $j1 i32) (local $ib i32) (local $kb i32)
+    (local $nx f64) (local $ny f64) (local $nz f64) (local $mean f64) (local $w f64) (local $c f64) (local $lambda f64) (local $q f64)
+    (local.set $r (local.get $r0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $r) (local.get $r1)))
+        (local.set $v (i32.load (i32.add (local.get $lp) (i32.shl (local.get $r) (i32.const 2)))))
+        (local.set $r (i32.add (local.get $r) (i32.const 1)))
+        (local.set $g (f64.promote_f32 (f32.load (i32.add (local.get $gp) (i32.shl (local.get $v) (i32.const 2))))))
+        (br_if $next (i32.le_u (i32.load8_u (i32.add (local.get $pp) (local.get $v))) (local.get $pass)))
+        (br_if $next (f64.eq (local.get $g) (f64.const 0)))
+        (local.set $j (i32.load (i32.add (local.get $sp) (i32.shl (local.get $v) (i32.const 2)))))
+        (local.set $j1 (i32.load offset=4 (i32.add (local.get $sp) (i32.shl (local.get $v) (i32.const 2)))))
+        (local.set $ib (i32.mul (local.get $v) (i32.const 12)))
+        (local.set $nx (f64.promote_f32 (f32.load (i32.add (local.get $np) (local.get $ib)))))
+        (local.set $ny (f64.promote_f32 (f32.load offset=4 (i32.add (local.get $np) (local.get $ib)))))
+        (local.set $nz (f64.promote_f32 (f32.load offset=8 (i32.add (local.get $np) (local.get $ib)))))
+        (local.set $ib (i32.add (local.get $xp) (local.get $ib)))
+        (local.set $mean (f64.const 0))
+        (block $g1 (loop $gather
+          (br_if $g1 (i32.ge_u (local.get $j) (local.get $j1)))
+          (local.set $kb (i32.add (local.get $xp)
+            (i32.shl (i32.load (i32.add (local.get $op) (i32.shl (local.get $j) (i32.const 2)))) (i32.const 2))))
+          (local.set $mean (f64.add (local.get $mean)
+            (f64.add (f64.add (f64.mul (f64.promote_f32 (f32.load (local.get $kb))) (local.get $nx))
+                              (f64.mul (f64.promote_f32 (f32.load offset=4 (local.get $kb))) (local.get $ny)))
+                     (f64.mul (f64.promote_f32 (f32.load offset=8 (local.get $kb))) (local.get $nz)))))
+          (local.set $j (i32.add (local.get $j) (i32.const 1)))
+          (br $gather)))
+        (local.set $w (f64.promote_f32 (f32.load (i32.add (local.get $wp) (i32.shl (local.get $v) (i32.const 2))))))
+        (local.set $c (f64.sub (f64.sub (f64.mul (local.get $mean) (local.get $w))
+          (f64.add (f64.add (f64.mul (f64.promote_f32 (f32.load (local.get $ib))) (local.get $nx))
+                            (f64.mul (f64.promote_f32 (f32.load offset=4 (local.get $ib))) (local.get $ny)))
+                   (f64.mul (f64.promote_f32 (f32.load offset=8 (local.get $ib))) (local.get $nz))))
+          (f64.load (i32.add (local.get $ap) (i32.shl (local.get $v) (i32.const 3))))))
+        (local.set $lambda (f64.mul (local.get $g) (local.get $c)))
+        (f32.store (local.get $ib)
+          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load (local.get $ib))) (f64.mul (local.get $lambda) (local.get $nx)))))
+        (f32.store offset=4 (local.get $ib)
+          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=4 (local.get $ib))) (f64.mul (local.get $lambda) (local.get $ny)))))
+        (f32.store offset=8 (local.get $ib)
+          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=8 (local.get $ib))) (f64.mul (local.get $lambda) (local.get $nz)))))
+        (local.set $q (f64.mul (local.get $lambda) (local.get $w)))
+        (local.set $j (i32.load (i32.add (local.get $sp) (i32.shl (local.get $v) (i32.const 2)))))
+        (block $s1 (loop $scatter
+          (br_if $s1 (i32.ge_u (local.get $j) (local.get $j1)))
+          (local.set $kb (i32.add (local.get $xp)
+            (i32.shl (i32.load (i32.add (local.get $op) (i32.shl (local.get $j) (i32.const 2)))) (i32.const 2))))
+          (f32.store (local.get $kb)
+            (f32.demote_f64 (f64.sub (f64.promote_f32 (f32.load (local.get $kb))) (f64.mul (local.get $q) (local.get $nx)))))
+          (f32.store offset=4 (local.get $kb)
+            (f32.demote_f64 (f64.sub (f64.promote_f32 (f32.load offset=4 (local.get $kb))) (f64.mul (local.get $q) (local.get $ny)))))
+          (f32.store offset=8 (local.get $kb)
+            (f32.demote_f64 (f64.sub (f64.promote_f32 (f32.load offset=8 (local.get $kb))) (f64.mul (local.get $q) (local.get $nz)))))
+          (local.set $j (i32.add (local.get $j) (i32.const 1)))
+          (br $scatter)))
+        (br $next))))`;
+}
+
 /** The TypeScript module that carries the kernel's bytes. */
 async function source() {
   const wabt = await wabtInit();
@@ -214,10 +285,10 @@ async function source() {
     '// Made by scripts/build-kernels.mjs (npm run build:kernels) from the text it holds; do not edit.',
     '',
     '/**',
-    ' * The length kernel (see wasm-lengths.ts) on a shared memory, as base64 of its binary; the same on a plain memory',
+    " * The solver's kernels (see wasm-kernels.ts) on a shared memory, as base64 of their binary; the same on a plain memory",
     " * differs in one byte, the memory import's flags.",
     ' */',
-    'export const LENGTH_KERNEL = [',
+    'export const KERNELS = [',
     ...lines,
     "].join('');",
     '',
@@ -231,7 +302,7 @@ if (process.argv.includes('--print')) {
 const text = await source();
 if (process.argv.includes('--check')) {
   if (readFileSync(OUT, 'utf8') !== text) {
-    console.error('build-kernels: src/core/solver/wasm-lengths-bytes.ts differs from its source; run npm run build:kernels');
+    console.error('build-kernels: src/core/solver/wasm-kernels-bytes.ts differs from its source; run npm run build:kernels');
     process.exit(1);
   }
 } else writeFileSync(OUT, text);

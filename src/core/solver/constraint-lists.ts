@@ -59,8 +59,8 @@ export const EDGE_KINDS = 3;
 export const EDGE_RECORD = 4;
 
 /**
- * Edge lists with room for every edge of the topology; their records in `kernel` when it has room (the length kernel
- * reads them there, see wasm-lengths.ts).
+ * Edge lists with room for every edge of the topology; their records in `kernel` when it has room (the length kernels
+ * read them there, see wasm-kernels.ts).
  */
 export function createEdgeLists(topology: SkinTopology, memory: Memory = 'local', kernel: KernelMemory | null = null): EdgeLists {
   const m = topology.restLength.length;
@@ -262,8 +262,12 @@ export interface BendingLists {
   runs: Uint32Array;
 }
 
-export function createBendingLists(vertexCount: number, memory: Memory = 'local'): BendingLists {
-  return { vertices: allocate(Uint32Array, 2 * vertexCount, memory), runs: allocate(Uint32Array, 2 * (PARTS + 1), memory) };
+/** Bending lists with room for every vertex's passes; the list in `kernel` when it has room (see wasm-kernels.ts). */
+export function createBendingLists(vertexCount: number, memory: Memory = 'local', kernel: KernelMemory | null = null): BendingLists {
+  return {
+    vertices: kernel?.allocate(Uint32Array, 2 * vertexCount) ?? allocate(Uint32Array, 2 * vertexCount, memory),
+    runs: allocate(Uint32Array, 2 * (PARTS + 1), memory),
+  };
 }
 
 /** Each vertex's bending part: the part of its ring (the vertex and its neighbours; see vertexBlocks). */

@@ -1,11 +1,12 @@
 /**
- * The WebAssembly memory that holds what the solver's WebAssembly kernel reads and writes (the positions, the edge
- * records and the bulge directions), so that the kernel and the JavaScript loops share those arrays without a copy.
+ * The WebAssembly memory that holds what the solver's WebAssembly kernels read and write (the positions, the edge
+ * records, the bulge directions and the bending's arrays), so that the kernels and the JavaScript loops share those
+ * arrays without a copy.
  */
 import { EDGE_RECORD } from './constraint-lists';
 import type { Memory } from './memory';
 import type { SkinTopology } from './topology';
-import { lengthKernelModule } from './wasm-lengths';
+import { kernelModule } from './wasm-kernels';
 
 /** Bytes in a WebAssembly page. */
 const WASM_PAGE = 65536;
@@ -13,6 +14,11 @@ const WASM_PAGE = 65536;
 const ALIGN = 16;
 /** Room after the arrays: the held-edge kernel reads a whole group of four records past a list's last one. */
 const TAIL = 64;
+/** The arrays a skin's kernels read, at most: what forSkin makes room for (each start aligned). */
+const KERNEL_ARRAYS = 12;
+
+/** A typed array type the kernel memory holds. */
+type KernelArray = Float32Array | Float64Array | Uint32Array | Uint8Array;
 
 /** Each kernel memory by its buffer, so that a solver given positions finds the memory they lie in. */
 const owners = new WeakMap<ArrayBufferLike, KernelMemory>();
@@ -26,14 +32,20 @@ export class KernelMemory {
   }
 
   /**
-   * A memory with room for a skin's positions, edge records and bulge directions, shared when `memory` is `shared`; null where the
-   * length kernel cannot run here (the solver then keeps its arrays in plain typed arrays and the JavaScript loops).
+   * A memory with room for a skin's positions, edge records and bulge directions, and for the bending's rest normals,
+   * neighbours, constraint at rest, gains, inverse degrees, passes and list; shared when `memory` is `shared`. Null
+   * where the kernels cannot run here (the solver then keeps its arrays in plain typed arrays and the JavaScript loops).
    */
   static forSkin(topology: SkinTopology, memory: Memory): KernelMemory | null {
     const shared = memory === 'shared';
-    if (!lengthKernelModule(shared)) return null;
+    if (!kernelModule(shared)) return null;
     const n = topology.vertexCount;
-    const bytes = 4 * (3 * n + EDGE_RECORD * topology.restLength.length + 3 * n) + 3 * ALIGN + TAIL;
+    const edges = EDGE_RECORD * topology.restLength.length;
+    const neighbours = topology.neighbourStart[n];
+    // Floats and words: positions, records, directions, normals, starts, offsets, gains, inverse degrees, the list
+    // (two words a vertex); doubles: the constraint at rest; bytes: the passes.
+    const words = 3 * n + edges + 3 * n + 3 * n + (n + 1) + neighbours + n + n + 2 * n;
+    const bytes = 4 * words + 8 * n + n + KERNEL_ARRAYS * ALIGN + TAIL;
     const pages = Math.ceil(bytes / WASM_PAGE);
     try {
       return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }));
@@ -45,6 +57,17 @@ export class KernelMemory {
   /** The kernel memory `array` lies in, if any. */
   static of(array: ArrayBufferView): KernelMemory | null {
     return owners.get(array.buffer) ?? null;
+  }
+
+  /** A copy of `array` in the memory's free room; null when too little is left. */
+  copy<T extends KernelArray>(array: T): T | null {
+    const Type = array.constructor as unknown as {
+      new (buffer: ArrayBufferLike, offset: number, length: number): T;
+      BYTES_PER_ELEMENT: number;
+    };
+    const out = this.allocate(Type, array.length);
+    (out as KernelArray | null)?.set(array as never);
+    return out;
   }
 
   /** A typed array of `length` elements from the memory's free room; null when too little is left. */

@@ -4,7 +4,7 @@ import type { KernelMemory } from './kernel-memory';
 import { allocate, type Memory } from './memory';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
-import { lengthKernel } from './wasm-lengths';
+import { wasmKernels } from './wasm-kernels';
 import type { SkinTopology } from './topology';
 
 /**
@@ -29,7 +29,7 @@ export function projectLengths(
   const K = EDGE_KINDS;
   // The kernel reads the positions, the records and the directions by their places in its memory.
   const directions = a.bulgeDirections;
-  const kernel = a.kernelMemory && x.buffer === ends.buffer && x.buffer === directions.buffer ? lengthKernel(a.kernelMemory) : null;
+  const kernel = a.kernelMemory && x.buffer === ends.buffer && x.buffer === directions.buffer ? wasmKernels(a.kernelMemory) : null;
   for (let c = 0; K * c + K < runs.length; c++) {
     let f0 = runs[K * c];
     let f1 = runs[K * c + 1];

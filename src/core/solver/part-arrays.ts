@@ -28,8 +28,8 @@ export interface PartArrays {
   vertexTriangles: Uint32Array;
   edges: EdgeLists;
   /**
-   * The WebAssembly memory the positions and the edge records lie in, where the length kernel runs (see
-   * wasm-lengths.ts); null: the JavaScript loops project the edges.
+   * The WebAssembly memory the positions, the edge records and the bulge directions lie in, where the length kernels
+   * run (see wasm-kernels.ts; the bending kernel, where its arrays lie there too); null: the JavaScript loops.
    */
   kernelMemory: WebAssembly.Memory | null;
   /**

@@ -10,6 +10,7 @@ import { PART_EVEN, PART_EVEN_SEAM, PARTS } from './constraint-lists';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
 import { addFaceNormals, normalize } from './topology';
+import { wasmKernels } from './wasm-kernels';
 
 /**
  * Position and muscle constraints of the region's vertices `k0..k1`, each vertex's in turn (both move only their own
@@ -117,6 +118,21 @@ export function projectCollisions(a: PartArrays, half: number, halves: number, d
   }
 }
 
+/** Whether every array the bending kernel reads lies in the positions' kernel memory (see SkinSolver). */
+function bendingInKernel(a: PartArrays): boolean {
+  const b = a.positions.buffer;
+  return (
+    a.restNormals.buffer === b &&
+    a.neighbourStart.buffer === b &&
+    a.neighbourOffsets.buffer === b &&
+    a.bendRest.buffer === b &&
+    a.bendGain.buffer === b &&
+    a.inverseDegree.buffer === b &&
+    a.bendPasses.buffer === b &&
+    a.bending.vertices.buffer === b
+  );
+}
+
 /**
  * Bending (see SkinSolver.projectBending) of one part of the region's vertices in pass `pass` of a frame: keeps the
  * Laplacian of the normal displacement near its rest value. Each constraint moves a vertex and its ring, so the parts
@@ -124,6 +140,26 @@ export function projectCollisions(a: PartArrays, half: number, halves: number, d
  */
 export function projectBendingPart(a: PartArrays, pass: number, part: number): void {
   const x = a.positions;
+  const kernels = a.kernelMemory && bendingInKernel(a) ? wasmKernels(a.kernelMemory) : null;
+  if (kernels) {
+    const run = (pass === 0 ? 0 : PARTS + 1) + part;
+    const runs = a.bending.runs;
+    kernels.bend(
+      x.byteOffset,
+      a.restNormals.byteOffset,
+      a.neighbourStart.byteOffset,
+      a.neighbourOffsets.byteOffset,
+      a.bendRest.byteOffset,
+      a.bendGain.byteOffset,
+      a.inverseDegree.byteOffset,
+      a.bendPasses.byteOffset,
+      a.bending.vertices.byteOffset,
+      runs[run],
+      runs[run + 1],
+      pass,
+    );
+    return;
+  }
   const N = a.restNormals;
   const start = a.neighbourStart;
   const nb = a.neighbourOffsets;

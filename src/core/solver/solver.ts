@@ -149,12 +149,13 @@ export class SkinSolver {
     this.relaxation = new Relaxation(n, memory);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
-    this.bendGain = allocate(Float32Array, n, memory);
-    this.bendPasses = allocate(Uint8Array, n, memory);
+    // The WebAssembly kernels run where the positions lie in a kernel memory with room for their other arrays too.
+    const kernel = KernelMemory.of(this.buffers.positions);
+    const place = <T extends Float32Array | Float64Array | Uint32Array | Uint8Array>(array: T): T => kernel?.copy(array) ?? array;
+    this.bendGain = kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory);
+    this.bendPasses = kernel?.allocate(Uint8Array, n) ?? allocate(Uint8Array, n, memory);
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.carriedFrames = new CarriedFrames(topology.rest, topology.restNormals, topology.triangles, this.triangleFrames);
-    // The length kernel runs where the positions lie in a kernel memory with room for the edge records too.
-    const kernel = KernelMemory.of(this.buffers.positions);
     this.edgeLists = createEdgeLists(topology, memory, kernel);
     this.bulgeDirections = createBulgeDirections(topology, memory, kernel);
     const inKernel = (a: ArrayBufferView): boolean => kernel !== null && KernelMemory.of(a) === kernel;
@@ -162,8 +163,8 @@ export class SkinSolver {
     this.triangleLists = createTriangleLists(topology, memory);
     this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
-    this.neighbourOffsets = neighbourOffsets(topology);
-    this.bendRest = bendingAtRest(topology, this.neighbourOffsets);
+    this.neighbourOffsets = place(neighbourOffsets(topology));
+    this.bendRest = place(bendingAtRest(topology, this.neighbourOffsets));
     this.blocks = vertexBlocks(topology);
     this.bendParts = ringParts(topology, this.blocks);
     this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory);
@@ -178,13 +179,13 @@ export class SkinSolver {
     this.parts = {
       positions: this.buffers.positions,
       rest: topology.rest,
-      restNormals: topology.restNormals,
+      restNormals: place(topology.restNormals),
       targets: this.buffers.targets,
       weights: this.buffers.weights,
       normalWeights: this.buffers.normalWeights,
       normals: this.buffers.normals,
       shadedTriangles: createTriangleLists(topology, memory),
-      neighbourStart: topology.neighbourStart,
+      neighbourStart: place(topology.neighbourStart),
       neighbourOffsets: this.neighbourOffsets,
       vertexTriangleStart: topology.vertexTriangleStart,
       vertexTriangles: topology.vertexTriangles,
@@ -192,10 +193,10 @@ export class SkinSolver {
       kernelMemory,
       bulgeDirections: this.bulgeDirections,
       triangles: this.triangleLists,
-      bending: createBendingLists(n, memory),
+      bending: createBendingLists(n, memory, kernel),
       bendRest: this.bendRest,
       bendGain: this.bendGain,
-      inverseDegree: inverseDegrees(topology, memory),
+      inverseDegree: place(inverseDegrees(topology, memory)),
       bendPasses: this.bendPasses,
       secondRing: createSecondRing(topology, memory),
       unchecked,

@@ -1,13 +1,15 @@
 import { execFileSync } from 'node:child_process';
 import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
+import { PARTS } from '../src/core/solver/constraint-lists';
 import { KernelMemory } from '../src/core/solver/kernel-memory';
 import { SkinSolver } from '../src/core/solver/solver';
 import { createSolverBuffers } from '../src/core/solver/solver-buffers';
+import { projectBendingPart } from '../src/core/solver/solver-kernels';
 import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 
-// The length kernel in WebAssembly (wasm-lengths.ts) against the JavaScript loops it stands in for.
+// The WebAssembly kernels (wasm-kernels.ts) against the JavaScript loops they stand in for.
 const grid = triangleGrid(0.03, 0.03, 0.0015);
 const topology = buildTopology(grid.positions, grid.indices);
 
@@ -31,13 +33,13 @@ function oneFrame(kernel: boolean): { moved: number; positions: Float32Array; us
   return { moved, positions: Float32Array.from(x), usesKernel: KernelMemory.of(x) !== null };
 }
 
-describe('length kernel', () => {
+describe('WebAssembly kernels', () => {
   it('runs in Node, where the solver keeps its positions in the kernel memory by default', () => {
     expect(oneFrame(true).usesKernel).toBe(true);
     expect(oneFrame(false).usesKernel).toBe(false);
   });
 
-  it('moves the skin as the JavaScript loops do, to within single-precision rounding', () => {
+  it('project the edges as the JavaScript loops do, to within single-precision rounding', () => {
     const a = oneFrame(true);
     const b = oneFrame(false);
     let worst = 0;
@@ -48,7 +50,36 @@ describe('length kernel', () => {
     expect(worst).toBeLessThan(1e-5 * b.moved);
   });
 
-  it('is built from the text in scripts/build-kernels.mjs', () => {
+  it('bend the skin as the JavaScript loop does, to the bit', () => {
+    const buffers = createSolverBuffers(topology, 'shared');
+    const random = mulberry32(9);
+    const x = buffers.positions;
+    // A seeded relief of a tenth of a millimetre: every vertex's bending constraint is off its rest value.
+    for (let i = 2; i < x.length; i += 3) x[i] += (random() - 0.5) * 0.0002;
+    const s = new SkinSolver(topology, { buffers, activeRegion: false, memory: 'shared' });
+    const kernel = s.partArrays();
+    // The same arrays but the gains, copied out of the kernel memory: projectBendingPart then takes its JavaScript loop.
+    const loop = { ...kernel, bendGain: Float32Array.from(kernel.bendGain) };
+    const start = Float32Array.from(x);
+    const bend = (a: typeof kernel): Float32Array => {
+      x.set(start);
+      for (let pass = 0; pass < 3; pass++) for (let part = 0; part < PARTS; part++) projectBendingPart(a, pass, part);
+      return Float32Array.from(x);
+    };
+    const byKernel = bend(kernel);
+    const byLoop = bend(loop);
+    let moved = 0;
+    let differ = 0;
+    for (let i = 0; i < x.length; i++) {
+      moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
+      if (byKernel[i] !== byLoop[i]) differ++;
+    }
+    expect(KernelMemory.of(kernel.bendGain)).not.toBeNull();
+    expect(moved).toBeGreaterThan(1e-5);
+    expect(differ).toBe(0);
+  });
+
+  it('are built from the text in scripts/build-kernels.mjs', () => {
     expect(() => execFileSync(process.execPath, ['scripts/build-kernels.mjs', '--check'], { stdio: 'pipe' })).not.toThrow();
   });
 });

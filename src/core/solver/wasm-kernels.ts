@@ -1,0 +1,105 @@
+/**
+ * The solver's WebAssembly kernels: the length passes' loops (projectFreeEdges, projectHeldEdges in length-kernels.ts)
+ * four edges at a time in 128-bit lanes of 32-bit floats, about twice as fast as the JavaScript loops, and the first
+ * ring's bending (projectBendingPart in solver-kernels.ts) as its loop computes, to the bit, about three times as fast
+ * (docs/solver-notes.md, "The length kernel in WebAssembly", "The bending kernel in WebAssembly"). Their bytes come
+ * from scripts/build-kernels.mjs. Where WebAssembly, its lanes or its compilation are not allowed (an old browser, a
+ * page whose content security policy forbids it), the solver keeps the JavaScript loops.
+ */
+import { KERNELS } from './wasm-kernels-bytes';
+
+/** The kernels' entry points on one memory; every array argument is a byte address in that memory. */
+export interface WasmKernels {
+  /**
+   * Projects the free edges whose records are the words `j0..j1` (four a record) of the records at byte `records`,
+   * on the positions at byte `positions`, each end moving by `share` (twice the stiffness) times the Padé error.
+   */
+  free(positions: number, records: number, share: number, j0: number, j1: number): void;
+  /**
+   * Projects the held edges of records `j0..j1` as projectHeldEdges does: `half` is half the stiffness, `bulge` the
+   * skin's, `slack` the band's lower end (1 - pretension); the bulge directions lie at byte `directions`.
+   */
+  held(positions: number, records: number, directions: number, half: number, bulge: number, slack: number, j0: number, j1: number): void;
+  /**
+   * Projects the first ring's bending of list entries `r0..r1` in pass `pass`, as projectBendingPart does: the
+   * positions, rest normals, neighbour starts and offsets, constraint at rest, gains, inverse degrees, passes and the
+   * list at their byte addresses.
+   */
+  bend(
+    positions: number,
+    normals: number,
+    starts: number,
+    offsets: number,
+    atRest: number,
+    gains: number,
+    inverse: number,
+    passes: number,
+    list: number,
+    r0: number,
+    r1: number,
+    pass: number,
+  ): void;
+}
+
+/** The compiled modules for a plain and a shared memory; null where they cannot be compiled, undefined before. */
+const modules: (WebAssembly.Module | null | undefined)[] = [undefined, undefined];
+/** Each memory's instance, made once per thread. */
+const instances = new WeakMap<WebAssembly.Memory, WasmKernels>();
+
+/** Whether `memory` is a shared WebAssembly memory (its buffer a SharedArrayBuffer). */
+function isSharedMemory(memory: WebAssembly.Memory): boolean {
+  return typeof SharedArrayBuffer !== 'undefined' && memory.buffer instanceof SharedArrayBuffer;
+}
+
+/** The byte of the memory import's limits flags in a module's binary: after `memory` and its kind; -1 if none. */
+function importFlags(bytes: Uint8Array): number {
+  const name = [6, 0x6d, 0x65, 0x6d, 0x6f, 0x72, 0x79, 2, 3];
+  for (let i = 0; i + name.length <= bytes.length; i++) {
+    let k = 0;
+    while (k < name.length && bytes[i + k] === name[k]) k++;
+    if (k === name.length) return i + name.length - 1;
+  }
+  return -1;
+}
+
+/** The kernels' module for a plain or shared memory; null where this runtime cannot compile it. */
+export function kernelModule(shared: boolean): WebAssembly.Module | null {
+  const k = shared ? 1 : 0;
+  if (modules[k] !== undefined) return modules[k];
+  modules[k] = null;
+  try {
+    if (typeof WebAssembly === 'undefined' || typeof atob === 'undefined') return null;
+    const text = atob(KERNELS);
+    const bytes = new Uint8Array(text.length);
+    for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+    if (!shared) {
+      // The binary imports a shared memory; a plain one differs only in the import's limits flags (shared and a
+      // maximum, 3, against a maximum alone, 1), which follow the import's name and kind (2, a memory).
+      const at = importFlags(bytes);
+      if (at < 0) return null;
+      bytes[at] = 1;
+    }
+    // A small module compiles synchronously on any thread; validate first so that a runtime without the lanes says
+    // so instead of throwing.
+    if (WebAssembly.validate(bytes)) modules[k] = new WebAssembly.Module(bytes);
+  } catch {
+    modules[k] = null;
+  }
+  return modules[k];
+}
+
+/** The kernels on `memory` (made on first use in this thread); null where they cannot be made. */
+export function wasmKernels(memory: WebAssembly.Memory): WasmKernels | null {
+  const known = instances.get(memory);
+  if (known) return known;
+  const module = kernelModule(isSharedMemory(memory));
+  if (!module) return null;
+  try {
+    const instance = new WebAssembly.Instance(module, { env: { memory } });
+    const kernels = instance.exports as unknown as WasmKernels;
+    instances.set(memory, kernels);
+    return kernels;
+  } catch {
+    return null;
+  }
+}
