@@ -115,7 +115,7 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
         (br_if $end (i32.ge_u (local.get $j) (local.get $j1)))
         (call $one (local.get $xp) (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))) (local.get $s0))
         (local.set $j (i32.add (local.get $j) (i32.const 4)))
-        (br $tail))))${heldKernel()}${bendKernel()}
+        (br $tail))))${heldKernel()}${bendKernel()}${secondRingKernels()}
 )
 `;
 }
@@ -268,6 +268,97 @@ function bendKernel() {
             (f32.demote_f64 (f64.sub (f64.promote_f32 (f32.load offset=8 (local.get $kb))) (f64.mul (local.get $q) (local.get $nz)))))
           (local.set $j (i32.add (local.get $j) (i32.const 1)))
           (br $scatter)))
+        (br $next))))`;
+}
+
+/** Three f64 products of the xyz floats at address local `$a` with `$nx`, `$ny`, `$nz`, summed as the loops sum them. */
+function heightAt(a) {
+  const f = (o, n) => `(f64.mul (f64.promote_f32 (f32.load offset=${o} (local.get $${a}))) (local.get $${n}))`;
+  return `(f64.add (f64.add ${f(0, 'nx')}\n            ${f(4, 'ny')})\n            ${f(8, 'nz')})`;
+}
+
+/**
+ * The second ring's bending (projectSecondRingPart in second-ring.ts), in its two halves: `ringSteps`, each region
+ * vertex's step and its ring's moves, and `ringGather`, each vertex's own step less its rings' moves; in the loop's
+ * double-precision arithmetic, so that the result is its to the bit. Arrays at bytes: positions `$xp`, rest normals
+ * `$np`, the region's vertices `$vp`, the rings' CSR starts `$sp` and xyz offsets `$op`, inverse sizes `$wp`, the
+ * constraint at rest `$ap` (doubles), gains `$gp`, reach `$hp` (bytes), moves `$mp` and steps `$tp`; region entries
+ * `$k0..$k1`.
+ */
+function secondRingKernels() {
+  const word = (base, index) => `(i32.add (local.get $${base}) (i32.shl (local.get $${index}) (i32.const 2)))`;
+  return `
+  (func (export "ringSteps") (param $xp i32) (param $np i32) (param $vp i32) (param $sp i32) (param $op i32)
+    (param $wp i32) (param $ap i32) (param $gp i32) (param $mp i32) (param $tp i32) (param $k0 i32) (param $k1 i32)
+    (local $k i32) (local $v i32) (local $j i32) (local $j1 i32) (local $ib i32) (local $kb i32) (local $g f64)
+    (local $nx f64) (local $ny f64) (local $nz f64) (local $mean f64) (local $w f64) (local $step f64) (local $q f64)
+    (local.set $k (local.get $k0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
+        (local.set $v (i32.load ${word('vp', 'k')}))
+        (local.set $k (i32.add (local.get $k) (i32.const 1)))
+        (local.set $g (f64.promote_f32 (f32.load ${word('gp', 'v')})))
+        (local.set $ib (i32.mul (local.get $v) (i32.const 12)))
+        (local.set $nx (f64.promote_f32 (f32.load (i32.add (local.get $np) (local.get $ib)))))
+        (local.set $ny (f64.promote_f32 (f32.load offset=4 (i32.add (local.get $np) (local.get $ib)))))
+        (local.set $nz (f64.promote_f32 (f32.load offset=8 (i32.add (local.get $np) (local.get $ib)))))
+        (local.set $w (f64.promote_f32 (f32.load ${word('wp', 'v')})))
+        (local.set $step (f64.const 0))
+        (if (f64.ne (local.get $g) (f64.const 0)) (then
+          (local.set $j (i32.load ${word('sp', 'v')}))
+          (local.set $j1 (i32.load offset=4 ${word('sp', 'v')}))
+          (local.set $mean (f64.const 0))
+          (block $g1 (loop $gather
+            (br_if $g1 (i32.ge_u (local.get $j) (local.get $j1)))
+            (local.set $kb (i32.add (local.get $xp) (i32.shl (i32.load ${word('op', 'j')}) (i32.const 2))))
+            (local.set $mean (f64.add (local.get $mean) ${heightAt('kb')}))
+            (local.set $j (i32.add (local.get $j) (i32.const 1)))
+            (br $gather)))
+          (local.set $kb (i32.add (local.get $xp) (local.get $ib)))
+          (local.set $step (f64.mul (local.get $g)
+            (f64.sub (f64.sub (f64.mul (local.get $mean) (local.get $w)) ${heightAt('kb')})
+              (f64.load (i32.add (local.get $ap) (i32.shl (local.get $v) (i32.const 3)))))))))
+        (local.set $q (f64.mul (local.get $step) (local.get $w)))
+        (local.set $kb (i32.add (local.get $mp) (local.get $ib)))
+        (f32.store (local.get $kb) (f32.demote_f64 (f64.mul (local.get $q) (local.get $nx))))
+        (f32.store offset=4 (local.get $kb) (f32.demote_f64 (f64.mul (local.get $q) (local.get $ny))))
+        (f32.store offset=8 (local.get $kb) (f32.demote_f64 (f64.mul (local.get $q) (local.get $nz))))
+        (f32.store ${word('tp', 'v')} (f32.demote_f64 (local.get $step)))
+        (br $next))))
+  (func (export "ringGather") (param $xp i32) (param $np i32) (param $vp i32) (param $sp i32) (param $op i32)
+    (param $hp i32) (param $mp i32) (param $tp i32) (param $k0 i32) (param $k1 i32)
+    (local $k i32) (local $u i32) (local $j i32) (local $j1 i32) (local $ib i32) (local $kb i32) (local $own f64)
+    (local $dx f64) (local $dy f64) (local $dz f64)
+    (local.set $k (local.get $k0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
+        (local.set $u (i32.load ${word('vp', 'k')}))
+        (local.set $k (i32.add (local.get $k) (i32.const 1)))
+        (br_if $next (i32.eqz (i32.load8_u (i32.add (local.get $hp) (local.get $u)))))
+        (local.set $ib (i32.mul (local.get $u) (i32.const 12)))
+        (local.set $own (f64.promote_f32 (f32.load ${word('tp', 'u')})))
+        (local.set $kb (i32.add (local.get $np) (local.get $ib)))
+        (local.set $dx (f64.mul (local.get $own) (f64.promote_f32 (f32.load (local.get $kb)))))
+        (local.set $dy (f64.mul (local.get $own) (f64.promote_f32 (f32.load offset=4 (local.get $kb)))))
+        (local.set $dz (f64.mul (local.get $own) (f64.promote_f32 (f32.load offset=8 (local.get $kb)))))
+        (local.set $j (i32.load ${word('sp', 'u')}))
+        (local.set $j1 (i32.load offset=4 ${word('sp', 'u')}))
+        (block $g1 (loop $gather
+          (br_if $g1 (i32.ge_u (local.get $j) (local.get $j1)))
+          (local.set $kb (i32.add (local.get $mp) (i32.shl (i32.load ${word('op', 'j')}) (i32.const 2))))
+          (local.set $dx (f64.sub (local.get $dx) (f64.promote_f32 (f32.load (local.get $kb)))))
+          (local.set $dy (f64.sub (local.get $dy) (f64.promote_f32 (f32.load offset=4 (local.get $kb)))))
+          (local.set $dz (f64.sub (local.get $dz) (f64.promote_f32 (f32.load offset=8 (local.get $kb)))))
+          (local.set $j (i32.add (local.get $j) (i32.const 1)))
+          (br $gather)))
+        (local.set $kb (i32.add (local.get $xp) (local.get $ib)))
+        (f32.store (local.get $kb) (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load (local.get $kb))) (local.get $dx))))
+        (f32.store offset=4 (local.get $kb)
+          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=4 (local.get $kb))) (local.get $dy))))
+        (f32.store offset=8 (local.get $kb)
+          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=8 (local.get $kb))) (local.get $dz))))
         (br $next))))`;
 }
 

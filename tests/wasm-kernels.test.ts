@@ -5,6 +5,7 @@ import { PARTS } from '../src/core/solver/constraint-lists';
 import { KernelMemory } from '../src/core/solver/kernel-memory';
 import { SkinSolver } from '../src/core/solver/solver';
 import { createSolverBuffers } from '../src/core/solver/solver-buffers';
+import { projectSecondRingPart } from '../src/core/solver/second-ring';
 import { projectBendingPart } from '../src/core/solver/solver-kernels';
 import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
@@ -76,6 +77,38 @@ describe('WebAssembly kernels', () => {
     }
     expect(KernelMemory.of(kernel.bendGain)).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-5);
+    expect(differ).toBe(0);
+  });
+
+  it('bend the fine head two rings out as the JavaScript loop does, to the bit', async () => {
+    const { loadHeadSimulation } = await import('./fixtures/head-simulation');
+    const sim = await loadHeadSimulation('high', {}, { memory: 'shared' });
+    sim.expression.applyPreset('happiness', 1);
+    sim.apply();
+    for (let f = 0; f < 3; f++) sim.host.step();
+    const kernel = sim.host.solver.partArrays();
+    const ring = kernel.secondRing;
+    // The same arrays but the ring's gains, copied out of the kernel memory: the pass then takes its JavaScript loop.
+    const loop = { ...kernel, secondRing: { ...ring, gain: Float32Array.from(ring.gain) } };
+    const x = kernel.positions;
+    const start = Float32Array.from(x);
+    const count = sim.host.solver.activeVertexCount;
+    const pass = (a: typeof kernel): Float32Array => {
+      x.set(start);
+      projectSecondRingPart(a, 0, count, null);
+      return Float32Array.from(x);
+    };
+    const byKernel = pass(kernel);
+    const byLoop = pass(loop);
+    let moved = 0;
+    let differ = 0;
+    for (let i = 0; i < x.length; i++) {
+      moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
+      if (byKernel[i] !== byLoop[i]) differ++;
+    }
+    expect(ring.active).toBe(true);
+    expect(KernelMemory.of(ring.gain)).not.toBeNull();
+    expect(moved).toBeGreaterThan(1e-6);
     expect(differ).toBe(0);
   });
 

@@ -12,6 +12,7 @@
  * that much, and the two solves agree to about that much. The skin's response fades slowly (the tissue under it is
  * soft next to the skin's stretch), so a local expression still reaches several centimetres out at this tolerance.
  */
+import type { KernelMemory } from './kernel-memory';
 import { allocate, type Memory } from './memory';
 import type { SkinTopology } from './topology';
 
@@ -75,13 +76,16 @@ export class ActiveRegion {
   private readonly quiet: Uint8Array;
   private frame = 0;
 
-  /** `memory`: where the vertex list lives (shared, for a partner thread to walk it). */
-  constructor(topology: SkinTopology, enabled: boolean, memory: Memory = 'local') {
+  /**
+   * `memory`: where the vertex list lives (shared, for a partner thread to walk it); in `kernel` where it has room (the
+   * second ring's bending kernel walks it there, see wasm-kernels.ts).
+   */
+  constructor(topology: SkinTopology, enabled: boolean, memory: Memory = 'local', kernel: KernelMemory | null = null) {
     const n = topology.vertexCount;
     this.topology = topology;
     this.enabled = enabled;
     this.inside = new Uint8Array(n);
-    this.vertices = allocate(Uint32Array, n, memory);
+    this.vertices = kernel?.allocate(Uint32Array, n) ?? allocate(Uint32Array, n, memory);
     this.ring = new Uint32Array(n);
     this.border = new Uint32Array(n);
     this.onRing = new Uint8Array(n);

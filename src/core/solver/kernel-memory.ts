@@ -5,6 +5,7 @@
  */
 import { EDGE_RECORD } from './constraint-lists';
 import type { Memory } from './memory';
+import { ringStencils } from './second-ring';
 import type { SkinTopology } from './topology';
 import { kernelModule } from './wasm-kernels';
 
@@ -15,7 +16,7 @@ const ALIGN = 16;
 /** Room after the arrays: the held-edge kernel reads a whole group of four records past a list's last one. */
 const TAIL = 64;
 /** The arrays a skin's kernels read, at most: what forSkin makes room for (each start aligned). */
-const KERNEL_ARRAYS = 12;
+const KERNEL_ARRAYS = 24;
 
 /** A typed array type the kernel memory holds. */
 type KernelArray = Float32Array | Float64Array | Uint32Array | Uint8Array;
@@ -32,8 +33,9 @@ export class KernelMemory {
   }
 
   /**
-   * A memory with room for a skin's positions, edge records and bulge directions, and for the bending's rest normals,
-   * neighbours, constraint at rest, gains, inverse degrees, passes and list; shared when `memory` is `shared`. Null
+   * A memory with room for a skin's positions, edge records and bulge directions, for the bending's rest normals,
+   * neighbours, constraint at rest, gains, inverse degrees, passes and list, and for the second ring's arrays and the
+   * region's vertex list; shared when `memory` is `shared`. Null
    * where the kernels cannot run here (the solver then keeps its arrays in plain typed arrays and the JavaScript loops).
    */
   static forSkin(topology: SkinTopology, memory: Memory): KernelMemory | null {
@@ -42,10 +44,13 @@ export class KernelMemory {
     const n = topology.vertexCount;
     const edges = EDGE_RECORD * topology.restLength.length;
     const neighbours = topology.neighbourStart[n];
+    const ring = ringStencils(topology).offsets.length;
     // Floats and words: positions, records, directions, normals, starts, offsets, gains, inverse degrees, the list
-    // (two words a vertex); doubles: the constraint at rest; bytes: the passes.
-    const words = 3 * n + edges + 3 * n + 3 * n + (n + 1) + neighbours + n + n + 2 * n;
-    const bytes = 4 * words + 8 * n + n + KERNEL_ARRAYS * ALIGN + TAIL;
+    // (two words a vertex); the second ring's starts, offsets, inverse sizes, gains, moves (three a vertex) and steps,
+    // the region's vertices. Doubles: both rings' constraints at rest. Bytes: the passes, the second ring's reach.
+    const first = 3 * n + edges + 3 * n + 3 * n + (n + 1) + neighbours + n + n + 2 * n;
+    const second = n + 1 + ring + n + n + 3 * n + n + n;
+    const bytes = 4 * (first + second) + 8 * 2 * n + 2 * n + KERNEL_ARRAYS * ALIGN + TAIL;
     const pages = Math.ceil(bytes / WASM_PAGE);
     try {
       return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }));

@@ -5,11 +5,13 @@
  * for: one spacing of folds at every mesh resolution.
  */
 import { BENDING_CALIBRATION } from './bending-setup';
+import type { KernelMemory } from './kernel-memory';
 import { allocate, type Memory } from './memory';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
 import type { SkinParameters } from './skin-parameters';
 import type { SkinTopology } from './topology';
+import { wasmKernels } from './wasm-kernels';
 
 /**
  * The most bending share the second ring takes per outer iteration. Each vertex's first ring is already capped at a
@@ -69,14 +71,58 @@ export interface SecondRing {
   active: boolean;
 }
 
-/** The second rings of a topology at rest; their shares are set by setSecondRingShares. */
-export function createSecondRing(topology: SkinTopology, memory: Memory): SecondRing {
+/** The second rings' stencils of a topology at rest, in plain memory: what createSecondRing copies. */
+type RingStencils = Pick<SecondRing, 'start' | 'offsets' | 'inverse' | 'ratio' | 'rest'>;
+
+/** Each topology's stencils, made once: the kernel memory's size (see KernelMemory) and each solver read them. */
+const stencilsOf = new WeakMap<SkinTopology, RingStencils>();
+
+/** The second rings of a topology at rest (made once per topology, about 50 ms for the high head). */
+export function ringStencils(topology: SkinTopology): RingStencils {
+  const known = stencilsOf.get(topology);
+  if (known) return known;
+  const made = makeStencils(topology);
+  stencilsOf.set(topology, made);
+  return made;
+}
+
+/**
+ * The second rings of a topology at rest, their shares 0 until setSecondRingShares sets them; in `kernel` where it
+ * has room (the bending kernel reads them there, see wasm-kernels.ts), else in `memory`.
+ */
+export function createSecondRing(topology: SkinTopology, memory: Memory, kernel: KernelMemory | null = null): SecondRing {
+  const n = topology.vertexCount;
+  const s = ringStencils(topology);
+  const place = <T extends Float32Array | Float64Array | Uint32Array | Uint8Array>(array: T): T => {
+    const placed = kernel?.copy(array);
+    if (placed) return placed;
+    const Type = array.constructor as unknown as { new (buffer: ArrayBufferLike): T; BYTES_PER_ELEMENT: number };
+    const out = allocate(Type, array.length, memory);
+    (out as Float32Array).set(array as never);
+    return out;
+  };
+  return {
+    start: place(s.start),
+    offsets: place(s.offsets),
+    inverse: place(s.inverse),
+    ratio: s.ratio,
+    rest: place(s.rest),
+    gain: kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory),
+    reach: kernel?.allocate(Uint8Array, n) ?? allocate(Uint8Array, n, memory),
+    ringMove: kernel?.allocate(Float32Array, 3 * n) ?? allocate(Float32Array, 3 * n, memory),
+    ownStep: kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory),
+    active: false,
+  };
+}
+
+/** Finds each vertex's ring two edges out and what the constraint reads of it at rest (see ringStencils). */
+function makeStencils(topology: SkinTopology): RingStencils {
   const n = topology.vertexCount;
   const X = topology.rest;
   const N = topology.restNormals;
   const start = topology.neighbourStart;
   const nb = topology.neighbours;
-  const ringStart = allocate(Uint32Array, n + 1, memory);
+  const ringStart = new Uint32Array(n + 1);
   // At most the sum of the first ring's degrees, each vertex.
   let most = 0;
   for (let v = 0; v < n; v++) for (let j = start[v]; j < start[v + 1]; j++) most += start[nb[j] + 1] - start[nb[j]];
@@ -122,27 +168,15 @@ export function createSecondRing(topology: SkinTopology, memory: Memory): Second
     ratio[v] = flat && degree1 > 0 && degree2 > 0 && first > 0 ? second / degree2 / (first / degree1) : 0;
     ringStart[v + 1] = count;
   }
-  const offsets = allocate(Uint32Array, count, memory);
-  offsets.set(found.subarray(0, count));
-  const inverse = allocate(Float32Array, n, memory);
+  const offsets = found.slice(0, count);
+  const inverse = new Float32Array(n);
   for (let v = 0; v < n; v++) {
     const size = ringStart[v + 1] - ringStart[v];
     inverse[v] = size > 0 ? 1 / size : 0;
   }
-  const rest = allocate(Float64Array, n, memory);
+  const rest = new Float64Array(n);
   for (let v = 0; v < n; v++) rest[v] = heightOverRing(X, N, ringStart, offsets, inverse, v, 0);
-  return {
-    start: ringStart,
-    offsets,
-    inverse,
-    ratio,
-    rest,
-    gain: allocate(Float32Array, n, memory),
-    reach: allocate(Uint8Array, n, memory),
-    ringMove: allocate(Float32Array, 3 * n, memory),
-    ownStep: allocate(Float32Array, n, memory),
-    active: false,
-  };
+  return { start: ringStart, offsets, inverse, ratio, rest };
 }
 
 /**
@@ -203,6 +237,24 @@ export function setSecondRingShares(ring: SecondRing, topology: SkinTopology, ne
     for (let j = start[v]; j < start[v + 1]; j++) reach[offsets[j] / 3] = 1;
   }
 }
+/** Whether every array the second ring's kernels read lies in the positions' kernel memory (see SkinSolver). */
+function ringInKernel(a: PartArrays): boolean {
+  const b = a.positions.buffer;
+  const r = a.secondRing;
+  return (
+    a.restNormals.buffer === b &&
+    a.regionVertices.buffer === b &&
+    r.start.buffer === b &&
+    r.offsets.buffer === b &&
+    r.inverse.buffer === b &&
+    r.rest.buffer === b &&
+    r.gain.buffer === b &&
+    r.reach.buffer === b &&
+    r.ringMove.buffer === b &&
+    r.ownStep.buffer === b
+  );
+}
+
 /**
  * One pass of the second-ring constraints over the region's vertices `regionVertices[from..to]` (this thread's
  * half): each constraint asks for the ring's mean height over the vertex as at rest, moving the vertex along its rest
@@ -217,6 +269,21 @@ export function projectSecondRingPart(a: PartArrays, from: number, to: number, b
   const N = a.restNormals;
   const V = a.regionVertices;
   const { start, offsets, inverse, rest, gain, reach, ringMove, ownStep } = a.secondRing;
+  const kernels = a.kernelMemory && ringInKernel(a) ? wasmKernels(a.kernelMemory) : null;
+  if (kernels) {
+    // Byte addresses, each read once (no array: this runs every outer iteration).
+    const xp = x.byteOffset;
+    const np = N.byteOffset;
+    const vp = V.byteOffset;
+    const sp = start.byteOffset;
+    const op = offsets.byteOffset;
+    const mp = ringMove.byteOffset;
+    const tp = ownStep.byteOffset;
+    kernels.ringSteps(xp, np, vp, sp, op, inverse.byteOffset, rest.byteOffset, gain.byteOffset, mp, tp, from, to);
+    if (board) meet(board);
+    kernels.ringGather(xp, np, vp, sp, op, reach.byteOffset, mp, tp, from, to);
+    return;
+  }
   for (let k = from; k < to; k++) {
     const v = V[k];
     const g = gain[v];

@@ -167,7 +167,7 @@ export class SkinSolver {
     this.bendRest = place(bendingAtRest(topology, this.neighbourOffsets));
     this.blocks = vertexBlocks(topology);
     this.bendParts = ringParts(topology, this.blocks);
-    this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory);
+    this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory, kernel);
     const c = new CollisionCandidates(topology, options.colliders ?? [], memory);
     this.collisions = c;
     this.lips = options.mouth ? LipContact.find(topology.rest, topology.restNormals, options.mouth) : null;
@@ -198,7 +198,7 @@ export class SkinSolver {
       bendGain: this.bendGain,
       inverseDegree: place(inverseDegrees(topology, memory)),
       bendPasses: this.bendPasses,
-      secondRing: createSecondRing(topology, memory),
+      secondRing: createSecondRing(topology, memory, kernel),
       unchecked,
       uncheckedWords: new Uint32Array(unchecked.buffer),
       watched,

@@ -39,6 +39,34 @@ export interface WasmKernels {
     r1: number,
     pass: number,
   ): void;
+  /** The second ring's steps and moves of region entries `k0..k1` (the first half of projectSecondRingPart). */
+  ringSteps(
+    positions: number,
+    normals: number,
+    region: number,
+    starts: number,
+    offsets: number,
+    inverse: number,
+    atRest: number,
+    gains: number,
+    moves: number,
+    steps: number,
+    k0: number,
+    k1: number,
+  ): void;
+  /** Each region vertex of entries `k0..k1` takes its step less its rings' moves (the second half). */
+  ringGather(
+    positions: number,
+    normals: number,
+    region: number,
+    starts: number,
+    offsets: number,
+    reach: number,
+    moves: number,
+    steps: number,
+    k0: number,
+    k1: number,
+  ): void;
 }
 
 /** The compiled modules for a plain and a shared memory; null where they cannot be compiled, undefined before. */
