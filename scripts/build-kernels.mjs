@@ -115,7 +115,7 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
         (br_if $end (i32.ge_u (local.get $j) (local.get $j1)))
         (call $one (local.get $xp) (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))) (local.get $s0))
         (local.set $j (i32.add (local.get $j) (i32.const 4)))
-        (br $tail))))${heldKernel()}${bendKernel()}${secondRingKernels()}
+        (br $tail))))${heldKernel()}${bendKernel()}${secondRingKernels()}${orientKernel()}
 )
 `;
 }
@@ -360,6 +360,115 @@ function secondRingKernels() {
         (f32.store offset=8 (local.get $kb)
           (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=8 (local.get $kb))) (local.get $dz))))
         (br $next))))`;
+}
+
+/**
+ * Orientation (projectOrientationPart in orientation-kernel.ts): the listed triangles `$t0..$t1` of a part, in the
+ * loop's order and double-precision arithmetic, so that the result is its to the bit. `$mode` is ORIENT_FULL (0),
+ * ORIENT_AGAIN (1) or ORIENT_WATCHED (2); `$floor` scales the bound. Arrays at bytes: positions `$xp`, corners `$cp`
+ * (xyz offsets), frames `$fp` (xyzA), the unchecked and watched flags `$up`, `$wp` (bytes), each vertex's triangles'
+ * CSR starts `$sp` and triangles `$vp`, each triangle's place in the list `$lp`. Returns 1 if a triangle was more than
+ * a hair under its bound.
+ */
+function orientKernel() {
+  const f = (v) => `(local.get $${v})`;
+  const load = (base, o) => `(f64.promote_f32 (f32.load offset=${o} (local.get $${base})))`;
+  const mark = (corner) => `
+          (local.set $v (i32.div_u (local.get $${corner}) (i32.const 12)))
+          (local.set $j (i32.load (i32.add (local.get $sp) (i32.shl (local.get $v) (i32.const 2)))))
+          (local.set $j1 (i32.load offset=4 (i32.add (local.get $sp) (i32.shl (local.get $v) (i32.const 2)))))
+          (block $m1 (loop $m
+            (br_if $m1 (i32.ge_u (local.get $j) (local.get $j1)))
+            (local.set $l (i32.load (i32.add (local.get $lp)
+              (i32.shl (i32.load (i32.add (local.get $vp) (i32.shl (local.get $j) (i32.const 2)))) (i32.const 2)))))
+            (if (i32.ge_s (local.get $l) (i32.const 0)) (then (i32.store8 (i32.add (local.get $up) (local.get $l)) (i32.const 1))))
+            (local.set $j (i32.add (local.get $j) (i32.const 1)))
+            (br $m)))`;
+  const move = (corner, o, g) =>
+    `        (f32.store offset=${o} (local.get $${corner})
+          (f32.demote_f64 (f64.add ${load(corner, o)} (f64.mul ${f('lambda')} ${f(g)}))))\n`;
+  return `
+  (func (export "orient") (param $xp i32) (param $cp i32) (param $fp i32) (param $up i32) (param $wp i32) (param $sp i32)
+    (param $vp i32) (param $lp i32) (param $t0 i32) (param $t1 i32) (param $mode i32) (param $floor f64) (result i32)
+    (local $t i32) (local $flags i32) (local $a i32) (local $b i32) (local $c i32) (local $v i32) (local $j i32)
+    (local $j1 i32) (local $l i32) (local $corrected i32) (local $ax f64) (local $ay f64) (local $az f64) (local $ux f64)
+    (local $uy f64) (local $uz f64) (local $vx f64) (local $vy f64) (local $vz f64) (local $nx f64) (local $ny f64)
+    (local $nz f64) (local $bound f64) (local $area f64) (local $least f64) (local $cc f64) (local $gax f64)
+    (local $gay f64) (local $gaz f64) (local $gbx f64) (local $gby f64) (local $gbz f64) (local $gcx f64) (local $gcy f64)
+    (local $gcz f64) (local $norm f64) (local $lambda f64)
+    (local.set $flags (select (local.get $up) (local.get $wp) (i32.eq (local.get $mode) (i32.const 1))))
+    (local.set $t (local.get $t0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $t) (local.get $t1)))
+        (if (i32.ne (local.get $mode) (i32.const 0)) (then
+          ;; Four flags a word: a zero word skips four triangles.
+          (if (i32.and (i32.eqz (i32.and (local.get $t) (i32.const 3)))
+                (i32.eqz (i32.load (i32.add (local.get $flags) (local.get $t))))) (then
+            (local.set $t (i32.add (local.get $t) (i32.const 4)))
+            (br $next)))
+          (if (i32.eqz (i32.load8_u (i32.add (local.get $flags) (local.get $t)))) (then
+            (local.set $t (i32.add (local.get $t) (i32.const 1)))
+            (br $next)))))
+        (if (i32.ne (local.get $mode) (i32.const 2)) (then (i32.store8 (i32.add (local.get $up) (local.get $t)) (i32.const 0))))
+        (local.set $l (i32.add (local.get $cp) (i32.mul (local.get $t) (i32.const 12))))
+        (local.set $a (i32.add (local.get $xp) (i32.shl (i32.load (local.get $l)) (i32.const 2))))
+        (local.set $b (i32.add (local.get $xp) (i32.shl (i32.load offset=4 (local.get $l)) (i32.const 2))))
+        (local.set $c (i32.add (local.get $xp) (i32.shl (i32.load offset=8 (local.get $l)) (i32.const 2))))
+        (local.set $ax ${load('a', 0)})
+        (local.set $ay ${load('a', 4)})
+        (local.set $az ${load('a', 8)})
+        (local.set $ux (f64.sub ${load('b', 0)} ${f('ax')}))
+        (local.set $uy (f64.sub ${load('b', 4)} ${f('ay')}))
+        (local.set $uz (f64.sub ${load('b', 8)} ${f('az')}))
+        (local.set $vx (f64.sub ${load('c', 0)} ${f('ax')}))
+        (local.set $vy (f64.sub ${load('c', 4)} ${f('ay')}))
+        (local.set $vz (f64.sub ${load('c', 8)} ${f('az')}))
+        (local.set $l (i32.add (local.get $fp) (i32.shl (local.get $t) (i32.const 4))))
+        (local.set $nx ${load('l', 0)})
+        (local.set $ny ${load('l', 4)})
+        (local.set $nz ${load('l', 8)})
+        (local.set $bound ${load('l', 12)})
+        (local.set $area (f64.add (f64.add
+          (f64.mul ${f('nx')} (f64.sub (f64.mul ${f('uy')} ${f('vz')}) (f64.mul ${f('uz')} ${f('vy')})))
+          (f64.mul ${f('ny')} (f64.sub (f64.mul ${f('uz')} ${f('vx')}) (f64.mul ${f('ux')} ${f('vz')}))))
+          (f64.mul ${f('nz')} (f64.sub (f64.mul ${f('ux')} ${f('vy')}) (f64.mul ${f('uy')} ${f('vx')})))))
+        (if (i32.and (i32.eqz (local.get $mode)) (f64.lt ${f('area')} (f64.mul (f64.const 1.5) ${f('bound')}))) (then
+          (i32.store8 (i32.add (local.get $wp) (local.get $t)) (i32.const 1))))
+        (local.set $least (f64.mul ${f('floor')} ${f('bound')}))
+        (local.set $cc (f64.sub ${f('area')} ${f('least')}))
+        (local.set $t (i32.add (local.get $t) (i32.const 1)))
+        (br_if $next (f64.ge ${f('cc')} (f64.const 0)))
+        (if (f64.lt ${f('cc')} (f64.mul (f64.const -0.01) ${f('least')})) (then (local.set $corrected (i32.const 1))))
+        (local.set $gbx (f64.sub (f64.mul ${f('vy')} ${f('nz')}) (f64.mul ${f('vz')} ${f('ny')})))
+        (local.set $gby (f64.sub (f64.mul ${f('vz')} ${f('nx')}) (f64.mul ${f('vx')} ${f('nz')})))
+        (local.set $gbz (f64.sub (f64.mul ${f('vx')} ${f('ny')}) (f64.mul ${f('vy')} ${f('nx')})))
+        (local.set $gcx (f64.sub (f64.mul ${f('ny')} ${f('uz')}) (f64.mul ${f('nz')} ${f('uy')})))
+        (local.set $gcy (f64.sub (f64.mul ${f('nz')} ${f('ux')}) (f64.mul ${f('nx')} ${f('uz')})))
+        (local.set $gcz (f64.sub (f64.mul ${f('nx')} ${f('uy')}) (f64.mul ${f('ny')} ${f('ux')})))
+        (local.set $gax (f64.sub (f64.neg ${f('gbx')}) ${f('gcx')}))
+        (local.set $gay (f64.sub (f64.neg ${f('gby')}) ${f('gcy')}))
+        (local.set $gaz (f64.sub (f64.neg ${f('gbz')}) ${f('gcz')}))
+        (local.set $norm (f64.add (f64.add (f64.add (f64.add (f64.add (f64.add (f64.add (f64.add
+          (f64.mul ${f('gax')} ${f('gax')}) (f64.mul ${f('gay')} ${f('gay')})) (f64.mul ${f('gaz')} ${f('gaz')}))
+          (f64.mul ${f('gbx')} ${f('gbx')})) (f64.mul ${f('gby')} ${f('gby')})) (f64.mul ${f('gbz')} ${f('gbz')}))
+          (f64.mul ${f('gcx')} ${f('gcx')})) (f64.mul ${f('gcy')} ${f('gcy')})) (f64.mul ${f('gcz')} ${f('gcz')})))
+        (if (f64.eq ${f('norm')} (f64.const 0)) (then
+          ;; Not within its bound: check it again next time (the triangle is t - 1 now).
+          (if (i32.ne (local.get $mode) (i32.const 2)) (then
+            (i32.store8 (i32.sub (i32.add (local.get $up) (local.get $t)) (i32.const 1)) (i32.const 1))))
+          (br $next)))
+        (if (i32.ne (local.get $mode) (i32.const 2)) (then
+          ;; The corners' addresses less the positions' are 4 * their xyz offsets: 12 * their vertices.
+          (local.set $a (i32.sub (local.get $a) (local.get $xp)))
+          (local.set $b (i32.sub (local.get $b) (local.get $xp)))
+          (local.set $c (i32.sub (local.get $c) (local.get $xp)))${mark('a')}${mark('b')}${mark('c')}
+          (local.set $a (i32.add (local.get $a) (local.get $xp)))
+          (local.set $b (i32.add (local.get $b) (local.get $xp)))
+          (local.set $c (i32.add (local.get $c) (local.get $xp)))))
+        (local.set $lambda (f64.div (f64.neg ${f('cc')}) ${f('norm')}))
+${['a', 'b', 'c'].map((k) => ['x', 'y', 'z'].map((d, i) => move(k, 4 * i, `g${k}${d}`)).join('')).join('')}        (br $next)))
+    (local.get $corrected))`;
 }
 
 /** The TypeScript module that carries the kernel's bytes. */

@@ -3,6 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
 import { PARTS } from '../src/core/solver/constraint-lists';
 import { KernelMemory } from '../src/core/solver/kernel-memory';
+import { ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, projectOrientationPart } from '../src/core/solver/orientation-kernel';
 import { SkinSolver } from '../src/core/solver/solver';
 import { createSolverBuffers } from '../src/core/solver/solver-buffers';
 import { projectSecondRingPart } from '../src/core/solver/second-ring';
@@ -110,6 +111,44 @@ describe('WebAssembly kernels', () => {
     expect(KernelMemory.of(ring.gain)).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-6);
     expect(differ).toBe(0);
+  });
+
+  it('hold the triangles against turning over as the JavaScript loop does, to the bit, in every mode', () => {
+    const buffers = createSolverBuffers(topology, 'shared');
+    const random = mulberry32(13);
+    const x = buffers.positions;
+    // Squeezed to a third of its width and shaken: many triangles under their bound, some turned over.
+    for (let i = 0; i < x.length; i++) x[i] = (i % 3 === 0 ? 0.33 : 1) * x[i] + (random() - 0.5) * 0.0008;
+    const s = new SkinSolver(topology, { buffers, activeRegion: false, memory: 'shared' });
+    const kernel = s.partArrays();
+    // The same arrays but the listed triangles' places, copied out of the kernel memory: the loop runs in JavaScript.
+    const loop = { ...kernel, listedTriangle: Int32Array.from(kernel.listedTriangle) };
+    const start = Float32Array.from(x);
+    const flags = Uint8Array.from(kernel.unchecked);
+    const watched = Uint8Array.from(kernel.watched);
+    const orient = (a: typeof kernel): { x: Float32Array; unchecked: Uint8Array; watched: Uint8Array; corrected: boolean[] } => {
+      x.set(start);
+      a.unchecked.set(flags);
+      a.watched.set(watched);
+      const corrected: boolean[] = [];
+      for (const mode of [ORIENT_FULL, ORIENT_AGAIN, ORIENT_WATCHED, ORIENT_AGAIN])
+        for (let part = 0; part < PARTS; part++) corrected.push(projectOrientationPart(a, part, mode, 0.5 + 0.1 * part));
+      return { x: Float32Array.from(x), unchecked: Uint8Array.from(a.unchecked), watched: Uint8Array.from(a.watched), corrected };
+    };
+    const byKernel = orient(kernel);
+    const byLoop = orient(loop);
+    let moved = 0;
+    let differ = 0;
+    for (let i = 0; i < x.length; i++) {
+      moved = Math.max(moved, Math.abs(byLoop.x[i] - start[i]));
+      if (byKernel.x[i] !== byLoop.x[i]) differ++;
+    }
+    expect(moved).toBeGreaterThan(1e-5);
+    expect(byLoop.corrected).toContain(true);
+    expect(differ).toBe(0);
+    expect(byKernel.corrected).toEqual(byLoop.corrected);
+    expect(byKernel.unchecked).toEqual(byLoop.unchecked);
+    expect(byKernel.watched).toEqual(byLoop.watched);
   });
 
   it('are built from the text in scripts/build-kernels.mjs', () => {

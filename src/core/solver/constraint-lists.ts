@@ -189,11 +189,12 @@ export interface TriangleLists {
   readonly next: Uint32Array;
 }
 
-export function createTriangleLists(topology: SkinTopology, memory: Memory = 'local'): TriangleLists {
+/** Triangle lists with room for every triangle; their corners and frames in `kernel` when it has room. */
+export function createTriangleLists(topology: SkinTopology, memory: Memory = 'local', kernel: KernelMemory | null = null): TriangleLists {
   const count = topology.triangles.length / 3;
   return {
-    corners: allocate(Uint32Array, 3 * count, memory),
-    frames: allocate(Float32Array, 4 * count, memory),
+    corners: kernel?.allocate(Uint32Array, 3 * count) ?? allocate(Uint32Array, 3 * count, memory),
+    frames: kernel?.allocate(Float32Array, 4 * count) ?? allocate(Float32Array, 4 * count, memory),
     parts: allocate(Uint32Array, PARTS + 1, memory),
     next: new Uint32Array(PARTS),
   };

@@ -16,10 +16,10 @@ const ALIGN = 16;
 /** Room after the arrays: the held-edge kernel reads a whole group of four records past a list's last one. */
 const TAIL = 64;
 /** The arrays a skin's kernels read, at most: what forSkin makes room for (each start aligned). */
-const KERNEL_ARRAYS = 24;
+const KERNEL_ARRAYS = 32;
 
 /** A typed array type the kernel memory holds. */
-type KernelArray = Float32Array | Float64Array | Uint32Array | Uint8Array;
+type KernelArray = Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array;
 
 /** Each kernel memory by its buffer, so that a solver given positions finds the memory they lie in. */
 const owners = new WeakMap<ArrayBufferLike, KernelMemory>();
@@ -34,8 +34,9 @@ export class KernelMemory {
 
   /**
    * A memory with room for a skin's positions, edge records and bulge directions, for the bending's rest normals,
-   * neighbours, constraint at rest, gains, inverse degrees, passes and list, and for the second ring's arrays and the
-   * region's vertex list; shared when `memory` is `shared`. Null
+   * neighbours, constraint at rest, gains, inverse degrees, passes and list, for the second ring's arrays and the
+   * region's vertex list, and for the orientation's triangle lists, flags and vertex triangles; shared when `memory` is
+   * `shared`. Null
    * where the kernels cannot run here (the solver then keeps its arrays in plain typed arrays and the JavaScript loops).
    */
   static forSkin(topology: SkinTopology, memory: Memory): KernelMemory | null {
@@ -50,7 +51,12 @@ export class KernelMemory {
     // the region's vertices. Doubles: both rings' constraints at rest. Bytes: the passes, the second ring's reach.
     const first = 3 * n + edges + 3 * n + 3 * n + (n + 1) + neighbours + n + n + 2 * n;
     const second = n + 1 + ring + n + n + 3 * n + n + n;
-    const bytes = 4 * (first + second) + 8 * 2 * n + 2 * n + KERNEL_ARRAYS * ALIGN + TAIL;
+    // The orientation's: corners (three a triangle), frames (four), places in the list, each vertex's triangles (CSR);
+    // its unchecked and watched flags, a byte a triangle in whole words.
+    const triangles = topology.triangles.length / 3;
+    const orientation = 3 * triangles + 4 * triangles + triangles + (n + 1) + topology.vertexTriangles.length;
+    const flags = 2 * 4 * Math.ceil(triangles / 4);
+    const bytes = 4 * (first + second + orientation) + 8 * 2 * n + 2 * n + flags + KERNEL_ARRAYS * ALIGN + TAIL;
     const pages = Math.ceil(bytes / WASM_PAGE);
     try {
       return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }));

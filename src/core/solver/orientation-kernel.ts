@@ -4,6 +4,7 @@
  * triangles that may need it.
  */
 import type { PartArrays } from './part-arrays';
+import { wasmKernels } from './wasm-kernels';
 
 /**
  * The least share of its rest area a triangle keeps along its rest normal: a triangle tilted 75 degrees into a fold
@@ -38,6 +39,20 @@ export function triangleFrames(rest: Float32Array, triangles: Uint32Array): Floa
   return out;
 }
 
+/** Whether every array the orientation kernel reads lies in the positions' kernel memory (see SkinSolver). */
+function orientationInKernel(a: PartArrays): boolean {
+  const b = a.positions.buffer;
+  return (
+    a.triangles.corners.buffer === b &&
+    a.triangles.frames.buffer === b &&
+    a.unchecked.buffer === b &&
+    a.watched.buffer === b &&
+    a.vertexTriangleStart.buffer === b &&
+    a.vertexTriangles.buffer === b &&
+    a.listedTriangle.buffer === b
+  );
+}
+
 /**
  * Orientation of one part's triangles: each triangle's area projected on its frame's normal (its rest normal, turned
  * where the lids and the jaw carry the skin: see CarriedFrames) stays above a fraction of its rest area, so compressed
@@ -52,6 +67,25 @@ export function triangleFrames(rest: Float32Array, triangles: Uint32Array): Floa
  */
 export function projectOrientationPart(a: PartArrays, part: number, mode: number, floor = 1): boolean {
   const x = a.positions;
+  const kernels = a.kernelMemory && orientationInKernel(a) ? wasmKernels(a.kernelMemory) : null;
+  if (kernels) {
+    const t = a.triangles;
+    const corrected = kernels.orient(
+      x.byteOffset,
+      t.corners.byteOffset,
+      t.frames.byteOffset,
+      a.unchecked.byteOffset,
+      a.watched.byteOffset,
+      a.vertexTriangleStart.byteOffset,
+      a.vertexTriangles.byteOffset,
+      a.listedTriangle.byteOffset,
+      t.parts[part],
+      t.parts[part + 1],
+      mode,
+      floor,
+    );
+    return corrected !== 0;
+  }
   const T = a.triangles.corners;
   const F = a.triangles.frames;
   const full = mode === ORIENT_FULL;

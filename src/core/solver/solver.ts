@@ -151,7 +151,8 @@ export class SkinSolver {
     this.bendStiffness = new Float32Array(n);
     // The WebAssembly kernels run where the positions lie in a kernel memory with room for their other arrays too.
     const kernel = KernelMemory.of(this.buffers.positions);
-    const place = <T extends Float32Array | Float64Array | Uint32Array | Uint8Array>(array: T): T => kernel?.copy(array) ?? array;
+    const place = <T extends Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array>(array: T): T =>
+      kernel?.copy(array) ?? array;
     this.bendGain = kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory);
     this.bendPasses = kernel?.allocate(Uint8Array, n) ?? allocate(Uint8Array, n, memory);
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
@@ -160,7 +161,7 @@ export class SkinSolver {
     this.bulgeDirections = createBulgeDirections(topology, memory, kernel);
     const inKernel = (a: ArrayBufferView): boolean => kernel !== null && KernelMemory.of(a) === kernel;
     const kernelMemory = kernel && inKernel(this.edgeLists.ends) && inKernel(this.bulgeDirections) ? kernel.memory : null;
-    this.triangleLists = createTriangleLists(topology, memory);
+    this.triangleLists = createTriangleLists(topology, memory, kernel);
     this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
     this.neighbourOffsets = place(neighbourOffsets(topology));
@@ -174,8 +175,9 @@ export class SkinSolver {
     this.mouthHeight = options.mouth ? (options.mouth.left[1] + options.mouth.right[1]) / 2 : null;
     const triangleCount = topology.triangles.length / 3;
     // Rounded up to whole words (see PartArrays.uncheckedWords); the flags past the last triangle stay 0.
-    const unchecked = allocate(Uint8Array, 4 * Math.ceil(triangleCount / 4), memory);
-    const watched = allocate(Uint8Array, unchecked.length, memory);
+    const flagBytes = 4 * Math.ceil(triangleCount / 4);
+    const unchecked = kernel?.allocate(Uint8Array, flagBytes) ?? allocate(Uint8Array, flagBytes, memory);
+    const watched = kernel?.allocate(Uint8Array, flagBytes) ?? allocate(Uint8Array, flagBytes, memory);
     this.parts = {
       positions: this.buffers.positions,
       rest: topology.rest,
@@ -187,8 +189,8 @@ export class SkinSolver {
       shadedTriangles: createTriangleLists(topology, memory),
       neighbourStart: place(topology.neighbourStart),
       neighbourOffsets: this.neighbourOffsets,
-      vertexTriangleStart: topology.vertexTriangleStart,
-      vertexTriangles: topology.vertexTriangles,
+      vertexTriangleStart: place(topology.vertexTriangleStart),
+      vertexTriangles: place(topology.vertexTriangles),
       edges: this.edgeLists,
       kernelMemory,
       bulgeDirections: this.bulgeDirections,
@@ -200,10 +202,10 @@ export class SkinSolver {
       bendPasses: this.bendPasses,
       secondRing: createSecondRing(topology, memory, kernel),
       unchecked,
-      uncheckedWords: new Uint32Array(unchecked.buffer),
+      uncheckedWords: new Uint32Array(unchecked.buffer, unchecked.byteOffset, flagBytes / 4),
       watched,
-      watchedWords: new Uint32Array(watched.buffer),
-      listedTriangle: allocate(Int32Array, triangleCount, memory),
+      watchedWords: new Uint32Array(watched.buffer, watched.byteOffset, flagBytes / 4),
+      listedTriangle: kernel?.allocate(Int32Array, triangleCount) ?? allocate(Int32Array, triangleCount, memory),
       regionVertices: this.region.vertices,
       shadedVertices: this.region.shadedVertices,
       previous: this.previous,

@@ -1,10 +1,11 @@
 /**
  * The solver's WebAssembly kernels: the length passes' loops (projectFreeEdges, projectHeldEdges in length-kernels.ts)
- * four edges at a time in 128-bit lanes of 32-bit floats, about twice as fast as the JavaScript loops, and the first
- * ring's bending (projectBendingPart in solver-kernels.ts) as its loop computes, to the bit, about three times as fast
- * (docs/solver-notes.md, "The length kernel in WebAssembly", "The bending kernel in WebAssembly"). Their bytes come
- * from scripts/build-kernels.mjs. Where WebAssembly, its lanes or its compilation are not allowed (an old browser, a
- * page whose content security policy forbids it), the solver keeps the JavaScript loops.
+ * four edges at a time in 128-bit lanes of 32-bit floats, about twice as fast as the JavaScript loops; both rings'
+ * bending (projectBendingPart, projectSecondRingPart) and the orientation passes (projectOrientationPart) one item at a
+ * time in their loops' own arithmetic, to the bit (docs/solver-notes.md, "The length kernel in WebAssembly" and the
+ * sections after it). Their bytes come from scripts/build-kernels.mjs. Where WebAssembly, its lanes or its
+ * compilation are not allowed (an old browser, a page whose content security policy forbids it), the solver keeps
+ * the JavaScript loops.
  */
 import { KERNELS } from './wasm-kernels-bytes';
 
@@ -54,6 +55,24 @@ export interface WasmKernels {
     k0: number,
     k1: number,
   ): void;
+  /**
+   * Projects the orientation of listed triangles `t0..t1` as projectOrientationPart does (`mode` one of its modes,
+   * `floor` its share of the bound); returns 1 if a triangle was more than a hair under its bound, else 0.
+   */
+  orient(
+    positions: number,
+    corners: number,
+    frames: number,
+    unchecked: number,
+    watched: number,
+    vertexTriangleStart: number,
+    vertexTriangles: number,
+    listed: number,
+    t0: number,
+    t1: number,
+    mode: number,
+    floor: number,
+  ): number;
   /** Each region vertex of entries `k0..k1` takes its step less its rings' moves (the second half). */
   ringGather(
     positions: number,
