@@ -34,6 +34,20 @@ function share(kind, s, d2, r2) {
   return op('div', top, bottom);
 }
 
+/**
+ * Three stores that move the xyz floats at address local `$addr` by `op` (add or sub) of `term(axis)`, each in double
+ * precision rounded back to single, as the loops' `x[i] += ...` do; `indent` spaces before each.
+ */
+function shiftXyz(addr, op, term, indent) {
+  const pad = ' '.repeat(indent);
+  return ['x', 'y', 'z']
+    .map((d, i) => {
+      const at = `offset=${4 * i} (local.get $${addr})`;
+      return `${pad}(f32.store ${at}\n${pad}  (f32.demote_f64 (f64.${op} (f64.promote_f32 (f32.load ${at})) ${term(d)})))\n`;
+    })
+    .join('');
+}
+
 function lengthKernel(shared) {
   const one = `
   ;; One edge at record address $p: the loop's tail.
@@ -248,24 +262,14 @@ function bendKernel() {
                    (f64.mul (f64.promote_f32 (f32.load offset=8 (local.get $ib))) (local.get $nz))))
           (f64.load (i32.add (local.get $ap) (i32.shl (local.get $v) (i32.const 3))))))
         (local.set $lambda (f64.mul (local.get $g) (local.get $c)))
-        (f32.store (local.get $ib)
-          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load (local.get $ib))) (f64.mul (local.get $lambda) (local.get $nx)))))
-        (f32.store offset=4 (local.get $ib)
-          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=4 (local.get $ib))) (f64.mul (local.get $lambda) (local.get $ny)))))
-        (f32.store offset=8 (local.get $ib)
-          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=8 (local.get $ib))) (f64.mul (local.get $lambda) (local.get $nz)))))
+${shiftXyz('ib', 'add', (d) => `(f64.mul (local.get $lambda) (local.get $n${d}))`, 8)}
         (local.set $q (f64.mul (local.get $lambda) (local.get $w)))
         (local.set $j (i32.load (i32.add (local.get $sp) (i32.shl (local.get $v) (i32.const 2)))))
         (block $s1 (loop $scatter
           (br_if $s1 (i32.ge_u (local.get $j) (local.get $j1)))
           (local.set $kb (i32.add (local.get $xp)
             (i32.shl (i32.load (i32.add (local.get $op) (i32.shl (local.get $j) (i32.const 2)))) (i32.const 2))))
-          (f32.store (local.get $kb)
-            (f32.demote_f64 (f64.sub (f64.promote_f32 (f32.load (local.get $kb))) (f64.mul (local.get $q) (local.get $nx)))))
-          (f32.store offset=4 (local.get $kb)
-            (f32.demote_f64 (f64.sub (f64.promote_f32 (f32.load offset=4 (local.get $kb))) (f64.mul (local.get $q) (local.get $ny)))))
-          (f32.store offset=8 (local.get $kb)
-            (f32.demote_f64 (f64.sub (f64.promote_f32 (f32.load offset=8 (local.get $kb))) (f64.mul (local.get $q) (local.get $nz)))))
+${shiftXyz('kb', 'sub', (d) => `(f64.mul (local.get $q) (local.get $n${d}))`, 10)}
           (local.set $j (i32.add (local.get $j) (i32.const 1)))
           (br $scatter)))
         (br $next))))`;
@@ -354,12 +358,7 @@ function secondRingKernels() {
           (local.set $j (i32.add (local.get $j) (i32.const 1)))
           (br $gather)))
         (local.set $kb (i32.add (local.get $xp) (local.get $ib)))
-        (f32.store (local.get $kb) (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load (local.get $kb))) (local.get $dx))))
-        (f32.store offset=4 (local.get $kb)
-          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=4 (local.get $kb))) (local.get $dy))))
-        (f32.store offset=8 (local.get $kb)
-          (f32.demote_f64 (f64.add (f64.promote_f32 (f32.load offset=8 (local.get $kb))) (local.get $dz))))
-        (br $next))))`;
+${shiftXyz('kb', 'add', (d) => `(local.get $d${d})`, 8)}        (br $next))))`;
 }
 
 /**
@@ -384,9 +383,7 @@ function orientKernel() {
             (if (i32.ge_s (local.get $l) (i32.const 0)) (then (i32.store8 (i32.add (local.get $up) (local.get $l)) (i32.const 1))))
             (local.set $j (i32.add (local.get $j) (i32.const 1)))
             (br $m)))`;
-  const move = (corner, o, g) =>
-    `        (f32.store offset=${o} (local.get $${corner})
-          (f32.demote_f64 (f64.add ${load(corner, o)} (f64.mul ${f('lambda')} ${f(g)}))))\n`;
+
   return `
   (func (export "orient") (param $xp i32) (param $cp i32) (param $fp i32) (param $up i32) (param $wp i32) (param $sp i32)
     (param $vp i32) (param $lp i32) (param $t0 i32) (param $t1 i32) (param $mode i32) (param $floor f64) (result i32)
@@ -467,7 +464,7 @@ function orientKernel() {
           (local.set $b (i32.add (local.get $b) (local.get $xp)))
           (local.set $c (i32.add (local.get $c) (local.get $xp)))))
         (local.set $lambda (f64.div (f64.neg ${f('cc')}) ${f('norm')}))
-${['a', 'b', 'c'].map((k) => ['x', 'y', 'z'].map((d, i) => move(k, 4 * i, `g${k}${d}`)).join('')).join('')}        (br $next)))
+${['a', 'b', 'c'].map((k) => shiftXyz(k, 'add', (d) => `(f64.mul ${f('lambda')} ${f(`g${k}${d}`)})`, 8)).join('')}        (br $next)))
     (local.get $corrected))`;
 }
 
