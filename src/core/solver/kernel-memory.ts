@@ -19,7 +19,7 @@ const TAIL = 64;
 const KERNEL_ARRAYS = 32;
 
 /** A typed array type the kernel memory holds. */
-type KernelArray = Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array;
+export type KernelArray = Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array;
 
 /** Each kernel memory by its buffer, so that a solver given positions finds the memory they lie in. */
 const owners = new WeakMap<ArrayBufferLike, KernelMemory>();
@@ -65,9 +65,19 @@ export class KernelMemory {
     }
   }
 
-  /** The kernel memory `array` lies in, if any. */
+  /** The kernel memory `array` lies in, if any: a solver whose positions lie in one runs its kernels there. */
   static of(array: ArrayBufferView): KernelMemory | null {
     return owners.get(array.buffer) ?? null;
+  }
+
+  /** `array` copied into `kernel` where it has room, else `array` itself. */
+  static place<T extends KernelArray>(kernel: KernelMemory | null, array: T): T {
+    return kernel?.copy(array) ?? array;
+  }
+
+  /** Whether every one of `arrays` lies in this memory. */
+  holds(...arrays: ArrayBufferView[]): boolean {
+    return arrays.every((array) => owners.get(array.buffer) === this);
   }
 
   /** A copy of `array` in the memory's free room; null when too little is left. */

@@ -25,7 +25,7 @@ import {
   type TriangleLists,
 } from './constraint-lists';
 import { restOutside } from './frame-kernels';
-import { KernelMemory } from './kernel-memory';
+import { type KernelArray, KernelMemory } from './kernel-memory';
 import { createBulgeDirections } from './length-kernels';
 import { allocate, type Memory } from './memory';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from './muscle-inputs';
@@ -149,18 +149,15 @@ export class SkinSolver {
     this.relaxation = new Relaxation(n, memory);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
-    // The WebAssembly kernels run where the positions lie in a kernel memory with room for their other arrays too.
     const kernel = KernelMemory.of(this.buffers.positions);
-    const place = <T extends Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array>(array: T): T =>
-      kernel?.copy(array) ?? array;
+    const place = <T extends KernelArray>(array: T): T => KernelMemory.place(kernel, array);
     this.bendGain = kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory);
     this.bendPasses = kernel?.allocate(Uint8Array, n) ?? allocate(Uint8Array, n, memory);
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.carriedFrames = new CarriedFrames(topology.rest, topology.restNormals, topology.triangles, this.triangleFrames);
     this.edgeLists = createEdgeLists(topology, memory, kernel);
     this.bulgeDirections = createBulgeDirections(topology, memory, kernel);
-    const inKernel = (a: ArrayBufferView): boolean => kernel !== null && KernelMemory.of(a) === kernel;
-    const kernelMemory = kernel && inKernel(this.edgeLists.ends) && inKernel(this.bulgeDirections) ? kernel.memory : null;
+    const kernelMemory = kernel?.holds(this.edgeLists.ends, this.bulgeDirections) ? kernel.memory : null;
     this.triangleLists = createTriangleLists(topology, memory, kernel);
     this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
