@@ -60,8 +60,8 @@ describe('WebAssembly kernels', () => {
     for (let i = 2; i < x.length; i += 3) x[i] += (random() - 0.5) * 0.0002;
     const s = new SkinSolver(topology, { buffers, activeRegion: false, memory: 'shared' });
     const kernel = s.partArrays();
-    // The same arrays but the gains, copied out of the kernel memory: projectBendingPart then takes its JavaScript loop.
-    const loop = { ...kernel, bendGain: Float32Array.from(kernel.bendGain) };
+    // The same arrays without the kernel memory: projectBendingPart then takes its JavaScript loop.
+    const loop = { ...kernel, kernelMemory: null };
     const start = Float32Array.from(x);
     const bend = (a: typeof kernel): Float32Array => {
       x.set(start);
@@ -76,7 +76,7 @@ describe('WebAssembly kernels', () => {
       moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
       if (byKernel[i] !== byLoop[i]) differ++;
     }
-    expect(KernelMemory.of(kernel.bendGain)).not.toBeNull();
+    expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-5);
     expect(differ).toBe(0);
   });
@@ -89,8 +89,8 @@ describe('WebAssembly kernels', () => {
     for (let f = 0; f < 3; f++) sim.host.step();
     const kernel = sim.host.solver.partArrays();
     const ring = kernel.secondRing;
-    // The same arrays but the ring's gains, copied out of the kernel memory: the pass then takes its JavaScript loop.
-    const loop = { ...kernel, secondRing: { ...ring, gain: Float32Array.from(ring.gain) } };
+    // The same arrays without the kernel memory: the pass then takes its JavaScript loop.
+    const loop = { ...kernel, kernelMemory: null };
     const x = kernel.positions;
     const start = Float32Array.from(x);
     const count = sim.host.solver.activeVertexCount;
@@ -108,7 +108,7 @@ describe('WebAssembly kernels', () => {
       if (byKernel[i] !== byLoop[i]) differ++;
     }
     expect(ring.active).toBe(true);
-    expect(KernelMemory.of(ring.gain)).not.toBeNull();
+    expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-6);
     expect(differ).toBe(0);
   });
@@ -121,8 +121,8 @@ describe('WebAssembly kernels', () => {
     for (let i = 0; i < x.length; i++) x[i] = (i % 3 === 0 ? 0.33 : 1) * x[i] + (random() - 0.5) * 0.0008;
     const s = new SkinSolver(topology, { buffers, activeRegion: false, memory: 'shared' });
     const kernel = s.partArrays();
-    // The same arrays but the listed triangles' places, copied out of the kernel memory: the loop runs in JavaScript.
-    const loop = { ...kernel, listedTriangle: Int32Array.from(kernel.listedTriangle) };
+    // The same arrays without the kernel memory: the loop runs in JavaScript.
+    const loop = { ...kernel, kernelMemory: null };
     const start = Float32Array.from(x);
     const flags = Uint8Array.from(kernel.unchecked);
     const watched = Uint8Array.from(kernel.watched);
@@ -143,6 +143,7 @@ describe('WebAssembly kernels', () => {
       moved = Math.max(moved, Math.abs(byLoop.x[i] - start[i]));
       if (byKernel.x[i] !== byLoop.x[i]) differ++;
     }
+    expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-5);
     expect(byLoop.corrected).toContain(true);
     expect(differ).toBe(0);

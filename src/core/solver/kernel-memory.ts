@@ -5,6 +5,7 @@
  */
 import { EDGE_RECORD } from './constraint-lists';
 import type { Memory } from './memory';
+import type { PartArrays } from './part-arrays';
 import { ringStencils } from './second-ring';
 import type { SkinTopology } from './topology';
 import { kernelModule } from './wasm-kernels';
@@ -23,6 +24,20 @@ export type KernelArray = Float32Array | Float64Array | Uint32Array | Int32Array
 
 /** Each kernel memory by its buffer, so that a solver given positions finds the memory they lie in. */
 const owners = new WeakMap<ArrayBufferLike, KernelMemory>();
+
+/**
+ * The memory the solver's kernels run on: `kernel`'s, if every array they read and write lies in it (forSkin sizes it
+ * for them all), else null (the JavaScript loops run). Checked once, as a solver is made.
+ */
+export function kernelFor(p: PartArrays, kernel: KernelMemory | null): WebAssembly.Memory | null {
+  const r = p.secondRing;
+  const t = p.triangles;
+  const lengths = [p.positions, p.edges.ends, p.bulgeDirections];
+  const bending = [p.restNormals, p.neighbourStart, p.neighbourOffsets, p.bendRest, p.bendGain, p.inverseDegree, p.bendPasses];
+  const ring = [p.bending.vertices, p.regionVertices, r.start, r.offsets, r.inverse, r.rest, r.gain, r.reach, r.ringMove, r.ownStep];
+  const orientation = [t.corners, t.frames, p.unchecked, p.watched, p.vertexTriangleStart, p.vertexTriangles, p.listedTriangle];
+  return kernel?.holds(...lengths, ...bending, ...ring, ...orientation) ? kernel.memory : null;
+}
 
 /** One WebAssembly memory of a fixed size, handed out front to back; it never grows, so views on it stay valid. */
 export class KernelMemory {

@@ -27,9 +27,8 @@ export function projectLengths(
   const { ends, rest, runs } = a.edges;
   const x = a.positions;
   const K = EDGE_KINDS;
-  // The kernel reads the positions, the records and the directions by their places in its memory.
   const directions = a.bulgeDirections;
-  const kernel = a.kernelMemory && x.buffer === ends.buffer && x.buffer === directions.buffer ? wasmKernels(a.kernelMemory) : null;
+  const kernel = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
   for (let c = 0; K * c + K < runs.length; c++) {
     let f0 = runs[K * c];
     let f1 = runs[K * c + 1];

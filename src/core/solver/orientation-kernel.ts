@@ -39,20 +39,6 @@ export function triangleFrames(rest: Float32Array, triangles: Uint32Array): Floa
   return out;
 }
 
-/** Whether every array the orientation kernel reads lies in the positions' kernel memory (see SkinSolver). */
-function orientationInKernel(a: PartArrays): boolean {
-  const b = a.positions.buffer;
-  return (
-    a.triangles.corners.buffer === b &&
-    a.triangles.frames.buffer === b &&
-    a.unchecked.buffer === b &&
-    a.watched.buffer === b &&
-    a.vertexTriangleStart.buffer === b &&
-    a.vertexTriangles.buffer === b &&
-    a.listedTriangle.buffer === b
-  );
-}
-
 /**
  * Orientation of one part's triangles: each triangle's area projected on its frame's normal (its rest normal, turned
  * where the lids and the jaw carry the skin: see CarriedFrames) stays above a fraction of its rest area, so compressed
@@ -67,7 +53,7 @@ function orientationInKernel(a: PartArrays): boolean {
  */
 export function projectOrientationPart(a: PartArrays, part: number, mode: number, floor = 1): boolean {
   const x = a.positions;
-  const kernels = a.kernelMemory && orientationInKernel(a) ? wasmKernels(a.kernelMemory) : null;
+  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
   if (kernels) {
     const t = a.triangles;
     const corrected = kernels.orient(

@@ -28,8 +28,8 @@ export interface PartArrays {
   vertexTriangles: Uint32Array;
   edges: EdgeLists;
   /**
-   * The WebAssembly memory the positions, the edge records and the bulge directions lie in, where the length kernels
-   * run (see wasm-kernels.ts; the bending kernel, where its arrays lie there too); null: the JavaScript loops.
+   * The WebAssembly memory every array the kernels read and write lies in, where the length, bending and orientation
+   * passes run as WebAssembly (see wasm-kernels.ts, kernelFor); null: the JavaScript loops.
    */
   kernelMemory: WebAssembly.Memory | null;
   /**

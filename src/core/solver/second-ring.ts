@@ -237,24 +237,6 @@ export function setSecondRingShares(ring: SecondRing, topology: SkinTopology, ne
     for (let j = start[v]; j < start[v + 1]; j++) reach[offsets[j] / 3] = 1;
   }
 }
-/** Whether every array the second ring's kernels read lies in the positions' kernel memory (see SkinSolver). */
-function ringInKernel(a: PartArrays): boolean {
-  const b = a.positions.buffer;
-  const r = a.secondRing;
-  return (
-    a.restNormals.buffer === b &&
-    a.regionVertices.buffer === b &&
-    r.start.buffer === b &&
-    r.offsets.buffer === b &&
-    r.inverse.buffer === b &&
-    r.rest.buffer === b &&
-    r.gain.buffer === b &&
-    r.reach.buffer === b &&
-    r.ringMove.buffer === b &&
-    r.ownStep.buffer === b
-  );
-}
-
 /**
  * One pass of the second-ring constraints over the region's vertices `regionVertices[from..to]` (this thread's
  * half): each constraint asks for the ring's mean height over the vertex as at rest, moving the vertex along its rest
@@ -269,7 +251,7 @@ export function projectSecondRingPart(a: PartArrays, from: number, to: number, b
   const N = a.restNormals;
   const V = a.regionVertices;
   const { start, offsets, inverse, rest, gain, reach, ringMove, ownStep } = a.secondRing;
-  const kernels = a.kernelMemory && ringInKernel(a) ? wasmKernels(a.kernelMemory) : null;
+  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
   if (kernels) {
     // Byte addresses, each read once (no array: this runs every outer iteration).
     const xp = x.byteOffset;

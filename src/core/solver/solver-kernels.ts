@@ -118,21 +118,6 @@ export function projectCollisions(a: PartArrays, half: number, halves: number, d
   }
 }
 
-/** Whether every array the bending kernel reads lies in the positions' kernel memory (see SkinSolver). */
-function bendingInKernel(a: PartArrays): boolean {
-  const b = a.positions.buffer;
-  return (
-    a.restNormals.buffer === b &&
-    a.neighbourStart.buffer === b &&
-    a.neighbourOffsets.buffer === b &&
-    a.bendRest.buffer === b &&
-    a.bendGain.buffer === b &&
-    a.inverseDegree.buffer === b &&
-    a.bendPasses.buffer === b &&
-    a.bending.vertices.buffer === b
-  );
-}
-
 /**
  * Bending (see SkinSolver.projectBending) of one part of the region's vertices in pass `pass` of a frame: keeps the
  * Laplacian of the normal displacement near its rest value. Each constraint moves a vertex and its ring, so the parts
@@ -140,7 +125,7 @@ function bendingInKernel(a: PartArrays): boolean {
  */
 export function projectBendingPart(a: PartArrays, pass: number, part: number): void {
   const x = a.positions;
-  const kernels = a.kernelMemory && bendingInKernel(a) ? wasmKernels(a.kernelMemory) : null;
+  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
   if (kernels) {
     const run = (pass === 0 ? 0 : PARTS + 1) + part;
     const runs = a.bending.runs;

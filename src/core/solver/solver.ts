@@ -25,7 +25,7 @@ import {
   type TriangleLists,
 } from './constraint-lists';
 import { restOutside } from './frame-kernels';
-import { type KernelArray, KernelMemory } from './kernel-memory';
+import { type KernelArray, KernelMemory, kernelFor } from './kernel-memory';
 import { createBulgeDirections } from './length-kernels';
 import { allocate, type Memory } from './memory';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from './muscle-inputs';
@@ -157,7 +157,6 @@ export class SkinSolver {
     this.carriedFrames = new CarriedFrames(topology.rest, topology.restNormals, topology.triangles, this.triangleFrames);
     this.edgeLists = createEdgeLists(topology, memory, kernel);
     this.bulgeDirections = createBulgeDirections(topology, memory, kernel);
-    const kernelMemory = kernel?.holds(this.edgeLists.ends, this.bulgeDirections) ? kernel.memory : null;
     this.triangleLists = createTriangleLists(topology, memory, kernel);
     this.watchedTriangles = new Uint8Array(topology.triangles.length / 3);
     this.shadedPlaces = new Int32Array(topology.triangles.length / 3);
@@ -189,7 +188,7 @@ export class SkinSolver {
       vertexTriangleStart: place(topology.vertexTriangleStart),
       vertexTriangles: place(topology.vertexTriangles),
       edges: this.edgeLists,
-      kernelMemory,
+      kernelMemory: null,
       bulgeDirections: this.bulgeDirections,
       triangles: this.triangleLists,
       bending: createBendingLists(n, memory, kernel),
@@ -219,6 +218,7 @@ export class SkinSolver {
       activeCandidates: c.activeCandidates,
       activeCandidateStart: c.activeCandidateStart,
     };
+    this.parts.kernelMemory = kernelFor(this.parts, kernel);
     this.passes = new FramePasses(this.parts, this.lips, this.region.inside);
     this.setParameters(options.parameters ?? {});
     this.updateMuscles();
