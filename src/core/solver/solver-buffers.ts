@@ -34,7 +34,7 @@ export interface SolverBuffers {
 /**
  * Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). With
  * `kernel` (the default), the positions lie in a KernelMemory where the WebAssembly kernels can run, and a SkinSolver
- * on these buffers runs its length and bending passes there; without, in JavaScript.
+ * on these buffers runs its length, bending and orientation passes there; without, in JavaScript.
  */
 export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local', kernel = true): SolverBuffers {
   const n = topology.vertexCount;
