@@ -129,7 +129,7 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
         (br_if $end (i32.ge_u (local.get $j) (local.get $j1)))
         (call $one (local.get $xp) (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))) (local.get $s0))
         (local.set $j (i32.add (local.get $j) (i32.const 4)))
-        (br $tail))))${heldKernel()}${bendKernel()}${secondRingKernels()}${orientKernel()}
+        (br $tail))))${heldKernel()}${bendKernel()}${secondRingKernels()}${orientKernel()}${positionKernel()}
 )
 `;
 }
@@ -466,6 +466,47 @@ function orientKernel() {
         (local.set $lambda (f64.div (f64.neg ${f('cc')}) ${f('norm')}))
 ${['a', 'b', 'c'].map((k) => shiftXyz(k, 'add', (d) => `(f64.mul ${f('lambda')} ${f(`g${k}${d}`)})`, 8)).join('')}        (br $next)))
     (local.get $corrected))`;
+}
+
+/**
+ * Position and muscle constraints (projectPositions in solver-kernels.ts) of region entries `$k0..$k1`, in the loop's
+ * double-precision arithmetic, so that the result is its to the bit: `$s` the position stiffness, `$extra` the added
+ * stiffness of skin sunk in, `$ms` the muscle stiffness. Arrays at bytes: positions `$xp`, rest `$rp`, rest normals
+ * `$np`, targets `$tp`, weights `$wp` and normal weights `$hp`, the region's vertices `$vp`.
+ */
+function positionKernel() {
+  const f = (v) => `(local.get $${v})`;
+  const at = (base, o) => `(f64.promote_f32 (f32.load offset=${o} (i32.add (local.get $${base}) (local.get $ib))))`;
+  const axes = ['x', 'y', 'z'];
+  const toRest = axes.map((d, i) => `        (local.set $u${d} (f64.sub ${at('rp', 4 * i)} ${at('xp', 4 * i)}))\n`).join('');
+  const normal = axes.map((d, i) => `        (local.set $n${d} ${at('np', 4 * i)})\n`).join('');
+  const toTarget = axes.map((d, i) => `        (local.set $d${d} (f64.sub ${at('tp', 4 * i)} ${at('xp', 4 * i)}))\n`).join('');
+  return `
+  (func (export "positions") (param $xp i32) (param $rp i32) (param $np i32) (param $tp i32) (param $wp i32) (param $hp i32)
+    (param $vp i32) (param $s f64) (param $extra f64) (param $ms f64) (param $k0 i32) (param $k1 i32)
+    (local $k i32) (local $v i32) (local $ib i32) (local $a i32) (local $nx f64) (local $ny f64) (local $nz f64)
+    (local $ux f64) (local $uy f64) (local $uz f64) (local $dx f64) (local $dy f64) (local $dz f64) (local $depth f64)
+    (local $kk f64) (local $w f64) (local $wn f64) (local $m f64) (local $along f64)
+    (local.set $k (local.get $k0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
+        (local.set $v (i32.load (i32.add (local.get $vp) (i32.shl (local.get $k) (i32.const 2)))))
+        (local.set $k (i32.add (local.get $k) (i32.const 1)))
+        (local.set $ib (i32.mul (local.get $v) (i32.const 12)))
+        (local.set $a (i32.add (local.get $xp) (local.get $ib)))
+${normal}${toRest}        (local.set $depth (f64.add (f64.add (f64.mul ${f('ux')} ${f('nx')}) (f64.mul ${f('uy')} ${f('ny')}))
+          (f64.mul ${f('uz')} ${f('nz')})))
+        (local.set $kk (select (f64.mul ${f('extra')} ${f('depth')}) (f64.const 0) (f64.gt ${f('depth')} (f64.const 0))))
+${shiftXyz('a', 'add', (d) => `(f64.add (f64.mul ${f('s')} ${f(`u${d}`)}) (f64.mul ${f('kk')} ${f(`n${d}`)}))`, 8)}
+        (local.set $w (f64.promote_f32 (f32.load (i32.add (local.get $wp) (i32.shl (local.get $v) (i32.const 2))))))
+        (local.set $wn (f64.promote_f32 (f32.load (i32.add (local.get $hp) (i32.shl (local.get $v) (i32.const 2))))))
+        (br_if $next (i32.and (f64.eq ${f('w')} (f64.const 0)) (f64.eq ${f('wn')} (f64.const 0))))
+        (local.set $m (f64.mul ${f('ms')} ${f('w')}))
+${toTarget}        (local.set $along (f64.mul (f64.sub (f64.mul ${f('ms')} ${f('wn')}) ${f('m')})
+          (f64.add (f64.add (f64.mul ${f('dx')} ${f('nx')}) (f64.mul ${f('dy')} ${f('ny')})) (f64.mul ${f('dz')} ${f('nz')}))))
+${shiftXyz('a', 'add', (d) => `(f64.add (f64.mul ${f('m')} ${f(`d${d}`)}) (f64.mul ${f('along')} ${f(`n${d}`)}))`, 8)}
+        (br $next))))`;
 }
 
 /** The TypeScript module that carries the kernel's bytes. */

@@ -7,7 +7,7 @@ import { ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, projectOrientationPart } fro
 import { SkinSolver } from '../src/core/solver/solver';
 import { createSolverBuffers } from '../src/core/solver/solver-buffers';
 import { projectSecondRingPart } from '../src/core/solver/second-ring';
-import { projectBendingPart } from '../src/core/solver/solver-kernels';
+import { projectBendingPart, projectPositions } from '../src/core/solver/solver-kernels';
 import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
 
@@ -150,6 +150,40 @@ describe('WebAssembly kernels', () => {
     expect(byKernel.corrected).toEqual(byLoop.corrected);
     expect(byKernel.unchecked).toEqual(byLoop.unchecked);
     expect(byKernel.watched).toEqual(byLoop.watched);
+  });
+
+  it('pull the skin to rest and to the muscles as the JavaScript loop does, to the bit', () => {
+    const buffers = createSolverBuffers(topology, 'shared');
+    const random = mulberry32(17);
+    const x = buffers.positions;
+    // Skin shaken off its rest by up to half a millimetre, sunk in or lifted out; a muscle pulls half the patch.
+    for (let i = 0; i < x.length; i++) x[i] += (random() - 0.5) * 0.001;
+    for (let v = 0; v < topology.vertexCount; v++) {
+      if (topology.rest[3 * v] < 0) continue;
+      buffers.weights[v] = 0.6;
+      buffers.normalWeights[v] = v % 2 === 0 ? 0.2 : 0;
+      for (let k = 3 * v; k < 3 * v + 3; k++) buffers.targets[k] = topology.rest[k] + (random() - 0.5) * 0.002;
+    }
+    const s = new SkinSolver(topology, { buffers, activeRegion: false, memory: 'shared' });
+    const kernel = s.partArrays();
+    const loop = { ...kernel, kernelMemory: null };
+    const start = Float32Array.from(x);
+    const pull = (a: typeof kernel): Float32Array => {
+      x.set(start);
+      projectPositions(a, 0.05, 0.1, 0.5, 0, s.activeVertexCount);
+      return Float32Array.from(x);
+    };
+    const byKernel = pull(kernel);
+    const byLoop = pull(loop);
+    let moved = 0;
+    let differ = 0;
+    for (let i = 0; i < x.length; i++) {
+      moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
+      if (byKernel[i] !== byLoop[i]) differ++;
+    }
+    expect(kernel.kernelMemory).not.toBeNull();
+    expect(moved).toBeGreaterThan(1e-5);
+    expect(differ).toBe(0);
   });
 
   it('are built from the text in scripts/build-kernels.mjs', () => {

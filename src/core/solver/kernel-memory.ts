@@ -17,7 +17,7 @@ const ALIGN = 16;
 /** Room after the arrays: the held-edge kernel reads a whole group of four records past a list's last one. */
 const TAIL = 64;
 /** The arrays a skin's kernels read, at most: what forSkin makes room for (each start aligned). */
-const KERNEL_ARRAYS = 32;
+const KERNEL_ARRAYS = 40;
 
 /** A typed array type the kernel memory holds. */
 export type KernelArray = Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array;
@@ -32,7 +32,7 @@ const owners = new WeakMap<ArrayBufferLike, KernelMemory>();
 export function kernelFor(p: PartArrays, kernel: KernelMemory | null): WebAssembly.Memory | null {
   const r = p.secondRing;
   const t = p.triangles;
-  const lengths = [p.positions, p.edges.ends, p.bulgeDirections];
+  const lengths = [p.positions, p.edges.ends, p.bulgeDirections, p.rest, p.targets, p.weights, p.normalWeights];
   const bending = [p.restNormals, p.neighbourStart, p.neighbourOffsets, p.bendRest, p.bendGain, p.inverseDegree, p.bendPasses];
   const ring = [p.bending.vertices, p.regionVertices, r.start, r.offsets, r.inverse, r.rest, r.gain, r.reach, r.ringMove, r.ownStep];
   const orientation = [t.corners, t.frames, p.unchecked, p.watched, p.vertexTriangleStart, p.vertexTriangles, p.listedTriangle];
@@ -71,7 +71,9 @@ export class KernelMemory {
     const triangles = topology.triangles.length / 3;
     const orientation = 3 * triangles + 4 * triangles + triangles + (n + 1) + topology.vertexTriangles.length;
     const flags = 2 * 4 * Math.ceil(triangles / 4);
-    const bytes = 4 * (first + second + orientation) + 8 * 2 * n + 2 * n + flags + KERNEL_ARRAYS * ALIGN + TAIL;
+    // The position constraints': the rest positions, the muscles' targets, weights and normal weights.
+    const positions = 3 * n + 3 * n + n + n;
+    const bytes = 4 * (first + second + orientation + positions) + 8 * 2 * n + 2 * n + flags + KERNEL_ARRAYS * ALIGN + TAIL;
     const pages = Math.ceil(bytes / WASM_PAGE);
     try {
       return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }));

@@ -33,14 +33,17 @@ export interface SolverBuffers {
 
 /**
  * Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). With
- * `kernel` (the default), the positions lie in a KernelMemory where the WebAssembly kernels can run, and a SkinSolver
- * on these buffers runs its length, bending and orientation passes there; without, in JavaScript.
+ * `kernel` (the default), the positions and the muscle inputs lie in a KernelMemory where the WebAssembly kernels can run, and a SkinSolver
+ * on these buffers runs its position, length, bending and orientation passes there; without, in JavaScript.
  */
 export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local', kernel = true): SolverBuffers {
   const n = topology.vertexCount;
   const room = kernel ? KernelMemory.forSkin(topology, memory) : null;
-  const positions = room?.allocate(Float32Array, 3 * n) ?? allocate(Float32Array, 3 * n, memory);
+  const inRoom = (length: number): Float32Array => room?.allocate(Float32Array, length) ?? allocate(Float32Array, length, memory);
+  const positions = inRoom(3 * n);
   positions.set(topology.rest);
+  const targets = inRoom(3 * n);
+  targets.set(topology.rest);
   const copy = (from: Float32Array): Float32Array => {
     const to = allocate(Float32Array, from.length, memory);
     to.set(from);
@@ -49,9 +52,9 @@ export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'lo
   return {
     positions,
     normals: copy(topology.restNormals),
-    targets: copy(topology.rest),
-    weights: allocate(Float32Array, n, memory),
-    normalWeights: allocate(Float32Array, n, memory),
+    targets,
+    weights: inRoom(n),
+    normalWeights: inRoom(n),
     turnWeights: allocate(Float32Array, n, memory),
     unfoldedLengths: copy(topology.restLength),
   };

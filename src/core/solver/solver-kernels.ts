@@ -26,6 +26,29 @@ import { wasmKernels } from './wasm-kernels';
  */
 export function projectPositions(a: PartArrays, stiffness: number, extra: number, muscleStiffness: number, k0: number, k1: number): void {
   const x = a.positions;
+  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  if (kernels) {
+    const { rest, restNormals, targets, weights, normalWeights, regionVertices } = a;
+    const xp = x.byteOffset;
+    const np = restNormals.byteOffset;
+    const tp = targets.byteOffset;
+    const vp = regionVertices.byteOffset;
+    kernels.positions(
+      xp,
+      rest.byteOffset,
+      np,
+      tp,
+      weights.byteOffset,
+      normalWeights.byteOffset,
+      vp,
+      stiffness,
+      extra,
+      muscleStiffness,
+      k0,
+      k1,
+    );
+    return;
+  }
   const X = a.rest;
   const N = a.restNormals;
   const T = a.targets;

@@ -176,7 +176,7 @@ export class SkinSolver {
     const watched = kernel?.allocate(Uint8Array, flagBytes) ?? allocate(Uint8Array, flagBytes, memory);
     this.parts = {
       positions: this.buffers.positions,
-      rest: topology.rest,
+      rest: place(topology.rest),
       restNormals: place(topology.restNormals),
       targets: this.buffers.targets,
       weights: this.buffers.weights,

@@ -1,11 +1,11 @@
 /**
  * The solver's WebAssembly kernels: the length passes' loops (projectFreeEdges, projectHeldEdges in length-kernels.ts)
  * four edges at a time in 128-bit lanes of 32-bit floats, about twice as fast as the JavaScript loops; both rings'
- * bending (projectBendingPart, projectSecondRingPart) and the orientation passes (projectOrientationPart) one item at a
- * time in their loops' own arithmetic, to the bit (docs/solver-notes.md, "The length kernel in WebAssembly" and the
- * sections after it). Their bytes come from scripts/build-kernels.mjs. Where WebAssembly, its lanes or its
- * compilation are not allowed (an old browser, a page whose content security policy forbids it), the solver keeps
- * the JavaScript loops.
+ * bending (projectBendingPart, projectSecondRingPart), the orientation passes (projectOrientationPart) and the position
+ * constraints (projectPositions) one item at a time in their loops' own arithmetic, to the bit (docs/solver-notes.md,
+ * "The length kernel in WebAssembly" and the sections after it). Their bytes come from scripts/build-kernels.mjs. Where
+ * WebAssembly, its lanes or its compilation are not allowed (an old browser, a page whose content security policy
+ * forbids it), the solver keeps the JavaScript loops.
  */
 import { KERNELS } from './wasm-kernels-bytes';
 
@@ -73,6 +73,24 @@ export interface WasmKernels {
     mode: number,
     floor: number,
   ): number;
+  /**
+   * Projects the position and muscle constraints of region entries `k0..k1` as projectPositions does (the position
+   * stiffness, the extra stiffness of skin sunk in, the muscle stiffness).
+   */
+  positions(
+    positions: number,
+    rest: number,
+    normals: number,
+    targets: number,
+    weights: number,
+    normalWeights: number,
+    region: number,
+    stiffness: number,
+    extra: number,
+    muscleStiffness: number,
+    k0: number,
+    k1: number,
+  ): void;
   /** Each region vertex of entries `k0..k1` takes its step less its rings' moves (the second half). */
   ringGather(
     positions: number,
