@@ -35,6 +35,17 @@ function oneFrame(kernel: boolean): { moved: number; positions: Float32Array; us
   return { moved, positions: Float32Array.from(x), usesKernel: KernelMemory.of(x) !== null };
 }
 
+/** The largest move of the loop's result from `start`, and how many floats the kernel's result has otherwise. */
+function compare(byKernel: Float32Array, byLoop: Float32Array, start: Float32Array): { moved: number; differ: number } {
+  let moved = 0;
+  let differ = 0;
+  for (let i = 0; i < byLoop.length; i++) {
+    moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
+    if (byKernel[i] !== byLoop[i]) differ++;
+  }
+  return { moved, differ };
+}
+
 describe('WebAssembly kernels', () => {
   it('runs in Node, where the solver keeps its positions in the kernel memory by default', () => {
     expect(oneFrame(true).usesKernel).toBe(true);
@@ -70,12 +81,7 @@ describe('WebAssembly kernels', () => {
     };
     const byKernel = bend(kernel);
     const byLoop = bend(loop);
-    let moved = 0;
-    let differ = 0;
-    for (let i = 0; i < x.length; i++) {
-      moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
-      if (byKernel[i] !== byLoop[i]) differ++;
-    }
+    const { moved, differ } = compare(byKernel, byLoop, start);
     expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-5);
     expect(differ).toBe(0);
@@ -101,12 +107,7 @@ describe('WebAssembly kernels', () => {
     };
     const byKernel = pass(kernel);
     const byLoop = pass(loop);
-    let moved = 0;
-    let differ = 0;
-    for (let i = 0; i < x.length; i++) {
-      moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
-      if (byKernel[i] !== byLoop[i]) differ++;
-    }
+    const { moved, differ } = compare(byKernel, byLoop, start);
     expect(ring.active).toBe(true);
     expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-6);
@@ -137,12 +138,7 @@ describe('WebAssembly kernels', () => {
     };
     const byKernel = orient(kernel);
     const byLoop = orient(loop);
-    let moved = 0;
-    let differ = 0;
-    for (let i = 0; i < x.length; i++) {
-      moved = Math.max(moved, Math.abs(byLoop.x[i] - start[i]));
-      if (byKernel.x[i] !== byLoop.x[i]) differ++;
-    }
+    const { moved, differ } = compare(byKernel.x, byLoop.x, start);
     expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-5);
     expect(byLoop.corrected).toContain(true);
@@ -175,12 +171,7 @@ describe('WebAssembly kernels', () => {
     };
     const byKernel = pull(kernel);
     const byLoop = pull(loop);
-    let moved = 0;
-    let differ = 0;
-    for (let i = 0; i < x.length; i++) {
-      moved = Math.max(moved, Math.abs(byLoop[i] - start[i]));
-      if (byKernel[i] !== byLoop[i]) differ++;
-    }
+    const { moved, differ } = compare(byKernel, byLoop, start);
     expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-5);
     expect(differ).toBe(0);
