@@ -85,7 +85,7 @@ export class ActiveRegion {
     this.topology = topology;
     this.enabled = enabled;
     this.inside = new Uint8Array(n);
-    this.vertices = kernel?.allocate(Uint32Array, n) ?? allocate(Uint32Array, n, memory);
+    this.vertices = allocate(Uint32Array, n, memory, kernel);
     this.ring = new Uint32Array(n);
     this.border = new Uint32Array(n);
     this.onRing = new Uint8Array(n);

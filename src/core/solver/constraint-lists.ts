@@ -65,7 +65,7 @@ export const EDGE_RECORD = 4;
 export function createEdgeLists(topology: SkinTopology, memory: Memory = 'local', kernel: KernelMemory | null = null): EdgeLists {
   const m = topology.restLength.length;
   const colours = topology.colourStart.length - 1;
-  const records = kernel?.allocate(Uint32Array, EDGE_RECORD * m) ?? allocate(Uint32Array, EDGE_RECORD * m, memory);
+  const records = allocate(Uint32Array, EDGE_RECORD * m, memory, kernel);
   return {
     ends: records,
     rest: new Float32Array(records.buffer, records.byteOffset, records.length),
@@ -193,8 +193,8 @@ export interface TriangleLists {
 export function createTriangleLists(topology: SkinTopology, memory: Memory = 'local', kernel: KernelMemory | null = null): TriangleLists {
   const count = topology.triangles.length / 3;
   return {
-    corners: kernel?.allocate(Uint32Array, 3 * count) ?? allocate(Uint32Array, 3 * count, memory),
-    frames: kernel?.allocate(Float32Array, 4 * count) ?? allocate(Float32Array, 4 * count, memory),
+    corners: allocate(Uint32Array, 3 * count, memory, kernel),
+    frames: allocate(Float32Array, 4 * count, memory, kernel),
     parts: allocate(Uint32Array, PARTS + 1, memory),
     next: new Uint32Array(PARTS),
   };
@@ -266,7 +266,7 @@ export interface BendingLists {
 /** Bending lists with room for every vertex's passes; the list in `kernel` when it has room (see wasm-kernels.ts). */
 export function createBendingLists(vertexCount: number, memory: Memory = 'local', kernel: KernelMemory | null = null): BendingLists {
   return {
-    vertices: kernel?.allocate(Uint32Array, 2 * vertexCount) ?? allocate(Uint32Array, 2 * vertexCount, memory),
+    vertices: allocate(Uint32Array, 2 * vertexCount, memory, kernel),
     runs: allocate(Uint32Array, 2 * (PARTS + 1), memory),
   };
 }

@@ -4,7 +4,7 @@
  * arrays without a copy.
  */
 import { EDGE_RECORD } from './constraint-lists';
-import type { Memory } from './memory';
+import type { Memory, Room, TypedArrayType } from './memory';
 import type { PartArrays } from './part-arrays';
 import { ringStencils } from './second-ring';
 import type { SkinTopology } from './topology';
@@ -40,7 +40,7 @@ export function kernelFor(p: PartArrays, kernel: KernelMemory | null): WebAssemb
 }
 
 /** One WebAssembly memory of a fixed size, handed out front to back; it never grows, so views on it stay valid. */
-export class KernelMemory {
+export class KernelMemory implements Room {
   private next = 0;
 
   private constructor(readonly memory: WebAssembly.Memory) {
@@ -99,20 +99,14 @@ export class KernelMemory {
 
   /** A copy of `array` in the memory's free room; null when too little is left. */
   copy<T extends KernelArray>(array: T): T | null {
-    const Type = array.constructor as unknown as {
-      new (buffer: ArrayBufferLike, offset: number, length: number): T;
-      BYTES_PER_ELEMENT: number;
-    };
+    const Type = array.constructor as unknown as TypedArrayType<T>;
     const out = this.allocate(Type, array.length);
     (out as KernelArray | null)?.set(array as never);
     return out;
   }
 
   /** A typed array of `length` elements from the memory's free room; null when too little is left. */
-  allocate<T>(
-    Type: { new (buffer: ArrayBufferLike, offset: number, length: number): T; BYTES_PER_ELEMENT: number },
-    length: number,
-  ): T | null {
+  allocate<T>(Type: TypedArrayType<T>, length: number): T | null {
     const start = Math.ceil(this.next / ALIGN) * ALIGN;
     const end = start + Type.BYTES_PER_ELEMENT * length;
     if (end + TAIL > this.memory.buffer.byteLength) return null;

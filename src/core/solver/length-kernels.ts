@@ -208,7 +208,7 @@ function projectHeldEdges(
  */
 export function createBulgeDirections(topology: SkinTopology, memory: Memory, kernel: KernelMemory | null = null): Float32Array {
   const n = topology.vertexCount;
-  const directions = kernel?.allocate(Float32Array, 3 * n) ?? allocate(Float32Array, 3 * n, memory);
+  const directions = allocate(Float32Array, 3 * n, memory, kernel);
   for (let v = 0; v < n; v++) {
     const seed = hash01(v) - 0.25;
     for (let k = 3 * v; k < 3 * v + 3; k++) directions[k] = seed * topology.restNormals[k];

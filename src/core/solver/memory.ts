@@ -1,10 +1,37 @@
 /** Where the solver's arrays live: plain memory, or shared memory so that a partner thread sees the same arrays. */
 export type Memory = 'local' | 'shared';
 
-/** A typed array of `length` elements, on a SharedArrayBuffer when `memory` is `shared`. */
-export function allocate<T>(Type: { new (buffer: ArrayBufferLike): T; BYTES_PER_ELEMENT: number }, length: number, memory: Memory): T {
+/** A typed array constructor, as `allocate` and a Room call it. */
+export interface TypedArrayType<T> {
+  new (buffer: ArrayBufferLike, offset?: number, length?: number): T;
+  BYTES_PER_ELEMENT: number;
+}
+
+/** Memory that hands out typed arrays from its free room, null once too little is left (a KernelMemory). */
+export interface Room {
+  allocate<T>(Type: TypedArrayType<T>, length: number): T | null;
+}
+
+/**
+ * A typed array of `length` elements: in `room` while it has room (the arrays the WebAssembly kernels read), else on
+ * a SharedArrayBuffer when `memory` is `shared`, else on an ArrayBuffer.
+ */
+export function allocate<T>(Type: TypedArrayType<T>, length: number, memory: Memory, room: Room | null = null): T {
+  const placed = room?.allocate(Type, length);
+  if (placed) return placed;
   const bytes = Type.BYTES_PER_ELEMENT * length;
   return new Type(memory === 'shared' ? new SharedArrayBuffer(bytes) : new ArrayBuffer(bytes));
+}
+
+/** A copy of `array`, placed as `allocate` places a new one. */
+export function allocateCopy<T extends Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array>(
+  array: T,
+  memory: Memory,
+  room: Room | null = null,
+): T {
+  const out = allocate(array.constructor as unknown as TypedArrayType<T>, array.length, memory, room);
+  out.set(array as never);
+  return out;
 }
 
 /** Bytes in a page of memory, as the systems the solver runs on map it (4 KiB; larger pages are whole multiples). */

@@ -6,7 +6,7 @@
  */
 import { BENDING_CALIBRATION } from './bending-setup';
 import type { KernelMemory } from './kernel-memory';
-import { allocate, type Memory } from './memory';
+import { allocate, allocateCopy, type Memory } from './memory';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
 import type { SkinParameters } from './skin-parameters';
@@ -93,24 +93,17 @@ export function ringStencils(topology: SkinTopology): RingStencils {
 export function createSecondRing(topology: SkinTopology, memory: Memory, kernel: KernelMemory | null = null): SecondRing {
   const n = topology.vertexCount;
   const s = ringStencils(topology);
-  const place = <T extends Float32Array | Float64Array | Uint32Array | Uint8Array>(array: T): T => {
-    const placed = kernel?.copy(array);
-    if (placed) return placed;
-    const Type = array.constructor as unknown as { new (buffer: ArrayBufferLike): T; BYTES_PER_ELEMENT: number };
-    const out = allocate(Type, array.length, memory);
-    (out as Float32Array).set(array as never);
-    return out;
-  };
+  const place = <T extends Float32Array | Float64Array | Uint32Array | Uint8Array>(array: T): T => allocateCopy(array, memory, kernel);
   return {
     start: place(s.start),
     offsets: place(s.offsets),
     inverse: place(s.inverse),
     ratio: s.ratio,
     rest: place(s.rest),
-    gain: kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory),
-    reach: kernel?.allocate(Uint8Array, n) ?? allocate(Uint8Array, n, memory),
-    ringMove: kernel?.allocate(Float32Array, 3 * n) ?? allocate(Float32Array, 3 * n, memory),
-    ownStep: kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory),
+    gain: allocate(Float32Array, n, memory, kernel),
+    reach: allocate(Uint8Array, n, memory, kernel),
+    ringMove: allocate(Float32Array, 3 * n, memory, kernel),
+    ownStep: allocate(Float32Array, n, memory, kernel),
     active: false,
   };
 }

@@ -151,8 +151,8 @@ export class SkinSolver {
     this.bendStiffness = new Float32Array(n);
     const kernel = KernelMemory.of(this.buffers.positions);
     const place = <T extends KernelArray>(array: T): T => KernelMemory.place(kernel, array);
-    this.bendGain = kernel?.allocate(Float32Array, n) ?? allocate(Float32Array, n, memory);
-    this.bendPasses = kernel?.allocate(Uint8Array, n) ?? allocate(Uint8Array, n, memory);
+    this.bendGain = allocate(Float32Array, n, memory, kernel);
+    this.bendPasses = allocate(Uint8Array, n, memory, kernel);
     this.triangleFrames = triangleFrames(topology.rest, topology.triangles);
     this.carriedFrames = new CarriedFrames(topology.rest, topology.restNormals, topology.triangles, this.triangleFrames);
     this.edgeLists = createEdgeLists(topology, memory, kernel);
@@ -172,8 +172,8 @@ export class SkinSolver {
     const triangleCount = topology.triangles.length / 3;
     // Rounded up to whole words (see PartArrays.uncheckedWords); the flags past the last triangle stay 0.
     const flagBytes = 4 * Math.ceil(triangleCount / 4);
-    const unchecked = kernel?.allocate(Uint8Array, flagBytes) ?? allocate(Uint8Array, flagBytes, memory);
-    const watched = kernel?.allocate(Uint8Array, flagBytes) ?? allocate(Uint8Array, flagBytes, memory);
+    const unchecked = allocate(Uint8Array, flagBytes, memory, kernel);
+    const watched = allocate(Uint8Array, flagBytes, memory, kernel);
     this.parts = {
       positions: this.buffers.positions,
       rest: place(topology.rest),
@@ -201,7 +201,7 @@ export class SkinSolver {
       uncheckedWords: new Uint32Array(unchecked.buffer, unchecked.byteOffset, flagBytes / 4),
       watched,
       watchedWords: new Uint32Array(watched.buffer, watched.byteOffset, flagBytes / 4),
-      listedTriangle: kernel?.allocate(Int32Array, triangleCount) ?? allocate(Int32Array, triangleCount, memory),
+      listedTriangle: allocate(Int32Array, triangleCount, memory, kernel),
       regionVertices: this.region.vertices,
       shadedVertices: this.region.shadedVertices,
       previous: this.previous,
