@@ -129,7 +129,9 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
         (br_if $end (i32.ge_u (local.get $j) (local.get $j1)))
         (call $one (local.get $xp) (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))) (local.get $s0))
         (local.set $j (i32.add (local.get $j) (i32.const 4)))
-        (br $tail))))${heldKernel()}${bendKernel()}${secondRingKernels()}${orientKernel()}${positionKernel()}
+        (br $tail))))${[heldKernel, bendKernel, secondRingKernels, orientKernel, positionKernel, collideKernel, normalKernels]
+          .map((kernel) => kernel())
+          .join('')}
 )
 `;
 }
@@ -506,6 +508,147 @@ ${shiftXyz('a', 'add', (d) => `(f64.add (f64.mul ${f('s')} ${f(`u${d}`)}) (f64.m
 ${toTarget}        (local.set $along (f64.mul (f64.sub (f64.mul ${f('ms')} ${f('wn')}) ${f('m')})
           (f64.add (f64.add (f64.mul ${f('dx')} ${f('nx')}) (f64.mul ${f('dy')} ${f('ny')})) (f64.mul ${f('dz')} ${f('nz')}))))
 ${shiftXyz('a', 'add', (d) => `(f64.add (f64.mul ${f('m')} ${f(`d${d}`)}) (f64.mul ${f('along')} ${f(`n${d}`)}))`, 8)}
+        (br $next))))`;
+}
+
+/**
+ * The collisions of one collider's candidates (projectCollisions in solver-kernels.ts, with shapeDistance in
+ * colliders.ts), one at a time in their double-precision arithmetic, the direction rounded to single precision as the
+ * loop's scratch array rounds it: the collider's shape (COLLIDER_SHAPE doubles) at byte $sp, the listed candidates
+ * $k0..$k1 at byte $lp, their vertices, clearances and sides at bytes $vp, $cp and $dp.
+ */
+function collideKernel() {
+  const f = (v) => `(local.get $${v})`;
+  /** The shape's value `i` (a double). */
+  const S = (i) => `(f64.load offset=${8 * i} (local.get $sp))`;
+  /** `v` rounded to single precision and back, as a store into the loop's Float32Array scratch does. */
+  const single = (v) => `(f64.promote_f32 (f32.demote_f64 ${v}))`;
+  const dot = (ax, ay, az, bx, by, bz) => `(f64.add (f64.add (f64.mul ${ax} ${bx}) (f64.mul ${ay} ${by})) (f64.mul ${az} ${bz}))`;
+  /** `v` clamped to 0..1 as the loop's `v < 0 ? 0 : v > 1 ? 1 : v` does (a NaN stays). */
+  const clamp = (v) =>
+    `(select (f64.const 0) (select (f64.const 1) ${f(v)} (f64.gt ${f(v)} (f64.const 1))) (f64.lt ${f(v)} (f64.const 0)))`;
+  const axes = ['x', 'y', 'z'];
+  const toShape = axes
+    .map((d, i) => `        (local.set $r${d} (f64.sub (f64.promote_f32 (f32.load offset=${4 * i} (local.get $a))) ${S(i)}))\n`)
+    .join('');
+  const span = axes.map((d, i) => `            (local.set $s${d} (f64.sub ${S(3 + i)} ${S(i)}))\n`).join('');
+  const normal = axes.map((d, i) => `              (local.set $n${d} ${S(13 + i)})\n`).join('');
+  const face = axes.map((d) => `                (local.set $o${d} ${single(`(f64.mul ${f('side')} ${f(`n${d}`)})`)})\n`).join('');
+  const up = axes.map((d, i) => `              (local.set $p${d} (f64.mul ${f('u')} ${S(6 + i)}))\n`).join('');
+  const along = axes.map((d) => `            (local.set $p${d} (f64.add ${f(`p${d}`)} (f64.mul ${f('t')} ${f(`s${d}`)})))\n`).join('');
+  const away = axes.map((d) => `          (local.set $d${d} (f64.sub ${f(`r${d}`)} ${f(`p${d}`)}))\n`).join('');
+  const unit = axes.map((d) => `            (local.set $o${d} ${single(`(f64.div ${f(`d${d}`)} ${f('d')})`)})\n`).join('');
+  return `
+  (func (export "collide") (param $xp i32) (param $sp i32) (param $lp i32) (param $vp i32) (param $cp i32) (param $dp i32)
+    (param $k0 i32) (param $k1 i32)
+    (local $k i32) (local $j i32) (local $a i32) (local $kind f64) (local $side f64) (local $rx f64) (local $ry f64)
+    (local $rz f64) (local $sx f64) (local $sy f64) (local $sz f64) (local $nx f64) (local $ny f64) (local $nz f64)
+    (local $px f64) (local $py f64) (local $pz f64) (local $dx f64) (local $dy f64) (local $dz f64) (local $ox f64)
+    (local $oy f64) (local $oz f64) (local $t f64) (local $u f64) (local $d f64) (local $dist f64) (local $push f64)
+    (local.set $kind ${S(10)})
+    (local.set $k (local.get $k0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
+        (local.set $j (i32.load (i32.add (local.get $lp) (i32.shl (local.get $k) (i32.const 2)))))
+        (local.set $k (i32.add (local.get $k) (i32.const 1)))
+        (local.set $a (i32.add (local.get $xp)
+          (i32.mul (i32.load (i32.add (local.get $vp) (i32.shl (local.get $j) (i32.const 2)))) (i32.const 12))))
+        (local.set $side (f64.convert_i32_s (i32.load8_s (i32.add (local.get $dp) (local.get $j)))))
+${toShape}        (local.set $px (f64.const 0))
+        (local.set $py (f64.const 0))
+        (local.set $pz (f64.const 0))
+        (block $measured
+          ;; Not a sphere (kind 0): the nearest point of the segment, or of the slab's rectangle.
+          (if (f64.ne ${f('kind')} (f64.const 0)) (then
+${span}            (local.set $t (f64.mul ${dot(f('rx'), f('ry'), f('rz'), f('sx'), f('sy'), f('sz'))} ${S(11)}))
+            (if (f64.eq ${f('kind')} (f64.const 2)) (then
+              (local.set $u (f64.mul ${dot(f('rx'), f('ry'), f('rz'), S(6), S(7), S(8))} ${S(12)}))
+${normal}              ;; Over the face of a one-sided slab: along its normal toward the candidate's rest side.
+              (if (i32.and (i32.and (i32.and (f64.ne ${f('side')} (f64.const 0)) (f64.ge ${f('t')} (f64.const 0)))
+                  (i32.and (f64.le ${f('t')} (f64.const 1)) (f64.ge ${f('u')} (f64.const 0))))
+                  (i32.and (f64.le ${f('u')} (f64.const 1)) (i32.or (i32.or (f64.ne ${f('nx')} (f64.const 0))
+                    (f64.ne ${f('ny')} (f64.const 0))) (f64.ne ${f('nz')} (f64.const 0))))) (then
+${face}                (local.set $dist
+                  (f64.sub (f64.mul ${f('side')} ${dot(f('rx'), f('ry'), f('rz'), f('nx'), f('ny'), f('nz'))}) ${S(9)}))
+                (br $measured)))
+              (local.set $u ${clamp('u')})
+${up}))
+            (local.set $t ${clamp('t')})
+${along}))
+${away}          (local.set $d (f64.sqrt ${dot(f('dx'), f('dy'), f('dz'), f('dx'), f('dy'), f('dz'))}))
+          (if (f64.gt ${f('d')} (f64.const 0)) (then
+${unit}) (else
+            (local.set $ox (f64.const 0))
+            (local.set $oy (f64.const 0))
+            (local.set $oz (f64.const 1))))
+          (local.set $dist (f64.sub ${f('d')} ${S(9)})))
+        (local.set $push (f64.sub (f64.promote_f32 (f32.load (i32.add (local.get $cp) (i32.shl (local.get $j) (i32.const 2)))))
+          ${f('dist')}))
+        (br_if $next (i32.eqz (f64.gt ${f('push')} (f64.const 0))))
+${shiftXyz('a', 'add', (d) => `(f64.mul ${f('push')} ${f(`o${d}`)})`, 8)}
+        (br $next))))`;
+}
+
+/**
+ * The normals (projectNormals in solver-kernels.ts, with addFaceNormals and normalize in topology.ts) in their
+ * double-precision arithmetic: `faces` adds each listed triangle's area-weighted normal to its corners' (corners, as
+ * xyz offsets, at byte $cp; triangles $t0..$t1), `units` scales each listed vertex's normal to unit length (the
+ * vertex list at byte $vp; entries $k0..$k1), a zero one to +z.
+ */
+function normalKernels() {
+  const f = (v) => `(local.get $${v})`;
+  const axes = ['x', 'y', 'z'];
+  const corner = (c, o) => `        (local.set $${c} (i32.shl (i32.load offset=${o} (local.get $p)) (i32.const 2)))\n`;
+  const at = (c, i) => `(f64.promote_f32 (f32.load offset=${4 * i} (i32.add (local.get $xp) (local.get $${c}))))`;
+  const edges = ['u', 'v']
+    .map((e, k) => axes.map((d, i) => `        (local.set $${e}${d} (f64.sub ${at(k === 0 ? 'b' : 'c', i)} ${at('a', i)}))\n`).join(''))
+    .join('');
+  const cross = [
+    ['x', 'y', 'z'],
+    ['y', 'z', 'x'],
+    ['z', 'x', 'y'],
+  ]
+    .map(
+      ([d, p, q]) => `        (local.set $n${d} (f64.sub (f64.mul ${f(`u${p}`)} ${f(`v${q}`)}) (f64.mul ${f(`u${q}`)} ${f(`v${p}`)})))\n`,
+    )
+    .join('');
+  const add = ['a', 'b', 'c']
+    .map((c) => `        (local.set $q (i32.add (local.get $op) (local.get $${c})))\n${shiftXyz('q', 'add', (d) => f(`n${d}`), 8)}`)
+    .join('');
+  const unit = axes
+    .map((_, i) => {
+      const slot = `offset=${4 * i} (local.get $q)`;
+      return `            (f32.store ${slot} (f32.demote_f64 (f64.div (f64.promote_f32 (f32.load ${slot})) ${f('len')})))\n`;
+    })
+    .join('');
+  const load = (i) => `(f64.promote_f32 (f32.load offset=${4 * i} (local.get $q)))`;
+  return `
+  (func (export "faces") (param $xp i32) (param $cp i32) (param $op i32) (param $t0 i32) (param $t1 i32)
+    (local $t i32) (local $p i32) (local $a i32) (local $b i32) (local $c i32) (local $q i32) (local $ux f64)
+    (local $uy f64) (local $uz f64) (local $vx f64) (local $vy f64) (local $vz f64) (local $nx f64) (local $ny f64)
+    (local $nz f64)
+    (local.set $t (local.get $t0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $t) (local.get $t1)))
+        (local.set $p (i32.add (local.get $cp) (i32.mul (local.get $t) (i32.const 12))))
+        (local.set $t (i32.add (local.get $t) (i32.const 1)))
+${corner('a', 0)}${corner('b', 4)}${corner('c', 8)}${edges}${cross}${add}        (br $next))))
+  (func (export "units") (param $op i32) (param $vp i32) (param $k0 i32) (param $k1 i32)
+    (local $k i32) (local $q i32) (local $len f64)
+    (local.set $k (local.get $k0))
+    (block $done
+      (loop $next
+        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
+        (local.set $q (i32.add (local.get $op)
+          (i32.mul (i32.load (i32.add (local.get $vp) (i32.shl (local.get $k) (i32.const 2)))) (i32.const 12))))
+        (local.set $k (i32.add (local.get $k) (i32.const 1)))
+        (local.set $len (f64.sqrt (f64.add (f64.add (f64.mul ${load(0)} ${load(0)}) (f64.mul ${load(1)} ${load(1)}))
+          (f64.mul ${load(2)} ${load(2)}))))
+        (if (f64.gt ${f('len')} (f64.const 0)) (then
+${unit}) (else
+          (f32.store offset=8 (local.get $q) (f32.const 1))))
         (br $next))))`;
 }
 

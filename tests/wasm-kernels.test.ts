@@ -2,14 +2,18 @@ import { execFileSync } from 'node:child_process';
 import { describe, expect, it } from 'vitest';
 import { mulberry32 } from '../src/core/random';
 import { PARTS } from '../src/core/solver/constraint-lists';
+import type { Collider } from '../src/core/solver/colliders';
 import { KernelMemory } from '../src/core/solver/kernel-memory';
 import { ORIENT_AGAIN, ORIENT_FULL, ORIENT_WATCHED, projectOrientationPart } from '../src/core/solver/orientation-kernel';
 import { SkinSolver } from '../src/core/solver/solver';
 import { createSolverBuffers } from '../src/core/solver/solver-buffers';
 import { projectSecondRingPart } from '../src/core/solver/second-ring';
-import { projectBendingPart, projectPositions } from '../src/core/solver/solver-kernels';
+import { projectBendingPart, projectCollisions, projectNormals, projectPositions } from '../src/core/solver/solver-kernels';
 import { buildTopology } from '../src/core/solver/topology';
 import { triangleGrid } from './fixtures/grids';
+import { loadHeadSimulation } from './fixtures/head-simulation';
+
+type HeadSimulation = Awaited<ReturnType<typeof loadHeadSimulation>>;
 
 // The WebAssembly kernels (wasm-kernels.ts) against the JavaScript loops they stand in for.
 const grid = triangleGrid(0.03, 0.03, 0.0015);
@@ -44,6 +48,18 @@ function compare(byKernel: Float32Array, byLoop: Float32Array, start: Float32Arr
     if (byKernel[i] !== byLoop[i]) differ++;
   }
   return { moved, differ };
+}
+
+/** The high head three frames into happiness, on shared memory (loaded once for the tests that read it). */
+let fine: Promise<HeadSimulation> | null = null;
+function fineHappiness(): Promise<HeadSimulation> {
+  fine ??= loadHeadSimulation('high', {}, { memory: 'shared' }).then((sim) => {
+    sim.expression.applyPreset('happiness', 1);
+    sim.apply();
+    for (let f = 0; f < 3; f++) sim.host.step();
+    return sim;
+  });
+  return fine;
 }
 
 describe('WebAssembly kernels', () => {
@@ -88,11 +104,7 @@ describe('WebAssembly kernels', () => {
   });
 
   it('bend the fine head two rings out as the JavaScript loop does, to the bit', async () => {
-    const { loadHeadSimulation } = await import('./fixtures/head-simulation');
-    const sim = await loadHeadSimulation('high', {}, { memory: 'shared' });
-    sim.expression.applyPreset('happiness', 1);
-    sim.apply();
-    for (let f = 0; f < 3; f++) sim.host.step();
+    const sim = await fineHappiness();
     const kernel = sim.host.solver.partArrays();
     const ring = kernel.secondRing;
     // The same arrays without the kernel memory: the pass then takes its JavaScript loop.
@@ -174,6 +186,61 @@ describe('WebAssembly kernels', () => {
     const { moved, differ } = compare(byKernel, byLoop, start);
     expect(kernel.kernelMemory).not.toBeNull();
     expect(moved).toBeGreaterThan(1e-5);
+    expect(differ).toBe(0);
+  });
+
+  it('push the skin out of spheres, capsules and slabs as the JavaScript loop does, to the bit', () => {
+    const buffers = createSolverBuffers(topology, 'shared');
+    const colliders: Collider[] = [
+      { name: 'sphere', a: [-0.008, -0.008, -0.004], radius: 0.003 },
+      { name: 'capsule', a: [-0.01, 0.006, -0.003], b: [0.01, 0.006, -0.003], radius: 0.002 },
+      // A flat slab under the patch's right half, its face toward the skin: one-sided over its face.
+      { name: 'slab', a: [0.002, -0.012, -0.003], b: [0.012, -0.012, -0.003], up: [0, 0.016, 0], radius: 0.001 },
+    ];
+    const s = new SkinSolver(topology, { buffers, activeRegion: false, memory: 'shared', colliders });
+    const kernel = s.partArrays();
+    const loop = { ...kernel, collisionKernel: false };
+    const random = mulberry32(21);
+    const x = buffers.positions;
+    // The skin sunk by up to 6 mm and shaken sideways: candidates inside each collider, some through the slab.
+    for (let v = 0; v < topology.vertexCount; v++) {
+      x[3 * v] += (random() - 0.5) * 0.002;
+      x[3 * v + 1] += (random() - 0.5) * 0.002;
+      x[3 * v + 2] -= random() * 0.006;
+    }
+    const start = Float32Array.from(x);
+    const direction = new Float32Array(3);
+    const push = (a: typeof kernel): Float32Array => {
+      x.set(start);
+      projectCollisions(a, 0, 1, direction);
+      return Float32Array.from(x);
+    };
+    const byKernel = push(kernel);
+    const byLoop = push(loop);
+    const { moved, differ } = compare(byKernel, byLoop, start);
+    expect(kernel.collisionKernel).toBe(true);
+    expect(kernel.activeCandidateStart[colliders.length]).toBeGreaterThan(100);
+    expect(moved).toBeGreaterThan(1e-3);
+    expect(differ).toBe(0);
+  });
+
+  it("add up the fine head's normals as the JavaScript loops do, to the bit", async () => {
+    const sim = await fineHappiness();
+    const kernel = sim.host.solver.partArrays();
+    const loop = { ...kernel, kernelMemory: null };
+    // The region's count of the shaded list (which also holds the ring around it): each of them made unit length.
+    const count = sim.host.solver.activeVertexCount;
+    const shade = (a: typeof kernel): Float32Array => {
+      a.normals.fill(0);
+      projectNormals(a, count, null, 0);
+      return Float32Array.from(a.normals);
+    };
+    const byKernel = shade(kernel);
+    const byLoop = shade(loop);
+    const { moved, differ } = compare(byKernel, byLoop, new Float32Array(byLoop.length));
+    expect(kernel.kernelMemory).not.toBeNull();
+    expect(count).toBeGreaterThan(10_000);
+    expect(moved).toBeCloseTo(1, 5);
     expect(differ).toBe(0);
   });
 

@@ -90,7 +90,7 @@ export class ActiveRegion {
     this.border = new Uint32Array(n);
     this.onRing = new Uint8Array(n);
     this.shaded = new Uint8Array(n);
-    this.shadedVertices = allocate(Uint32Array, n, memory);
+    this.shadedVertices = allocate(Uint32Array, n, memory, kernel);
     this.outer = new Uint32Array(n);
     this.onOuter = new Uint8Array(n);
     this.scratch = new Uint32Array(n);

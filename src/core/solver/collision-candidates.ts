@@ -4,8 +4,19 @@
  */
 import type { ActiveRegion } from './active-region';
 import { COLLIDER_SHAPE, shapeDistance, slabSide, writeColliderShape, type Collider } from './colliders';
-import { allocate, type Memory } from './memory';
+import { allocate, allocateCopy, type Memory, type Room } from './memory';
+import type { PartArrays } from './part-arrays';
 import type { SkinTopology } from './topology';
+
+/** The collision loop's arrays among the part arrays. */
+type CandidateArrays =
+  | 'colliders'
+  | 'colliderShapes'
+  | 'colliderVertices'
+  | 'colliderClearance'
+  | 'colliderSide'
+  | 'activeCandidates'
+  | 'activeCandidateStart';
 
 /**
  * Skin closer than this to a collider at rest (metres) is checked against it: the lids over the eyes, the lips over
@@ -35,18 +46,25 @@ export class CollisionCandidates {
   private readonly reached: Uint32Array;
   private readonly direction = new Float32Array(3);
 
-  constructor(topology: SkinTopology, colliders: Collider[], memory: Memory) {
+  /** The lists a frame's collision loop reads go in `room` while it has room (the kernel memory), else in `memory`. */
+  constructor(topology: SkinTopology, colliders: Collider[], memory: Memory, room: Room | null = null) {
     this.colliders = colliders;
     const c = collisionCandidates(topology, colliders);
     this.colliderStart = c.start;
-    this.colliderVertices = c.vertices;
-    this.colliderClearance = c.clearance;
-    this.colliderSide = c.side;
-    this.activeCandidates = allocate(Uint32Array, c.vertices.length, memory);
+    this.colliderVertices = allocateCopy(c.vertices, memory, room);
+    this.colliderClearance = allocateCopy(c.clearance, memory, room);
+    this.colliderSide = allocateCopy(c.side, memory, room);
+    this.activeCandidates = allocate(Uint32Array, c.vertices.length, memory, room);
     this.activeCandidateStart = allocate(Uint32Array, colliders.length + 1, memory);
     this.reached = new Uint32Array(c.vertices.length);
-    this.colliderShapes = allocate(Float64Array, COLLIDER_SHAPE * colliders.length, memory);
+    this.colliderShapes = allocate(Float64Array, COLLIDER_SHAPE * colliders.length, memory, room);
     for (let k = 0; k < colliders.length; k++) writeColliderShape(colliders[k], this.colliderShapes, k);
+  }
+
+  /** The arrays the collision loop reads (see PartArrays). */
+  partArrays(): Pick<PartArrays, CandidateArrays> {
+    const { colliders, colliderShapes, colliderVertices, colliderClearance, colliderSide, activeCandidates, activeCandidateStart } = this;
+    return { colliders, colliderShapes, colliderVertices, colliderClearance, colliderSide, activeCandidates, activeCandidateStart };
   }
 
   /** Lists the collision candidates a frame checks: those in or next to the region (all of them without it). */

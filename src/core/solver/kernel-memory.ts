@@ -3,6 +3,7 @@
  * records, the bulge directions and the bending's arrays), so that the kernels and the JavaScript loops share those
  * arrays without a copy.
  */
+import { COLLIDER_SHAPE } from './colliders';
 import { EDGE_RECORD } from './constraint-lists';
 import type { Memory, Room, TypedArrayType } from './memory';
 import type { PartArrays } from './part-arrays';
@@ -17,7 +18,9 @@ const ALIGN = 16;
 /** Room after the arrays: the held-edge kernel reads a whole group of four records past a list's last one. */
 const TAIL = 64;
 /** The arrays a skin's kernels read, at most: what forSkin makes room for (each start aligned). */
-const KERNEL_ARRAYS = 40;
+const KERNEL_ARRAYS = 45;
+/** The colliders whose shapes forSkin makes room for (the default head has 18: two eyes and two rows of teeth). */
+const COLLIDERS = 64;
 
 /** A typed array type the kernel memory holds. */
 export type KernelArray = Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array;
@@ -26,17 +29,21 @@ export type KernelArray = Float32Array | Float64Array | Uint32Array | Int32Array
 const owners = new WeakMap<ArrayBufferLike, KernelMemory>();
 
 /**
- * The memory the solver's kernels run on: `kernel`'s, if every array they read and write lies in it (forSkin sizes it
- * for them all), else null (the JavaScript loops run). Checked once, as a solver is made.
+ * Sets which of a solver's passes run as WebAssembly, once, as the solver is made: every pass but the collisions
+ * where every array they read and write lies in `kernel` (forSkin sizes it for them all; `p.kernelMemory`, else null
+ * and the JavaScript loops run), and the collisions too where their candidates' arrays also fit (`p.collisionKernel`).
  */
-export function kernelFor(p: PartArrays, kernel: KernelMemory | null): WebAssembly.Memory | null {
+export function useKernels(p: PartArrays, kernel: KernelMemory | null): void {
   const r = p.secondRing;
   const t = p.triangles;
   const lengths = [p.positions, p.edges.ends, p.bulgeDirections, p.rest, p.targets, p.weights, p.normalWeights];
   const bending = [p.restNormals, p.neighbourStart, p.neighbourOffsets, p.bendRest, p.bendGain, p.inverseDegree, p.bendPasses];
   const ring = [p.bending.vertices, p.regionVertices, r.start, r.offsets, r.inverse, r.rest, r.gain, r.reach, r.ringMove, r.ownStep];
   const orientation = [t.corners, t.frames, p.unchecked, p.watched, p.vertexTriangleStart, p.vertexTriangles, p.listedTriangle];
-  return kernel?.holds(...lengths, ...bending, ...ring, ...orientation) ? kernel.memory : null;
+  const normals = [p.normals, p.shadedTriangles.corners, p.shadedVertices];
+  p.kernelMemory = kernel?.holds(...lengths, ...bending, ...ring, ...orientation, ...normals) ? kernel.memory : null;
+  const candidates = [p.colliderShapes, p.colliderVertices, p.colliderClearance, p.colliderSide, p.activeCandidates];
+  p.collisionKernel = p.kernelMemory !== null && kernel?.holds(...candidates) === true;
 }
 
 /** One WebAssembly memory of a fixed size, handed out front to back; it never grows, so views on it stay valid. */
@@ -73,7 +80,14 @@ export class KernelMemory implements Room {
     const flags = 2 * 4 * Math.ceil(triangles / 4);
     // The position constraints': the rest positions, the muscles' targets, weights and normal weights.
     const positions = 3 * n + 3 * n + n + n;
-    const bytes = 4 * (first + second + orientation + positions) + 8 * 2 * n + 2 * n + flags + KERNEL_ARRAYS * ALIGN + TAIL;
+    // The normals': the normals, the shaded triangles' corners and frames (three and four a triangle), the shaded vertices.
+    const normals = 3 * n + 7 * triangles + n;
+    // The collisions': up to a candidate a vertex (the high head lists one for every third), each with its vertex,
+    // its place in the frame's list, its clearance (words) and side (a byte), and up to COLLIDERS shapes. A skin with
+    // more keeps its collisions in JavaScript (see useKernels).
+    const collisions = 4 * 3 * n + n + 8 * COLLIDER_SHAPE * COLLIDERS;
+    const bytes =
+      4 * (first + second + orientation + positions + normals) + 8 * 2 * n + 2 * n + flags + collisions + KERNEL_ARRAYS * ALIGN + TAIL;
     const pages = Math.ceil(bytes / WASM_PAGE);
     try {
       return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }));

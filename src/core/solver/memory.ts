@@ -24,7 +24,7 @@ export function allocate<T>(Type: TypedArrayType<T>, length: number, memory: Mem
 }
 
 /** A copy of `array`, placed as `allocate` places a new one. */
-export function allocateCopy<T extends Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array>(
+export function allocateCopy<T extends Float32Array | Float64Array | Uint32Array | Int32Array | Uint8Array | Int8Array>(
   array: T,
   memory: Memory,
   room: Room | null = null,

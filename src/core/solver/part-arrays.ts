@@ -29,7 +29,7 @@ export interface PartArrays {
   edges: EdgeLists;
   /**
    * The WebAssembly memory every array the kernels read and write lies in, where the length, bending and orientation
-   * passes run as WebAssembly (see wasm-kernels.ts, kernelFor); null: the JavaScript loops.
+   * passes run as WebAssembly (see wasm-kernels.ts, useKernels); null: the JavaScript loops.
    */
   kernelMemory: WebAssembly.Memory | null;
   /**
@@ -88,4 +88,6 @@ export interface PartArrays {
   /** The candidates a frame checks, collider by collider: `activeCandidates[activeCandidateStart[c]..[c + 1]]`. */
   activeCandidates: Uint32Array;
   activeCandidateStart: Uint32Array;
+  /** Whether the collisions run as WebAssembly too: the candidates' arrays lie in the kernel memory (see useKernels). */
+  collisionKernel: boolean;
 }

@@ -1,6 +1,6 @@
 /** The typed arrays a SkinSolver reads and writes, and what it reports of a frame (timings, constraint counts). */
 import { KernelMemory } from './kernel-memory';
-import { allocate, type Memory } from './memory';
+import { allocate, allocateCopy, type Memory } from './memory';
 import type { SkinTopology } from './topology';
 
 /** Typed arrays the solver reads and writes; pass them to place them in shared memory. */
@@ -39,24 +39,14 @@ export interface SolverBuffers {
 export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local', kernel = true): SolverBuffers {
   const n = topology.vertexCount;
   const room = kernel ? KernelMemory.forSkin(topology, memory) : null;
-  const inRoom = (length: number): Float32Array => room?.allocate(Float32Array, length) ?? allocate(Float32Array, length, memory);
-  const positions = inRoom(3 * n);
-  positions.set(topology.rest);
-  const targets = inRoom(3 * n);
-  targets.set(topology.rest);
-  const copy = (from: Float32Array): Float32Array => {
-    const to = allocate(Float32Array, from.length, memory);
-    to.set(from);
-    return to;
-  };
   return {
-    positions,
-    normals: copy(topology.restNormals),
-    targets,
-    weights: inRoom(n),
-    normalWeights: inRoom(n),
+    positions: allocateCopy(topology.rest, memory, room),
+    normals: allocateCopy(topology.restNormals, memory, room),
+    targets: allocateCopy(topology.rest, memory, room),
+    weights: allocate(Float32Array, n, memory, room),
+    normalWeights: allocate(Float32Array, n, memory, room),
     turnWeights: allocate(Float32Array, n, memory),
-    unfoldedLengths: copy(topology.restLength),
+    unfoldedLengths: allocateCopy(topology.restLength, memory),
   };
 }
 

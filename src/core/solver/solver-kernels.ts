@@ -10,7 +10,7 @@ import { PART_EVEN, PART_EVEN_SEAM, PARTS } from './constraint-lists';
 import type { PartArrays } from './part-arrays';
 import { meet } from './partner-board';
 import { addFaceNormals, normalize } from './topology';
-import { wasmKernels } from './wasm-kernels';
+import { type WasmKernels, wasmKernels } from './wasm-kernels';
 
 /**
  * Position and muscle constraints of the region's vertices `k0..k1`, each vertex's in turn (both move only their own
@@ -93,19 +93,27 @@ export function projectPositions(a: PartArrays, stiffness: number, extra: number
  * all. Each vertex gets the same sums in the same order either way.
  */
 export function projectNormals(a: PartArrays, count: number, board: Int32Array | null, half: number): void {
-  const x = a.positions;
   const out = a.normals;
-  const { corners, parts } = a.shadedTriangles;
+  const parts = a.shadedTriangles.parts;
+  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
   if (board) {
-    addFaceNormals(x, corners, parts[PART_EVEN + half], parts[PART_EVEN + half + 1], 1, out);
+    addFaces(a, kernels, parts[PART_EVEN + half], parts[PART_EVEN + half + 1]);
     meet(board);
-    addFaceNormals(x, corners, parts[PART_EVEN_SEAM + half], parts[PART_EVEN_SEAM + half + 1], 1, out);
+    addFaces(a, kernels, parts[PART_EVEN_SEAM + half], parts[PART_EVEN_SEAM + half + 1]);
     meet(board);
-  } else addFaceNormals(x, corners, 0, parts[PARTS], 1, out);
+  } else addFaces(a, kernels, 0, parts[PARTS]);
   const V = a.shadedVertices;
   const k0 = board && half === 1 ? count >> 1 : 0;
   const k1 = board && half === 0 ? count >> 1 : count;
-  for (let k = k0; k < k1; k++) normalize(out, 3 * V[k]);
+  if (kernels) kernels.units(out.byteOffset, V.byteOffset, k0, k1);
+  else for (let k = k0; k < k1; k++) normalize(out, 3 * V[k]);
+}
+
+/** The face normals of shaded triangles `t0..t1` added to their corners', by the kernel if any. */
+function addFaces(a: PartArrays, kernels: WasmKernels | null, t0: number, t1: number): void {
+  const corners = a.shadedTriangles.corners;
+  if (kernels) kernels.faces(a.positions.byteOffset, corners.byteOffset, a.normals.byteOffset, t0, t1);
+  else addFaceNormals(a.positions, corners, t0, t1, 1, a.normals);
 }
 
 /**
@@ -118,6 +126,7 @@ export function projectCollisions(a: PartArrays, half: number, halves: number, d
   const list = a.activeCandidates;
   const start = a.activeCandidateStart;
   const shapes = a.colliderShapes;
+  const kernels = a.collisionKernel && a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
   for (let c = 0; c < a.colliders.length; c++) {
     const o = COLLIDER_SHAPE * c;
     let k0 = start[c];
@@ -126,6 +135,12 @@ export function projectCollisions(a: PartArrays, half: number, halves: number, d
       const middle = (k0 + k1) >> 1;
       if (half === 0) k1 = middle;
       else k0 = middle;
+    }
+    if (kernels) {
+      const vertices = a.colliderVertices.byteOffset;
+      const shape = shapes.byteOffset + o * Float64Array.BYTES_PER_ELEMENT;
+      kernels.collide(x.byteOffset, shape, list.byteOffset, vertices, a.colliderClearance.byteOffset, a.colliderSide.byteOffset, k0, k1);
+      continue;
     }
     for (let k = k0; k < k1; k++) {
       const j = list[k];

@@ -25,7 +25,7 @@ import {
   type TriangleLists,
 } from './constraint-lists';
 import { restOutside } from './frame-kernels';
-import { type KernelArray, KernelMemory, kernelFor } from './kernel-memory';
+import { type KernelArray, KernelMemory, useKernels } from './kernel-memory';
 import { createBulgeDirections } from './length-kernels';
 import { allocate, type Memory } from './memory';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from './muscle-inputs';
@@ -165,8 +165,7 @@ export class SkinSolver {
     this.blocks = vertexBlocks(topology);
     this.bendParts = ringParts(topology, this.blocks);
     this.region = new ActiveRegion(topology, options.activeRegion ?? true, memory, kernel);
-    const c = new CollisionCandidates(topology, options.colliders ?? [], memory);
-    this.collisions = c;
+    this.collisions = new CollisionCandidates(topology, options.colliders ?? [], memory, kernel);
     this.lips = options.mouth ? LipContact.find(topology.rest, topology.restNormals, options.mouth) : null;
     this.mouthHeight = options.mouth ? (options.mouth.left[1] + options.mouth.right[1]) / 2 : null;
     const triangleCount = topology.triangles.length / 3;
@@ -182,13 +181,14 @@ export class SkinSolver {
       weights: this.buffers.weights,
       normalWeights: this.buffers.normalWeights,
       normals: this.buffers.normals,
-      shadedTriangles: createTriangleLists(topology, memory),
+      shadedTriangles: createTriangleLists(topology, memory, kernel),
       neighbourStart: place(topology.neighbourStart),
       neighbourOffsets: this.neighbourOffsets,
       vertexTriangleStart: place(topology.vertexTriangleStart),
       vertexTriangles: place(topology.vertexTriangles),
       edges: this.edgeLists,
       kernelMemory: null,
+      collisionKernel: false,
       bulgeDirections: this.bulgeDirections,
       triangles: this.triangleLists,
       bending: createBendingLists(n, memory, kernel),
@@ -210,15 +210,9 @@ export class SkinSolver {
       restart: this.relaxation.restart,
       calm: this.relaxation.calm,
       path: this.relaxation.path,
-      colliders: c.colliders,
-      colliderShapes: c.colliderShapes,
-      colliderVertices: c.colliderVertices,
-      colliderClearance: c.colliderClearance,
-      colliderSide: c.colliderSide,
-      activeCandidates: c.activeCandidates,
-      activeCandidateStart: c.activeCandidateStart,
+      ...this.collisions.partArrays(),
     };
-    this.parts.kernelMemory = kernelFor(this.parts, kernel);
+    useKernels(this.parts, kernel);
     this.passes = new FramePasses(this.parts, this.lips, this.region.inside);
     this.setParameters(options.parameters ?? {});
     this.updateMuscles();

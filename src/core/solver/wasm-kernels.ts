@@ -104,6 +104,25 @@ export interface WasmKernels {
     k0: number,
     k1: number,
   ): void;
+  /**
+   * Projects the collisions of listed candidates `k0..k1` against one collider as projectCollisions does: the
+   * positions, the collider's shape, the list, and the candidates' vertices, clearances and sides at their byte
+   * addresses.
+   */
+  collide(
+    positions: number,
+    shape: number,
+    list: number,
+    vertices: number,
+    clearances: number,
+    sides: number,
+    k0: number,
+    k1: number,
+  ): void;
+  /** Adds the area-weighted normals of listed triangles `t0..t1` to their corners' as addFaceNormals does. */
+  faces(positions: number, corners: number, normals: number, t0: number, t1: number): void;
+  /** Scales the normals of list entries `k0..k1` to unit length as normalize does. */
+  units(normals: number, vertices: number, k0: number, k1: number): void;
 }
 
 /** The compiled modules for a plain and a shared memory; null where they cannot be compiled, undefined before. */
