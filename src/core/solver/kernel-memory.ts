@@ -9,7 +9,7 @@ import type { Memory, Room, TypedArrayType } from './memory';
 import type { PartArrays } from './part-arrays';
 import { ringStencils } from './second-ring';
 import type { SkinTopology } from './topology';
-import { kernelModule } from './wasm-kernels';
+import { kernelModule } from './wasm-kernel-module';
 
 /** Bytes in a WebAssembly page. */
 const WASM_PAGE = 65536;
@@ -30,8 +30,9 @@ const owners = new WeakMap<ArrayBufferLike, KernelMemory>();
 
 /**
  * Sets which of a solver's passes run as WebAssembly, once, as the solver is made: every pass but the collisions
- * where every array they read and write lies in `kernel` (forSkin sizes it for them all; `p.kernelMemory`, else null
- * and the JavaScript loops run), and the collisions too where their candidates' arrays also fit (`p.collisionKernel`).
+ * where every array they read and write lies in `kernel` (forSkin sizes it for them all; `p.kernelMemory` and
+ * `p.kernelModule`, else null and the JavaScript loops run), and the collisions too where their candidates' arrays also
+ * fit (`p.collisionKernel`).
  */
 export function useKernels(p: PartArrays, kernel: KernelMemory | null): void {
   const r = p.secondRing;
@@ -41,29 +42,36 @@ export function useKernels(p: PartArrays, kernel: KernelMemory | null): void {
   const ring = [p.bending.vertices, p.regionVertices, r.start, r.offsets, r.inverse, r.rest, r.gain, r.reach, r.ringMove, r.ownStep];
   const orientation = [t.corners, t.frames, p.unchecked, p.watched, p.vertexTriangleStart, p.vertexTriangles, p.listedTriangle];
   const normals = [p.normals, p.shadedTriangles.corners, p.shadedVertices];
-  p.kernelMemory = kernel?.holds(...lengths, ...bending, ...ring, ...orientation, ...normals) ? kernel.memory : null;
+  const held = kernel?.holds(...lengths, ...bending, ...ring, ...orientation, ...normals) ? kernel : null;
+  p.kernelMemory = held?.memory ?? null;
+  p.kernelModule = held?.module ?? null;
   const candidates = [p.colliderShapes, p.colliderVertices, p.colliderClearance, p.colliderSide, p.activeCandidates];
-  p.collisionKernel = p.kernelMemory !== null && kernel?.holds(...candidates) === true;
+  p.collisionKernel = held?.holds(...candidates) === true;
 }
 
 /** One WebAssembly memory of a fixed size, handed out front to back; it never grows, so views on it stay valid. */
 export class KernelMemory implements Room {
   private next = 0;
 
-  private constructor(readonly memory: WebAssembly.Memory) {
+  private constructor(
+    readonly memory: WebAssembly.Memory,
+    /** The kernels' module for this memory (see wasm-kernel-module.ts). */
+    readonly module: WebAssembly.Module,
+  ) {
     owners.set(memory.buffer, this);
   }
 
   /**
    * A memory with room for a skin's positions, edge records and bulge directions, for the bending's rest normals,
    * neighbours, constraint at rest, gains, inverse degrees, passes and list, for the second ring's arrays and the
-   * region's vertex list, and for the orientation's triangle lists, flags and vertex triangles; shared when `memory` is
-   * `shared`. Null
-   * where the kernels cannot run here (the solver then keeps its arrays in plain typed arrays and the JavaScript loops).
+   * region's vertex list, for the orientation's triangle lists, flags and vertex triangles, for the position
+   * constraints' inputs, the normals and the collisions' candidates; shared when `memory` is `shared`. Null where the
+   * kernels cannot run here (the solver then keeps its arrays in plain typed arrays and the JavaScript loops).
    */
   static forSkin(topology: SkinTopology, memory: Memory): KernelMemory | null {
     const shared = memory === 'shared';
-    if (!kernelModule(shared)) return null;
+    const module = kernelModule(shared);
+    if (!module) return null;
     const n = topology.vertexCount;
     const edges = EDGE_RECORD * topology.restLength.length;
     const neighbours = topology.neighbourStart[n];
@@ -90,7 +98,7 @@ export class KernelMemory implements Room {
       4 * (first + second + orientation + positions + normals) + 8 * 2 * n + 2 * n + flags + collisions + KERNEL_ARRAYS * ALIGN + TAIL;
     const pages = Math.ceil(bytes / WASM_PAGE);
     try {
-      return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }));
+      return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }), module);
     } catch {
       return null;
     }

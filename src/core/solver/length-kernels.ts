@@ -28,7 +28,7 @@ export function projectLengths(
   const x = a.positions;
   const K = EDGE_KINDS;
   const directions = a.bulgeDirections;
-  const kernel = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  const kernel = wasmKernels(a);
   for (let c = 0; K * c + K < runs.length; c++) {
     let f0 = runs[K * c];
     let f1 = runs[K * c + 1];

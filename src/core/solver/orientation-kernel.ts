@@ -53,7 +53,7 @@ export function triangleFrames(rest: Float32Array, triangles: Uint32Array): Floa
  */
 export function projectOrientationPart(a: PartArrays, part: number, mode: number, floor = 1): boolean {
   const x = a.positions;
-  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  const kernels = wasmKernels(a);
   if (kernels) {
     const t = a.triangles;
     const corrected = kernels.orient(

@@ -32,6 +32,8 @@ export interface PartArrays {
    * passes run as WebAssembly (see wasm-kernels.ts, useKernels); null: the JavaScript loops.
    */
   kernelMemory: WebAssembly.Memory | null;
+  /** The kernels' compiled module for that memory (a partner thread makes its instance from it); null without. */
+  kernelModule: WebAssembly.Module | null;
   /**
    * Per vertex, at its xyz offset: the way a compressed held edge pushes it per unit of compression and of muscle
    * weight, its rest normal times its bulge seed (see SkinSolver).

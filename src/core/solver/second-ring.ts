@@ -244,7 +244,7 @@ export function projectSecondRingPart(a: PartArrays, from: number, to: number, b
   const N = a.restNormals;
   const V = a.regionVertices;
   const { start, offsets, inverse, rest, gain, reach, ringMove, ownStep } = a.secondRing;
-  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  const kernels = wasmKernels(a);
   if (kernels) {
     // Byte addresses, each read once (no array: this runs every outer iteration).
     const xp = x.byteOffset;

@@ -26,7 +26,7 @@ import { type WasmKernels, wasmKernels } from './wasm-kernels';
  */
 export function projectPositions(a: PartArrays, stiffness: number, extra: number, muscleStiffness: number, k0: number, k1: number): void {
   const x = a.positions;
-  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  const kernels = wasmKernels(a);
   if (kernels) {
     const { rest, restNormals, targets, weights, normalWeights, regionVertices } = a;
     const xp = x.byteOffset;
@@ -95,7 +95,7 @@ export function projectPositions(a: PartArrays, stiffness: number, extra: number
 export function projectNormals(a: PartArrays, count: number, board: Int32Array | null, half: number): void {
   const out = a.normals;
   const parts = a.shadedTriangles.parts;
-  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  const kernels = wasmKernels(a);
   if (board) {
     addFaces(a, kernels, parts[PART_EVEN + half], parts[PART_EVEN + half + 1]);
     meet(board);
@@ -126,7 +126,7 @@ export function projectCollisions(a: PartArrays, half: number, halves: number, d
   const list = a.activeCandidates;
   const start = a.activeCandidateStart;
   const shapes = a.colliderShapes;
-  const kernels = a.collisionKernel && a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  const kernels = a.collisionKernel && wasmKernels(a);
   for (let c = 0; c < a.colliders.length; c++) {
     const o = COLLIDER_SHAPE * c;
     let k0 = start[c];
@@ -163,7 +163,7 @@ export function projectCollisions(a: PartArrays, half: number, halves: number, d
  */
 export function projectBendingPart(a: PartArrays, pass: number, part: number): void {
   const x = a.positions;
-  const kernels = a.kernelMemory ? wasmKernels(a.kernelMemory) : null;
+  const kernels = wasmKernels(a);
   if (kernels) {
     const run = (pass === 0 ? 0 : PARTS + 1) + part;
     const runs = a.bending.runs;

@@ -188,6 +188,7 @@ export class SkinSolver {
       vertexTriangles: place(topology.vertexTriangles),
       edges: this.edgeLists,
       kernelMemory: null,
+      kernelModule: null,
       collisionKernel: false,
       bulgeDirections: this.bulgeDirections,
       triangles: this.triangleLists,

@@ -1,13 +1,14 @@
 /**
  * The solver's WebAssembly kernels: the length passes' loops (projectFreeEdges, projectHeldEdges in length-kernels.ts)
  * four edges at a time in 128-bit lanes of 32-bit floats, about twice as fast as the JavaScript loops; both rings'
- * bending (projectBendingPart, projectSecondRingPart), the orientation passes (projectOrientationPart) and the position
- * constraints (projectPositions) one item at a time in their loops' own arithmetic, to the bit (docs/solver-notes.md,
- * "The length kernel in WebAssembly" and the sections after it). Their bytes come from scripts/build-kernels.mjs. Where
- * WebAssembly, its lanes or its compilation are not allowed (an old browser, a page whose content security policy
- * forbids it), the solver keeps the JavaScript loops.
+ * bending (projectBendingPart, projectSecondRingPart), the orientation passes (projectOrientationPart), the position
+ * constraints (projectPositions), the collisions (projectCollisions) and the normals (projectNormals) one item at a time
+ * in their loops' own arithmetic, to the bit (docs/solver-notes.md, "The length kernel in WebAssembly" and the sections
+ * after it). Their bytes come from scripts/build-kernels.mjs, compiled in wasm-kernel-module.ts. Where WebAssembly, its
+ * lanes or its compilation are not allowed (an old browser, a page whose content security policy forbids it), the
+ * solver keeps the JavaScript loops.
  */
-import { KERNELS } from './wasm-kernels-bytes';
+import type { PartArrays } from './part-arrays';
 
 /** The kernels' entry points on one memory; every array argument is a byte address in that memory. */
 export interface WasmKernels {
@@ -125,61 +126,20 @@ export interface WasmKernels {
   units(normals: number, vertices: number, k0: number, k1: number): void;
 }
 
-/** The compiled modules for a plain and a shared memory; null where they cannot be compiled, undefined before. */
-const modules: (WebAssembly.Module | null | undefined)[] = [undefined, undefined];
 /** Each memory's instance, made once per thread. */
 const instances = new WeakMap<WebAssembly.Memory, WasmKernels>();
 
-/** Whether `memory` is a shared WebAssembly memory (its buffer a SharedArrayBuffer). */
-function isSharedMemory(memory: WebAssembly.Memory): boolean {
-  return typeof SharedArrayBuffer !== 'undefined' && memory.buffer instanceof SharedArrayBuffer;
-}
-
-/** The byte of the memory import's limits flags in a module's binary: after `memory` and its kind; -1 if none. */
-function importFlags(bytes: Uint8Array): number {
-  const name = [6, 0x6d, 0x65, 0x6d, 0x6f, 0x72, 0x79, 2, 3];
-  for (let i = 0; i + name.length <= bytes.length; i++) {
-    let k = 0;
-    while (k < name.length && bytes[i + k] === name[k]) k++;
-    if (k === name.length) return i + name.length - 1;
-  }
-  return -1;
-}
-
-/** The kernels' module for a plain or shared memory; null where this runtime cannot compile it. */
-export function kernelModule(shared: boolean): WebAssembly.Module | null {
-  const k = shared ? 1 : 0;
-  if (modules[k] !== undefined) return modules[k];
-  modules[k] = null;
-  try {
-    if (typeof WebAssembly === 'undefined' || typeof atob === 'undefined') return null;
-    const text = atob(KERNELS);
-    const bytes = new Uint8Array(text.length);
-    for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
-    if (!shared) {
-      // The binary imports a shared memory; a plain one differs only in the import's limits flags (shared and a
-      // maximum, 3, against a maximum alone, 1), which follow the import's name and kind (2, a memory).
-      const at = importFlags(bytes);
-      if (at < 0) return null;
-      bytes[at] = 1;
-    }
-    // A small module compiles synchronously on any thread; validate first so that a runtime without the lanes says
-    // so instead of throwing.
-    if (WebAssembly.validate(bytes)) modules[k] = new WebAssembly.Module(bytes);
-  } catch {
-    modules[k] = null;
-  }
-  return modules[k];
-}
-
-/** The kernels on `memory` (made on first use in this thread); null where they cannot be made. */
-export function wasmKernels(memory: WebAssembly.Memory): WasmKernels | null {
+/**
+ * The kernels a solver's passes run (made on first use in this thread from the arrays' memory and module); null where
+ * the JavaScript loops run (no kernel memory, or an instance that cannot be made).
+ */
+export function wasmKernels(a: Pick<PartArrays, 'kernelMemory' | 'kernelModule'>): WasmKernels | null {
+  const memory = a.kernelMemory;
+  if (!memory || !a.kernelModule) return null;
   const known = instances.get(memory);
   if (known) return known;
-  const module = kernelModule(isSharedMemory(memory));
-  if (!module) return null;
   try {
-    const instance = new WebAssembly.Instance(module, { env: { memory } });
+    const instance = new WebAssembly.Instance(a.kernelModule, { env: { memory } });
     const kernels = instance.exports as unknown as WasmKernels;
     instances.set(memory, kernels);
     return kernels;
