@@ -22,6 +22,17 @@ function gather(name, offset) {
   return e;
 }
 
+/**
+ * The head of a kernel's loop: counter `$<k>` from `$<k0>` while under `$<k1>`, in a block `$done` the loop leaves by
+ * and a loop `$next` a turn continues by (the body steps the counter and ends with `(br $next))))`).
+ */
+function loopOver(k, k0, k1) {
+  return (
+    `    (local.set $${k} (local.get $${k0}))\n    (block $done\n      (loop $next\n` +
+    `        (br_if $done (i32.ge_u (local.get $${k}) (local.get $${k1})))\n`
+  );
+}
+
 /** The length error's share, 2 s (d⁴ - r⁴) / (5 d⁴ + 10 d² r² + r⁴): the Padé form of projectFreeEdges. */
 function share(kind, s, d2, r2) {
   const g = (n) => `(local.get $${n})`;
@@ -188,11 +199,7 @@ function heldKernel() {
     (local $ax v128) (local $ay v128) (local $az v128) (local $bx v128) (local $by v128) (local $bz v128) (local $dx v128)
     (local $dy v128) (local $dz v128) (local $len v128) (local $r0 v128) (local $over v128) (local $under v128)
     (local $short v128) (local $k v128) (local $push v128) (local $live v128) (local $t v128)
-    (local.set $j (local.get $j0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $j) (local.get $j1)))
-        (local.set $p (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))))
+${loopOver('j', 'j0', 'j1')}        (local.set $p (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))))
         ;; Records past the end (the last group's) read as edges of zero length from vertex 0 to itself: never stored.
         (local.set $n (i32.shr_u (i32.sub (local.get $j1) (local.get $j)) (i32.const 2)))
 ${ends}        (if (i32.lt_u (local.get $n) (i32.const 4)) (then
@@ -230,11 +237,7 @@ function bendKernel() {
     (param $wp i32) (param $pp i32) (param $lp i32) (param $r0 i32) (param $r1 i32) (param $pass i32)
     (local $r i32) (local $v i32) (local $g f64) (local $j i32) (local $j1 i32) (local $ib i32) (local $kb i32)
     (local $nx f64) (local $ny f64) (local $nz f64) (local $mean f64) (local $w f64) (local $c f64) (local $lambda f64) (local $q f64)
-    (local.set $r (local.get $r0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $r) (local.get $r1)))
-        (local.set $v (i32.load (i32.add (local.get $lp) (i32.shl (local.get $r) (i32.const 2)))))
+${loopOver('r', 'r0', 'r1')}        (local.set $v (i32.load (i32.add (local.get $lp) (i32.shl (local.get $r) (i32.const 2)))))
         (local.set $r (i32.add (local.get $r) (i32.const 1)))
         (local.set $g (f64.promote_f32 (f32.load (i32.add (local.get $gp) (i32.shl (local.get $v) (i32.const 2))))))
         (br_if $next (i32.le_u (i32.load8_u (i32.add (local.get $pp) (local.get $v))) (local.get $pass)))
@@ -298,11 +301,7 @@ function secondRingKernels() {
     (param $wp i32) (param $ap i32) (param $gp i32) (param $mp i32) (param $tp i32) (param $k0 i32) (param $k1 i32)
     (local $k i32) (local $v i32) (local $j i32) (local $j1 i32) (local $ib i32) (local $kb i32) (local $g f64)
     (local $nx f64) (local $ny f64) (local $nz f64) (local $mean f64) (local $w f64) (local $step f64) (local $q f64)
-    (local.set $k (local.get $k0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
-        (local.set $v (i32.load ${word('vp', 'k')}))
+${loopOver('k', 'k0', 'k1')}        (local.set $v (i32.load ${word('vp', 'k')}))
         (local.set $k (i32.add (local.get $k) (i32.const 1)))
         (local.set $g (f64.promote_f32 (f32.load ${word('gp', 'v')})))
         (local.set $ib (i32.mul (local.get $v) (i32.const 12)))
@@ -336,11 +335,7 @@ function secondRingKernels() {
     (param $hp i32) (param $mp i32) (param $tp i32) (param $k0 i32) (param $k1 i32)
     (local $k i32) (local $u i32) (local $j i32) (local $j1 i32) (local $ib i32) (local $kb i32) (local $own f64)
     (local $dx f64) (local $dy f64) (local $dz f64)
-    (local.set $k (local.get $k0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
-        (local.set $u (i32.load ${word('vp', 'k')}))
+${loopOver('k', 'k0', 'k1')}        (local.set $u (i32.load ${word('vp', 'k')}))
         (local.set $k (i32.add (local.get $k) (i32.const 1)))
         (br_if $next (i32.eqz (i32.load8_u (i32.add (local.get $hp) (local.get $u)))))
         (local.set $ib (i32.mul (local.get $u) (i32.const 12)))
@@ -396,11 +391,7 @@ function orientKernel() {
     (local $gay f64) (local $gaz f64) (local $gbx f64) (local $gby f64) (local $gbz f64) (local $gcx f64) (local $gcy f64)
     (local $gcz f64) (local $norm f64) (local $lambda f64)
     (local.set $flags (select (local.get $up) (local.get $wp) (i32.eq (local.get $mode) (i32.const 1))))
-    (local.set $t (local.get $t0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $t) (local.get $t1)))
-        (if (i32.ne (local.get $mode) (i32.const 0)) (then
+${loopOver('t', 't0', 't1')}        (if (i32.ne (local.get $mode) (i32.const 0)) (then
           ;; Four flags a word: a zero word skips four triangles.
           (if (i32.and (i32.eqz (i32.and (local.get $t) (i32.const 3)))
                 (i32.eqz (i32.load (i32.add (local.get $flags) (local.get $t))))) (then
@@ -489,11 +480,7 @@ function positionKernel() {
     (local $k i32) (local $v i32) (local $ib i32) (local $a i32) (local $nx f64) (local $ny f64) (local $nz f64)
     (local $ux f64) (local $uy f64) (local $uz f64) (local $dx f64) (local $dy f64) (local $dz f64) (local $depth f64)
     (local $kk f64) (local $w f64) (local $wn f64) (local $m f64) (local $along f64)
-    (local.set $k (local.get $k0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
-        (local.set $v (i32.load (i32.add (local.get $vp) (i32.shl (local.get $k) (i32.const 2)))))
+${loopOver('k', 'k0', 'k1')}        (local.set $v (i32.load (i32.add (local.get $vp) (i32.shl (local.get $k) (i32.const 2)))))
         (local.set $k (i32.add (local.get $k) (i32.const 1)))
         (local.set $ib (i32.mul (local.get $v) (i32.const 12)))
         (local.set $a (i32.add (local.get $xp) (local.get $ib)))
@@ -546,11 +533,7 @@ function collideKernel() {
     (local $px f64) (local $py f64) (local $pz f64) (local $dx f64) (local $dy f64) (local $dz f64) (local $ox f64)
     (local $oy f64) (local $oz f64) (local $t f64) (local $u f64) (local $d f64) (local $dist f64) (local $push f64)
     (local.set $kind ${S(10)})
-    (local.set $k (local.get $k0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
-        (local.set $j (i32.load (i32.add (local.get $lp) (i32.shl (local.get $k) (i32.const 2)))))
+${loopOver('k', 'k0', 'k1')}        (local.set $j (i32.load (i32.add (local.get $lp) (i32.shl (local.get $k) (i32.const 2)))))
         (local.set $k (i32.add (local.get $k) (i32.const 1)))
         (local.set $a (i32.add (local.get $xp)
           (i32.mul (i32.load (i32.add (local.get $vp) (i32.shl (local.get $j) (i32.const 2)))) (i32.const 12))))
@@ -628,20 +611,12 @@ function normalKernels() {
     (local $t i32) (local $p i32) (local $a i32) (local $b i32) (local $c i32) (local $q i32) (local $ux f64)
     (local $uy f64) (local $uz f64) (local $vx f64) (local $vy f64) (local $vz f64) (local $nx f64) (local $ny f64)
     (local $nz f64)
-    (local.set $t (local.get $t0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $t) (local.get $t1)))
-        (local.set $p (i32.add (local.get $cp) (i32.mul (local.get $t) (i32.const 12))))
+${loopOver('t', 't0', 't1')}        (local.set $p (i32.add (local.get $cp) (i32.mul (local.get $t) (i32.const 12))))
         (local.set $t (i32.add (local.get $t) (i32.const 1)))
 ${corner('a', 0)}${corner('b', 4)}${corner('c', 8)}${edges}${cross}${add}        (br $next))))
   (func (export "units") (param $op i32) (param $vp i32) (param $k0 i32) (param $k1 i32)
     (local $k i32) (local $q i32) (local $len f64)
-    (local.set $k (local.get $k0))
-    (block $done
-      (loop $next
-        (br_if $done (i32.ge_u (local.get $k) (local.get $k1)))
-        (local.set $q (i32.add (local.get $op)
+${loopOver('k', 'k0', 'k1')}        (local.set $q (i32.add (local.get $op)
           (i32.mul (i32.load (i32.add (local.get $vp) (i32.shl (local.get $k) (i32.const 2)))) (i32.const 12))))
         (local.set $k (i32.add (local.get $k) (i32.const 1)))
         (local.set $len (f64.sqrt (f64.add (f64.add (f64.mul ${load(0)} ${load(0)}) (f64.mul ${load(1)} ${load(1)}))
