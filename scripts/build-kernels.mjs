@@ -140,7 +140,7 @@ ${stores}        (local.set $j (i32.add (local.get $j) (i32.const ${LANES.length
         (br_if $end (i32.ge_u (local.get $j) (local.get $j1)))
         (call $one (local.get $xp) (i32.add (local.get $rp) (i32.shl (local.get $j) (i32.const 2))) (local.get $s0))
         (local.set $j (i32.add (local.get $j) (i32.const 4)))
-        (br $tail))))${[heldKernel, bendKernel, secondRingKernels, orientKernel, positionKernel, collideKernel, normalKernels]
+        (br $tail))))${[heldKernel, bendKernel, secondRingKernels, orientKernel, positionKernel, collideKernel, normalKernels, frameKernels]
           .map((kernel) => kernel())
           .join('')}
 )
@@ -625,6 +625,86 @@ ${loopOver('k', 'k0', 'k1')}        (local.set $q (i32.add (local.get $op)
 ${unit}) (else
           (f32.store offset=8 (local.get $q) (f32.const 1))))
         (br $next))))`;
+}
+
+/**
+ * The frame's bookkeeping (startFramePart, relaxPart and recordStepsPart in frame-kernels.ts) over region entries
+ * $k0..$k1 (the vertex list at byte $vp), in their double-precision arithmetic: `start` stores each vertex's place and
+ * carries its momentum, `relax` lets each take its share of its solved move, `steps` stores each move, adds its length
+ * to the vertex's way and returns the largest squared move.
+ */
+function frameKernels() {
+  const f = (v) => `(local.get $${v})`;
+  const axes = ['x', 'y', 'z'];
+  /** The float at component `c` of the xyz at byte `$<base> + $ib`, promoted. */
+  const at = (base, c) => `(f64.promote_f32 (f32.load offset=${4 * c} (i32.add (local.get $${base}) (local.get $ib))))`;
+  /** The float of vertex $v in the per-vertex array at byte `$<base>`, promoted. */
+  const one = (base) => `(f64.promote_f32 (f32.load (i32.add (local.get $${base}) (i32.shl (local.get $v) (i32.const 2)))))`;
+  const byte = (base) => `(i32.add (local.get $${base}) (local.get $v))`;
+  const dot = (a, b) =>
+    `(f64.add (f64.add (f64.mul ${f(`${a}x`)} ${f(`${b}x`)}) (f64.mul ${f(`${a}y`)} ${f(`${b}y`)})) (f64.mul ${f(`${a}z`)} ${f(`${b}z`)}))`;
+  const vertex = `        (local.set $v (i32.load (i32.add (local.get $vp) (i32.shl (local.get $k) (i32.const 2)))))
+        (local.set $k (i32.add (local.get $k) (i32.const 1)))
+        (local.set $ib (i32.mul (local.get $v) (i32.const 12)))
+`;
+  const slot = (base, c) => `offset=${4 * c} (i32.add (local.get $${base}) (local.get $ib))`;
+  const copy = axes.map((_, c) => `        (f32.store ${slot('pp', c)} (f32.load ${slot('xp', c)}))\n`).join('');
+  const lastAndNormal = axes
+    .map((d, c) => `        (local.set $l${d} ${at('lp', c)})\n        (local.set $n${d} ${at('np', c)})\n`)
+    .join('');
+  const carried = (d) => `(f64.add (f64.mul ${f('beta')} ${f(`l${d}`)}) (f64.mul ${f('along')} ${f(`n${d}`)}))`;
+  const solved = axes.map((d, c) => `        (local.set $d${d} (f64.sub ${at('xp', c)} ${at('pp', c)}))\n`).join('');
+  const lastOnly = axes.map((d, c) => `        (local.set $l${d} ${at('lp', c)})\n`).join('');
+  const share = axes
+    .map((d, c) => {
+      const slot = `offset=${4 * c} (i32.add (local.get $xp) (local.get $ib))`;
+      return `        (f32.store ${slot} (f32.demote_f64 (f64.add ${at('pp', c)} (f64.mul ${f('w')} ${f(`d${d}`)}))))\n`;
+    })
+    .join('');
+  const store = axes
+    .map((d, c) => `        (f32.store offset=${4 * c} (i32.add (local.get $lp) (local.get $ib)) (f32.demote_f64 ${f(`d${d}`)}))\n`)
+    .join('');
+  const xyz = (p) => axes.map((d) => `(local $${p}${d} f64)`).join(' ');
+  return `
+  (func (export "start") (param $xp i32) (param $pp i32) (param $np i32) (param $lp i32) (param $rp i32) (param $sp i32)
+    (param $vp i32) (param $beta f64) (param $extra f64) (param $carry i32) (param $k0 i32) (param $k1 i32)
+    (local $k i32) (local $v i32) (local $ib i32) (local $a i32) (local $along f64) ${xyz('l')} ${xyz('n')}
+${loopOver('k', 'k0', 'k1')}${vertex}${copy}        (br_if $next (i32.eqz (local.get $carry)))
+        (if (i32.or (i32.eq (i32.load8_u ${byte('rp')}) (i32.const 1)) (f64.lt ${one('sp')} (f64.const 1))) (then
+          (i32.store8 ${byte('rp')} (i32.const 0))
+          (br $next)))
+${lastAndNormal}        (local.set $along (f64.mul ${f('extra')} ${dot('l', 'n')}))
+        (local.set $a (i32.add (local.get $xp) (local.get $ib)))
+${shiftXyz('a', 'add', carried, 8)}        (br $next))))
+  (func (export "relax") (param $xp i32) (param $pp i32) (param $lp i32) (param $sp i32) (param $cp i32) (param $rp i32)
+    (param $vp i32) (param $cap f64) (param $least f64) (param $within i32) (param $k0 i32) (param $k1 i32)
+    (local $k i32) (local $v i32) (local $ib i32) (local $calm i32) (local $turn f64) (local $w f64) ${xyz('d')} ${xyz('l')}
+${loopOver('k', 'k0', 'k1')}${vertex}${solved}${lastOnly}        (local.set $turn ${dot('d', 'l')})
+        (if (f64.lt ${f('turn')} (f64.const 0)) (then (i32.store8 ${byte('rp')} (i32.const 1))))
+        (local.set $w ${one('sp')})
+        (local.set $calm (i32.load8_u ${byte('cp')}))
+        ;; Turned back by more than 120 degrees: a cycle, not a curve.
+        (if (i32.and (f64.lt ${f('turn')} (f64.const 0))
+            (f64.gt (f64.mul (f64.mul (f64.const 4) ${f('turn')}) ${f('turn')}) (f64.mul ${dot('d', 'd')} ${dot('l', 'l')}))) (then
+          (if (i32.and (f64.gt ${f('w')} ${f('least')}) (i32.lt_u (local.get $calm) (local.get $within))) (then
+            (local.set $w (f64.mul ${f('w')} (f64.const 0.5)))
+            (f32.store (i32.add (local.get $sp) (i32.shl (local.get $v) (i32.const 2))) (f32.demote_f64 ${f('w')}))))
+          (i32.store8 ${byte('cp')} (i32.const 0)))
+        (else
+          (if (i32.lt_u (local.get $calm) (i32.const 255)) (then
+            (i32.store8 ${byte('cp')} (i32.add (local.get $calm) (i32.const 1)))))))
+        (if (f64.gt ${f('w')} ${f('cap')}) (then (local.set $w ${f('cap')})))
+        (br_if $next (f64.eq ${f('w')} (f64.const 1)))
+${share}        (br $next))))
+  (func (export "steps") (param $xp i32) (param $pp i32) (param $lp i32) (param $hp i32) (param $vp i32) (param $k0 i32)
+    (param $k1 i32) (result f64)
+    (local $k i32) (local $v i32) (local $ib i32) (local $d2 f64) (local $largest f64) ${xyz('d')}
+${loopOver('k', 'k0', 'k1')}${vertex}${solved}${store}        (local.set $d2 ${dot('d', 'd')})
+        (if (f64.gt ${f('d2')} ${f('largest')}) (then (local.set $largest ${f('d2')})))
+        (f32.store (i32.add (local.get $hp) (i32.shl (local.get $v) (i32.const 2)))
+          (f32.demote_f64 (f64.add ${one('hp')} (f64.sqrt ${f('d2')}))))
+        (br $next)))
+    (local.get $largest))`;
 }
 
 /** The TypeScript module that carries the kernel's bytes. */

@@ -10,6 +10,7 @@ import { createSolverBuffers } from '../src/core/solver/solver-buffers';
 import { projectSecondRingPart } from '../src/core/solver/second-ring';
 import { projectBendingPart, projectCollisions, projectNormals, projectPositions } from '../src/core/solver/solver-kernels';
 import { buildTopology } from '../src/core/solver/topology';
+import { recordStepsPart, relaxPart, startFramePart } from '../src/core/solver/frame-kernels';
 import { triangleGrid } from './fixtures/grids';
 import { loadHeadSimulation } from './fixtures/head-simulation';
 
@@ -242,6 +243,47 @@ describe('WebAssembly kernels', () => {
     expect(count).toBeGreaterThan(10_000);
     expect(moved).toBeCloseTo(1, 5);
     expect(differ).toBe(0);
+  });
+
+  it("keep the frame's books (momentum, relaxation, moves) as the JavaScript loops do, to the bit", () => {
+    const buffers = createSolverBuffers(topology, 'shared');
+    const s = new SkinSolver(topology, { buffers, activeRegion: false, memory: 'shared' });
+    const kernel = s.partArrays();
+    const loop = { ...kernel, kernelMemory: null };
+    const random = mulberry32(29);
+    const n = topology.vertexCount;
+    // A frame's state mid-motion: moved skin, last moves that some of this frame's moves turn back on, shares halved
+    // here and there, fresh turns and calm counts of every kind.
+    const x = kernel.positions;
+    for (let i = 0; i < 3 * n; i++) {
+      x[i] += (random() - 0.5) * 0.001;
+      kernel.lastStep[i] = (random() - 0.5) * 0.0004;
+    }
+    for (let v = 0; v < n; v++) {
+      kernel.relaxation[v] = [1, 0.5, 0.25, 0.0625][Math.floor(random() * 4)];
+      kernel.restart[v] = random() < 0.2 ? 1 : 0;
+      kernel.calm[v] = [0, 1, 2, 255][Math.floor(random() * 4)];
+      kernel.path[v] = random() * 0.01;
+    }
+    const arrays = (a: typeof kernel) => [a.positions, a.previous, a.lastStep, a.relaxation, a.restart, a.calm, a.path];
+    const start = arrays(kernel).map((array) => array.slice());
+    const frame = (a: typeof kernel): { state: ArrayLike<number>[]; largest: number } => {
+      arrays(a).forEach((array, k) => array.set(start[k] as never));
+      startFramePart(a, 0.6, 0.8, 0, n);
+      // The frame's projections move the skin: some vertices back against their last move, which the relaxation sees.
+      for (let i = 0; i < 3 * n; i++) x[i] -= 2.5 * a.lastStep[i] * (i % 7 === 0 ? 1 : -0.2);
+      relaxPart(a, 0.75, 0, n);
+      const largest = recordStepsPart(a, 0, n);
+      return { state: arrays(a).map((array) => array.slice()), largest };
+    };
+    const byKernel = frame(kernel);
+    const byLoop = frame(loop);
+    expect(kernel.kernelMemory).not.toBeNull();
+    expect(byLoop.largest).toBeGreaterThan(1e-8);
+    expect(byKernel.largest).toBe(byLoop.largest);
+    const moved = compare(byKernel.state[0] as Float32Array, byLoop.state[0] as Float32Array, start[0] as Float32Array).moved;
+    expect(moved).toBeGreaterThan(1e-5);
+    byLoop.state.forEach((state, k) => expect(Array.from(byKernel.state[k]), `array ${k}`).toEqual(Array.from(state)));
   });
 
   it('are built from the text in scripts/build-kernels.mjs', () => {

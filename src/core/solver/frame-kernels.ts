@@ -3,6 +3,7 @@
  * turns cycles into convergence, and each vertex's recorded move.
  */
 import type { PartArrays } from './part-arrays';
+import { wasmKernels } from './wasm-kernels';
 
 /**
  * The frame's start for the region's vertices `k0..k1`: stores where each starts (skin outside the region stays at
@@ -22,6 +23,24 @@ export function startFramePart(a: PartArrays, beta: number, foldBeta: number, k0
   const restart = a.restart;
   const share = a.relaxation;
   const V = a.regionVertices;
+  const kernels = wasmKernels(a);
+  if (kernels) {
+    kernels.start(
+      x.byteOffset,
+      prev.byteOffset,
+      N.byteOffset,
+      last.byteOffset,
+      restart.byteOffset,
+      share.byteOffset,
+      V.byteOffset,
+      beta,
+      extra,
+      carry ? 1 : 0,
+      k0,
+      k1,
+    );
+    return;
+  }
   for (let k = k0; k < k1; k++) {
     const v = V[k];
     const i = 3 * v;
@@ -61,6 +80,24 @@ export function relaxPart(a: PartArrays, cap: number, k0: number, k1: number): v
   const calm = a.calm;
   const restart = a.restart;
   const V = a.regionVertices;
+  const kernels = wasmKernels(a);
+  if (kernels) {
+    kernels.relax(
+      x.byteOffset,
+      prev.byteOffset,
+      last.byteOffset,
+      share.byteOffset,
+      calm.byteOffset,
+      restart.byteOffset,
+      V.byteOffset,
+      cap,
+      MIN_RELAXATION,
+      CYCLE_TURNS_WITHIN,
+      k0,
+      k1,
+    );
+    return;
+  }
   for (let k = k0; k < k1; k++) {
     const v = V[k];
     const i = 3 * v;
@@ -97,6 +134,8 @@ export function recordStepsPart(a: PartArrays, k0: number, k1: number): number {
   const last = a.lastStep;
   const path = a.path;
   const V = a.regionVertices;
+  const kernels = wasmKernels(a);
+  if (kernels) return kernels.steps(x.byteOffset, prev.byteOffset, last.byteOffset, path.byteOffset, V.byteOffset, k0, k1);
   let largest2 = 0;
   for (let k = k0; k < k1; k++) {
     const v = V[k];

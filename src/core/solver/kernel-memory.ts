@@ -18,7 +18,7 @@ const ALIGN = 16;
 /** Room after the arrays: the held-edge kernel reads a whole group of four records past a list's last one. */
 const TAIL = 64;
 /** The arrays a skin's kernels read, at most: what forSkin makes room for (each start aligned). */
-const KERNEL_ARRAYS = 45;
+const KERNEL_ARRAYS = 51;
 /** The colliders whose shapes forSkin makes room for (the default head has 18: two eyes and two rows of teeth). */
 const COLLIDERS = 64;
 
@@ -42,7 +42,8 @@ export function useKernels(p: PartArrays, kernel: KernelMemory | null): void {
   const ring = [p.bending.vertices, p.regionVertices, r.start, r.offsets, r.inverse, r.rest, r.gain, r.reach, r.ringMove, r.ownStep];
   const orientation = [t.corners, t.frames, p.unchecked, p.watched, p.vertexTriangleStart, p.vertexTriangles, p.listedTriangle];
   const normals = [p.normals, p.shadedTriangles.corners, p.shadedVertices];
-  const held = kernel?.holds(...lengths, ...bending, ...ring, ...orientation, ...normals) ? kernel : null;
+  const frame = [p.previous, p.lastStep, p.relaxation, p.restart, p.calm, p.path];
+  const held = kernel?.holds(...lengths, ...bending, ...ring, ...orientation, ...normals, ...frame) ? kernel : null;
   p.kernelMemory = held?.memory ?? null;
   p.kernelModule = held?.module ?? null;
   const candidates = [p.colliderShapes, p.colliderVertices, p.colliderClearance, p.colliderSide, p.activeCandidates];
@@ -90,12 +91,21 @@ export class KernelMemory implements Room {
     const positions = 3 * n + 3 * n + n + n;
     // The normals': the normals, the shaded triangles' corners and frames (three and four a triangle), the shaded vertices.
     const normals = 3 * n + 7 * triangles + n;
+    // The frame's bookkeeping: the previous places and last moves (three a vertex), the shares and ways; its turn
+    // marks and calm counts are bytes.
+    const frame = 3 * n + 3 * n + n + n;
     // The collisions': up to a candidate a vertex (the high head lists one for every third), each with its vertex,
     // its place in the frame's list, its clearance (words) and side (a byte), and up to COLLIDERS shapes. A skin with
     // more keeps its collisions in JavaScript (see useKernels).
     const collisions = 4 * 3 * n + n + 8 * COLLIDER_SHAPE * COLLIDERS;
     const bytes =
-      4 * (first + second + orientation + positions + normals) + 8 * 2 * n + 2 * n + flags + collisions + KERNEL_ARRAYS * ALIGN + TAIL;
+      4 * (first + second + orientation + positions + normals + frame) +
+      8 * 2 * n +
+      4 * n +
+      flags +
+      collisions +
+      KERNEL_ARRAYS * ALIGN +
+      TAIL;
     const pages = Math.ceil(bytes / WASM_PAGE);
     try {
       return new KernelMemory(new WebAssembly.Memory({ initial: pages, maximum: pages, shared }), module);

@@ -14,7 +14,7 @@
  * LATE_MOTION frames after an input (a few lid and lip vertices, by micrometres a frame): from then on every share
  * shrinks each frame.
  */
-import { allocate, type Memory } from './memory';
+import { allocate, type Memory, type Room } from './memory';
 import {
   LATE_MOTION,
   LATE_SLOWING,
@@ -51,11 +51,12 @@ export class Relaxation {
   /** The motion frame breakLoops last slowed skin at. */
   private slowedAt = -LOOP_WINDOW;
 
-  constructor(n: number, memory: Memory) {
-    this.share = allocate(Float32Array, n, memory).fill(1);
-    this.restart = allocate(Uint8Array, n, memory);
-    this.calm = allocate(Uint8Array, n, memory).fill(255);
-    this.path = allocate(Float32Array, n, memory);
+  /** Shares, marks and ways for `n` vertices, in `room` while it has room (the kernel memory), else in `memory`. */
+  constructor(n: number, memory: Memory, room: Room | null = null) {
+    this.share = allocate(Float32Array, n, memory, room).fill(1);
+    this.restart = allocate(Uint8Array, n, memory, room);
+    this.calm = allocate(Uint8Array, n, memory, room).fill(255);
+    this.path = allocate(Float32Array, n, memory, room);
     this.looping = new Uint8Array(n);
     this.stepPath = new Float32Array(n);
   }

@@ -27,7 +27,7 @@ import {
 import { restOutside } from './frame-kernels';
 import { type KernelArray, KernelMemory, useKernels } from './kernel-memory';
 import { createBulgeDirections } from './length-kernels';
-import { allocate, type Memory } from './memory';
+import { allocate, allocateCopy, type Memory } from './memory';
 import { checkMuscleTargets, clearMuscleInputs, writeMuscleTargets } from './muscle-inputs';
 import { countTurnedOver, ORIENT_FULL, ORIENT_WATCHED, triangleFrames } from './orientation-kernel';
 import type { PartArrays } from './part-arrays';
@@ -141,15 +141,14 @@ export class SkinSolver {
       // The partner thread reads the positions and the muscle inputs.
       throw new Error('a solver on shared memory needs its buffers on shared memory');
     }
+    const kernel = KernelMemory.of(this.buffers.positions);
     // Outside the active region `previous` is only written when the region changes, and stays at rest.
-    this.previous = allocate(Float32Array, 3 * n, memory);
-    this.previous.set(topology.rest);
-    this.lastStep = allocate(Float32Array, 3 * n, memory);
+    this.previous = allocateCopy(topology.rest, memory, kernel);
+    this.lastStep = allocate(Float32Array, 3 * n, memory, kernel);
     this.untangleScratch = new Float32Array(3 * n);
-    this.relaxation = new Relaxation(n, memory);
+    this.relaxation = new Relaxation(n, memory, kernel);
     this.held = new Uint32Array(n);
     this.bendStiffness = new Float32Array(n);
-    const kernel = KernelMemory.of(this.buffers.positions);
     const place = <T extends KernelArray>(array: T): T => KernelMemory.place(kernel, array);
     this.bendGain = allocate(Float32Array, n, memory, kernel);
     this.bendPasses = allocate(Uint8Array, n, memory, kernel);

@@ -2,7 +2,8 @@
  * The solver's WebAssembly kernels: the length passes' loops (projectFreeEdges, projectHeldEdges in length-kernels.ts)
  * four edges at a time in 128-bit lanes of 32-bit floats, about twice as fast as the JavaScript loops; both rings'
  * bending (projectBendingPart, projectSecondRingPart), the orientation passes (projectOrientationPart), the position
- * constraints (projectPositions), the collisions (projectCollisions) and the normals (projectNormals) one item at a time
+ * constraints (projectPositions), the collisions (projectCollisions), the normals (projectNormals) and the frame's
+ * bookkeeping (startFramePart, relaxPart, recordStepsPart) one item at a time
  * in their loops' own arithmetic, to the bit (docs/solver-notes.md, "The length kernel in WebAssembly" and the sections
  * after it). Their bytes come from scripts/build-kernels.mjs, compiled in wasm-kernel-module.ts. Where WebAssembly, its
  * lanes or its compilation are not allowed (an old browser, a page whose content security policy forbids it), the
@@ -124,6 +125,38 @@ export interface WasmKernels {
   faces(positions: number, corners: number, normals: number, t0: number, t1: number): void;
   /** Scales the normals of list entries `k0..k1` to unit length as normalize does. */
   units(normals: number, vertices: number, k0: number, k1: number): void;
+  /** The frame's start of region entries `k0..k1` as startFramePart does (`carry` 1 to carry the momentum). */
+  start(
+    positions: number,
+    previous: number,
+    normals: number,
+    last: number,
+    restart: number,
+    share: number,
+    vertices: number,
+    beta: number,
+    extra: number,
+    carry: number,
+    k0: number,
+    k1: number,
+  ): void;
+  /** The relaxation of region entries `k0..k1` as relaxPart does, with its least share and its turns' window. */
+  relax(
+    positions: number,
+    previous: number,
+    last: number,
+    share: number,
+    calm: number,
+    restart: number,
+    vertices: number,
+    cap: number,
+    least: number,
+    within: number,
+    k0: number,
+    k1: number,
+  ): void;
+  /** The moves of region entries `k0..k1` recorded as recordStepsPart does; returns the largest squared move. */
+  steps(positions: number, previous: number, last: number, path: number, vertices: number, k0: number, k1: number): number;
 }
 
 /** Each memory's instance, made once per thread. */
