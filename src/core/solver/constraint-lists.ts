@@ -181,7 +181,10 @@ function listEdge(into: EdgeLists, o: number, a: number, b: number, rest: number
 export interface TriangleLists {
   /** 3 * each corner's vertex, three per listed triangle. */
   corners: Uint32Array;
-  /** Per listed triangle: its rest unit normal and twice its least projected area (see `triangleFrames`). */
+  /**
+   * Per listed triangle: its rest unit normal and twice its least projected area (see `triangleFrames`); empty in lists
+   * of corners alone.
+   */
   frames: Float32Array;
   /** Part p is listed triangles `parts[p]..parts[p+1]`. */
   parts: Uint32Array;
@@ -189,12 +192,20 @@ export interface TriangleLists {
   readonly next: Uint32Array;
 }
 
-/** Triangle lists with room for every triangle; their corners and frames in `kernel` when it has room. */
-export function createTriangleLists(topology: SkinTopology, memory: Memory = 'local', kernel: KernelMemory | null = null): TriangleLists {
+/**
+ * Triangle lists with room for every triangle; their corners and frames in `kernel` when it has room. Without
+ * `frames`, lists of corners alone (the normals' shaded triangles): their frames stay empty.
+ */
+export function createTriangleLists(
+  topology: SkinTopology,
+  memory: Memory = 'local',
+  kernel: KernelMemory | null = null,
+  frames = true,
+): TriangleLists {
   const count = topology.triangles.length / 3;
   return {
     corners: allocate(Uint32Array, 3 * count, memory, kernel),
-    frames: allocate(Float32Array, 4 * count, memory, kernel),
+    frames: allocate(Float32Array, frames ? 4 * count : 0, memory, kernel),
     parts: allocate(Uint32Array, PARTS + 1, memory),
     next: new Uint32Array(PARTS),
   };
@@ -236,6 +247,7 @@ export function fillTriangleLists(
   for (let p = 0; p < PARTS; p++) parts[p + 1] += parts[p];
   const next = into.next;
   next.set(parts.subarray(0, PARTS));
+  const withFrames = F.length > 0;
   for (let t = 0; t < count; t++) {
     const p = places[t];
     if (p < 0) continue;
@@ -244,6 +256,7 @@ export function fillTriangleLists(
     C[3 * o] = 3 * triangles[3 * t];
     C[3 * o + 1] = 3 * triangles[3 * t + 1];
     C[3 * o + 2] = 3 * triangles[3 * t + 2];
+    if (!withFrames) continue;
     F[4 * o] = frames[4 * t];
     F[4 * o + 1] = frames[4 * t + 1];
     F[4 * o + 2] = frames[4 * t + 2];

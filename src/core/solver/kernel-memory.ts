@@ -89,8 +89,8 @@ export class KernelMemory implements Room {
     const flags = 2 * 4 * Math.ceil(triangles / 4);
     // The position constraints': the rest positions, the muscles' targets, weights and normal weights.
     const positions = 3 * n + 3 * n + n + n;
-    // The normals': the normals, the shaded triangles' corners and frames (three and four a triangle), the shaded vertices.
-    const normals = 3 * n + 7 * triangles + n;
+    // The normals': the normals, the shaded triangles' corners (three a triangle), the shaded vertices.
+    const normals = 3 * n + 3 * triangles + n;
     // The frame's bookkeeping: the previous places and last moves (three a vertex), the shares and ways; its turn
     // marks and calm counts are bytes.
     const frame = 3 * n + 3 * n + n + n;

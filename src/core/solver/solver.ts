@@ -180,7 +180,7 @@ export class SkinSolver {
       weights: this.buffers.weights,
       normalWeights: this.buffers.normalWeights,
       normals: this.buffers.normals,
-      shadedTriangles: createTriangleLists(topology, memory, kernel),
+      shadedTriangles: createTriangleLists(topology, memory, kernel, false),
       neighbourStart: place(topology.neighbourStart),
       neighbourOffsets: this.neighbourOffsets,
       vertexTriangleStart: place(topology.vertexTriangleStart),
