@@ -72,3 +72,13 @@ export async function openApp(page, url, { timeout = 60_000, retries = 0, retryM
   if (state !== 'ready') throw new Error(`the page reports "${state}": ${await page.locator('#status').textContent()}`);
   await page.evaluate(() => window.face.ready);
 }
+
+/**
+ * Has the page's face draw its finished picture of the newest skin now (the still `savePNG` draws: full resolution,
+ * antialiased) and waits until its canvas says it shows it (`data-quality="full"`). A fixed wait after `settle`
+ * sometimes caught the moving face's last, lower picture on a busy machine (jagged edges, dotted brows).
+ */
+export async function finishedPicture(page, timeout = 30_000) {
+  await page.evaluate(() => window.face?.savePNG?.());
+  await page.waitForSelector('canvas[data-quality="full"]', { timeout });
+}

@@ -41,7 +41,7 @@ try {
   if (args.includes('--shots')) {
     const page = await open(1);
     await page.evaluate(() => window.face.settle(60_000));
-    await page.waitForTimeout(500);
+    await finishedPicture(page);
     await page.screenshot({ path: 'docs/images/neutral.png' });
     console.log('wrote docs/images/neutral.png');
     await page.close();
@@ -52,7 +52,7 @@ try {
       window.face.setActionUnit('AU2', 1);
       await window.face.settle(60_000);
     });
-    await close.waitForTimeout(500);
+    await finishedPicture(close);
     await close.screenshot({ path: 'docs/images/closeup-wrinkles.png', clip: CLOSEUP });
     console.log('wrote docs/images/closeup-wrinkles.png');
     await close.close();

@@ -6,7 +6,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
-import { launchBrowser, openApp } from './browser.mjs';
+import { finishedPicture, launchBrowser, openApp } from './browser.mjs';
 
 const argv = process.argv.slice(2);
 const headIndex = argv.indexOf('--head');
@@ -30,7 +30,7 @@ try {
   }
   // Let the skin settle first, so that an expression given in the URL hash is shown finished.
   await page.evaluate(() => window.face?.settle?.(60_000));
-  await page.waitForTimeout(500);
+  await finishedPicture(page);
   await page.screenshot({ path: out });
   console.log(`wrote ${out}`);
 } finally {
