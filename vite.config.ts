@@ -1,6 +1,6 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
-import { faceMeshFiles } from './scripts/vite-face-mesh';
+import { faceMeshFiles } from './scripts/vite-face-mesh.ts';
 
 /**
  * SharedArrayBuffer exists only on cross-origin isolated pages, so both the dev server and `vite preview` send

@@ -1,6 +1,6 @@
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
-import { faceMeshFiles } from './scripts/vite-face-mesh';
+import { faceMeshFiles } from './scripts/vite-face-mesh.ts';
 
 /**
  * The library build (`npm run build:lib`), into `dist-lib/`. Mode `library`: ES modules with three.js left to the
