@@ -1,7 +1,7 @@
 /**
- * The WebAssembly memory that holds what the solver's WebAssembly kernels read and write (the positions, the edge
- * records, the bulge directions and the bending's arrays), so that the kernels and the JavaScript loops share those
- * arrays without a copy.
+ * The WebAssembly memory that holds what the solver's WebAssembly kernels read and write (the positions and muscle
+ * inputs, the constraint lists, the bending's, orientation's, collisions' and normals' arrays, the frame's
+ * bookkeeping), so that the kernels and the JavaScript loops share those arrays without a copy.
  */
 import { COLLIDER_SHAPE } from './colliders';
 import { EDGE_RECORD } from './constraint-lists';

@@ -28,8 +28,8 @@ export interface PartArrays {
   vertexTriangles: Uint32Array;
   edges: EdgeLists;
   /**
-   * The WebAssembly memory every array the kernels read and write lies in, where the length, bending and orientation
-   * passes run as WebAssembly (see wasm-kernels.ts, useKernels); null: the JavaScript loops.
+   * The WebAssembly memory every array the kernels read and write lies in, where the solver's passes run as
+   * WebAssembly (see wasm-kernels.ts, useKernels); null: the JavaScript loops.
    */
   kernelMemory: WebAssembly.Memory | null;
   /** The kernels' compiled module for that memory (a partner thread makes its instance from it); null without. */

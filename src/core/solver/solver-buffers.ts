@@ -33,8 +33,8 @@ export interface SolverBuffers {
 
 /**
  * Allocates the solver's buffers for a topology, positions at rest (on shared memory if `memory` says so). With
- * `kernel` (the default), the positions and the muscle inputs lie in a KernelMemory where the WebAssembly kernels can run, and a SkinSolver
- * on these buffers runs its position, length, bending and orientation passes there; without, in JavaScript.
+ * `kernel` (the default), the positions, normals and muscle inputs lie in a KernelMemory where the WebAssembly kernels
+ * can run, and a SkinSolver on these buffers runs its passes there (see useKernels); without, in JavaScript.
  */
 export function createSolverBuffers(topology: SkinTopology, memory: Memory = 'local', kernel = true): SolverBuffers {
   const n = topology.vertexCount;
